@@ -1,0 +1,115 @@
+#include "app/capture/capture_command.hpp"
+
+#include "app/capture/aov.hpp"
+#include "app/cli/options.hpp"
+#include "app/cli/progress.hpp"
+#include "app/errors.hpp"
+#include "app/file_io.hpp"
+#include "app/gl/context.hpp"
+#include "app/render/renderer.hpp"
+#include "app/scene/camera_path.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+namespace ecoview {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path frame_file(const fs::path& out, Aov aov, int frame) {
+  char name[64];
+  std::snprintf(name, sizeof name, "%s_%05d.png", aov_name(aov).c_str(), frame);
+  return out / name;
+}
+
+FrameRange default_frames(const std::optional<CameraPath>& path, double fps) {
+  if (!path) return {0, 1};
+  return {0, static_cast<int>(std::floor(path->duration() * fps + 1e-9)) + 1};  // every t in [0, duration]
+}
+
+}  // namespace
+
+CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
+  CLI::App* cmd = app.add_subcommand("capture", "Render frames headless and write them as PNG files: "
+                                                "DIR/<aov>_<frame, 5 digits>.png");
+  cmd->add_option("--scene", o.scene, "Scene JSON file, or the name of a shipped scene (default: the embedded "
+                                      "default scene)");
+  cmd->add_option("--path", o.path, "Camera path JSON file, or the name of a shipped path; without one every "
+                                    "frame uses the scene's camera");
+  cmd->add_option("--method", o.method, "Shadow method: uniform (focused uniform shadow map) or none")
+      ->capture_default_str();
+  cmd->add_option("--backend", o.backend, "GL context: egl (default; GPU device or Mesa surfaceless) or osmesa")
+      ->capture_default_str();
+  cmd->add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--shadow-size", o.shadow_size, "Shadow map size in texels (square)")->capture_default_str();
+  cmd->add_option("--frames", o.frames, "Frames A:B renders frames A to B-1 (default: the whole path at --fps, "
+                                        "or frame 0 without a path)");
+  cmd->add_option("--fps", o.fps, "Frames per second: frame i is at time i / fps")->capture_default_str();
+  cmd->add_option("--aov", o.aov, "Comma-separated images per frame: color, shadow, depth")->capture_default_str();
+  cmd->add_option("--light", o.light, "Index of the scene light that shines and casts shadows")->capture_default_str();
+  cmd->add_flag("--force", o.force, "Render frames again even where their files exist (by default a capture "
+                                    "resumes, skipping finished frames)");
+  cmd->add_option("--out", o.out, "Output folder (created if missing)")->required();
+  return cmd;
+}
+
+int run_capture(const CaptureOptions& o) {
+  // Check every input before any file is written.
+  const glm::ivec2 size = parse_size(o.size);
+  const RenderSettings settings{size.x, size.y, check_shadow_size(o.shadow_size), parse_shadow_method(o.method)};
+  const double fps = check_fps(o.fps);
+  const std::vector<Aov> aovs = parse_aov_list(o.aov);
+  if (o.backend != "egl" && o.backend != "osmesa") {
+    throw InputError("--backend: unknown backend '" + o.backend + "' (available: egl, osmesa)");
+  }
+  const Scene scene = load_scene_option(o.scene);
+  const shadow::Light& light = select_light(scene, o.light);
+  std::optional<CameraPath> path;
+  if (!o.path.empty()) path = CameraPath::load(open_input(o.path, "paths"));
+  const FrameRange frames = o.frames.empty() ? default_frames(path, fps) : parse_frames(o.frames);
+
+  const fs::path out(o.out);
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec || !fs::is_directory(out)) {
+    throw RuntimeFailure("--out: cannot create folder " + o.out + " (" + ec.message() + ")");
+  }
+  std::vector<int> todo;
+  for (int frame = frames.begin; frame < frames.end; ++frame) {
+    bool done = !o.force;
+    for (Aov aov : aovs) done = done && fs::exists(frame_file(out, aov, frame));
+    if (!done) todo.push_back(frame);
+  }
+  const int total = frames.end - frames.begin;
+  if (todo.empty()) {
+    std::cout << "capture: all " << total << " frames already in " << o.out << " (--force renders them again)\n";
+    return 0;
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  const std::unique_ptr<GlContext> context = create_headless_context(o.backend);
+  Renderer renderer(scene, settings);
+  Progress progress("capture: frame", todo.size());
+  for (int frame : todo) {
+    const double t = static_cast<double>(frame) / fps;
+    const shadow::Camera camera = path ? path->at(t, scene.camera) : scene.camera;
+    renderer.render(camera, light);
+    for (Aov aov : aovs) {
+      write_file_atomically(frame_file(out, aov, frame), encode_aov(aov, renderer.frame(), camera.far));
+    }
+    progress.step();
+  }
+  progress.finish();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "capture: wrote " << todo.size() << " frame(s) to " << o.out;
+  if (static_cast<int>(todo.size()) < total) std::cout << " (" << total - static_cast<int>(todo.size()) << " already there)";
+  std::printf(" in %.1f s on %s\n", seconds, context->description().c_str());
+  return 0;
+}
+
+}  // namespace ecoview

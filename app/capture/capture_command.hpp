@@ -1,0 +1,28 @@
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace ecoview {
+
+struct CaptureOptions {
+  std::string scene;
+  std::string path;
+  std::string method = "uniform";
+  std::string backend = "egl";
+  std::string size = "1280x720";
+  int shadow_size = 2048;
+  std::string frames;
+  double fps = 30.0;
+  std::string aov = "color";
+  int light = 0;
+  bool force = false;
+  std::string out;
+};
+
+// Registers `ecoview capture` and its options on `app`.
+CLI::App* add_capture_command(CLI::App& app, CaptureOptions& options);
+// Renders the frames; returns the exit code. Throws InputError / RuntimeFailure.
+int run_capture(const CaptureOptions& options);
+
+}  // namespace ecoview

@@ -1,0 +1,61 @@
+#include "app/cli/options.hpp"
+
+#include "app/errors.hpp"
+#include "app/scene/scene_file.hpp"
+
+#include <cmath>
+#include <regex>
+
+namespace ecoview {
+
+glm::ivec2 parse_size(const std::string& text) {
+  std::smatch m;
+  if (!std::regex_match(text, m, std::regex(R"((\d{1,6})x(\d{1,6}))"))) {
+    throw InputError("--size: expected WIDTHxHEIGHT such as 1280x720, got '" + text + "'");
+  }
+  const glm::ivec2 size(std::stoi(m[1]), std::stoi(m[2]));
+  if (size.x < 1 || size.y < 1 || size.x > 16384 || size.y > 16384) {
+    throw InputError("--size: width and height must be between 1 and 16384, got '" + text + "'");
+  }
+  return size;
+}
+
+FrameRange parse_frames(const std::string& text) {
+  std::smatch m;
+  if (!std::regex_match(text, m, std::regex(R"((\d{1,9}):(\d{1,9}))"))) {
+    throw InputError("--frames: expected A:B (frames A to B-1) such as 0:30, got '" + text + "'");
+  }
+  const FrameRange range{std::stoi(m[1]), std::stoi(m[2])};
+  if (range.end <= range.begin) {
+    throw InputError("--frames: B must be greater than A (frames A to B-1), got '" + text + "'");
+  }
+  return range;
+}
+
+int check_shadow_size(int size) {
+  if (size < 16 || size > 16384) {
+    throw InputError("--shadow-size: must be between 16 and 16384, got " + std::to_string(size));
+  }
+  return size;
+}
+
+double check_fps(double fps) {
+  if (!std::isfinite(fps) || fps <= 0.0 || fps > 10000.0) {
+    throw InputError("--fps: must be a number above 0 and at most 10000");
+  }
+  return fps;
+}
+
+Scene load_scene_option(const std::string& scene) {
+  return load_scene(open_input(scene.empty() ? default_scene_name : scene, "scenes"));
+}
+
+const shadow::Light& select_light(const Scene& scene, int index) {
+  if (index < 0 || static_cast<std::size_t>(index) >= scene.lights.size()) {
+    throw InputError("--light: " + scene.name + " has " + std::to_string(scene.lights.size()) +
+                     " light(s), numbered from 0; got " + std::to_string(index));
+  }
+  return scene.lights[static_cast<std::size_t>(index)];
+}
+
+}  // namespace ecoview

@@ -1,0 +1,40 @@
+#include "app/cli/view_command.hpp"
+
+#include "app/cli/options.hpp"
+#include "app/errors.hpp"
+#include "app/gl/glfw_window.hpp"
+#include "app/render/renderer.hpp"
+
+namespace ecoview {
+
+CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
+  CLI::App* cmd = app.add_subcommand("view", "Show a scene in a window (the scene's camera; flight controls "
+                                             "are still to come)");
+  cmd->add_option("--scene", o.scene, "Scene JSON file, or the name of a shipped scene");
+  cmd->add_option("--method", o.method, "Shadow method: uniform or none")->capture_default_str();
+  cmd->add_option("--size", o.size, "Window size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--shadow-size", o.shadow_size, "Shadow map size in texels")->capture_default_str();
+  cmd->add_option("--light", o.light, "Index of the scene light that shines and casts shadows")->capture_default_str();
+  cmd->add_option("--exit-after", o.exit_after, "Close after this many frames (0: when the window is closed)");
+  return cmd;
+}
+
+int run_view(const ViewOptions& o) {
+  const glm::ivec2 size = parse_size(o.size);
+  const RenderSettings settings{size.x, size.y, check_shadow_size(o.shadow_size), parse_shadow_method(o.method)};
+  if (o.exit_after < 0) throw InputError("--exit-after: must be 0 or more");
+  const Scene scene = load_scene_option(o.scene);
+  const shadow::Light& light = select_light(scene, o.light);
+
+  GlfwWindow window(size.x, size.y, "ecoview — " + scene.name);
+  Renderer renderer(scene, settings);
+  for (int frame = 0; !window.should_close() && (o.exit_after == 0 || frame < o.exit_after); ++frame) {
+    renderer.render(scene.camera, light);
+    const glm::ivec2 window_size = window.framebuffer_size();
+    renderer.frame().present(window_size.x, window_size.y);
+    window.swap_and_poll();
+  }
+  return 0;
+}
+
+}  // namespace ecoview

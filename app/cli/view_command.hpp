@@ -1,0 +1,22 @@
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace ecoview {
+
+struct ViewOptions {
+  std::string scene;
+  std::string method = "uniform";
+  std::string size = "1280x720";
+  int shadow_size = 2048;
+  int light = 0;
+  int exit_after = 0;  // frames; 0 runs until the window is closed
+};
+
+// Registers `ecoview view` on `app`.
+CLI::App* add_view_command(CLI::App& app, ViewOptions& options);
+// Shows the scene in a window until it is closed; returns the exit code.
+int run_view(const ViewOptions& options);
+
+}  // namespace ecoview

@@ -1,0 +1,64 @@
+#pragma once
+#include <glad/gl.h>
+
+#include <utility>
+
+// Owners of GL object names: created in the constructor, deleted in the destructor, movable,
+// not copyable. They need a current context with the GL functions loaded.
+namespace ecoview::gl {
+
+template <class Kind>
+class Object {
+ public:
+  template <class... Args>
+  explicit Object(Args... args) : name_(Kind::create(args...)) {}
+  ~Object() {
+    if (name_ != 0) Kind::destroy(name_);
+  }
+  Object(Object&& other) noexcept : name_(std::exchange(other.name_, 0)) {}
+  Object& operator=(Object&& other) noexcept {
+    std::swap(name_, other.name_);
+    return *this;
+  }
+  Object(const Object&) = delete;
+  Object& operator=(const Object&) = delete;
+
+  GLuint name() const { return name_; }
+
+ private:
+  GLuint name_;
+};
+
+struct BufferKind {
+  static GLuint create() { GLuint n = 0; glCreateBuffers(1, &n); return n; }
+  static void destroy(GLuint n) { glDeleteBuffers(1, &n); }
+};
+struct VertexArrayKind {
+  static GLuint create() { GLuint n = 0; glCreateVertexArrays(1, &n); return n; }
+  static void destroy(GLuint n) { glDeleteVertexArrays(1, &n); }
+};
+struct TextureKind {
+  static GLuint create(GLenum target) { GLuint n = 0; glCreateTextures(target, 1, &n); return n; }
+  static void destroy(GLuint n) { glDeleteTextures(1, &n); }
+};
+struct FramebufferKind {
+  static GLuint create() { GLuint n = 0; glCreateFramebuffers(1, &n); return n; }
+  static void destroy(GLuint n) { glDeleteFramebuffers(1, &n); }
+};
+struct ProgramKind {
+  static GLuint create() { return glCreateProgram(); }
+  static void destroy(GLuint n) { glDeleteProgram(n); }
+};
+struct ShaderKind {
+  static GLuint create(GLenum type) { return glCreateShader(type); }
+  static void destroy(GLuint n) { glDeleteShader(n); }
+};
+
+using Buffer = Object<BufferKind>;
+using VertexArray = Object<VertexArrayKind>;
+using Texture = Object<TextureKind>;
+using Framebuffer = Object<FramebufferKind>;
+using Program = Object<ProgramKind>;
+using Shader = Object<ShaderKind>;
+
+}  // namespace ecoview::gl

@@ -1,0 +1,64 @@
+#include "app/gl/shader_program.hpp"
+
+#include "app/errors.hpp"
+#include "app/resources.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace ecoview::gl {
+namespace {
+
+Shader compile(GLenum type, const std::string& file) {
+  const auto source = resources::find("shaders/" + file);
+  if (!source) throw RuntimeFailure("shader shaders/" + file + " is not embedded in this binary");
+  Shader shader(type);
+  const char* text = source->data();
+  const auto length = static_cast<GLint>(source->size());
+  glShaderSource(shader.name(), 1, &text, &length);
+  glCompileShader(shader.name());
+  GLint ok = 0;
+  glGetShaderiv(shader.name(), GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[2048] = {};
+    glGetShaderInfoLog(shader.name(), sizeof log, nullptr, log);
+    throw RuntimeFailure("shaders/" + file + " does not compile on this driver: " + log);
+  }
+  return shader;
+}
+
+}  // namespace
+
+Program build_program(const std::string& vertex, const std::string& fragment) {
+  const Shader vs = compile(GL_VERTEX_SHADER, vertex);
+  const Shader fs = compile(GL_FRAGMENT_SHADER, fragment);
+  Program program;
+  glAttachShader(program.name(), vs.name());
+  glAttachShader(program.name(), fs.name());
+  glLinkProgram(program.name());
+  GLint ok = 0;
+  glGetProgramiv(program.name(), GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[2048] = {};
+    glGetProgramInfoLog(program.name(), sizeof log, nullptr, log);
+    throw RuntimeFailure("shaders " + vertex + " + " + fragment + " do not link: " + log);
+  }
+  glDetachShader(program.name(), vs.name());
+  glDetachShader(program.name(), fs.name());
+  return program;
+}
+
+void set_uniform(const Program& program, const char* name, const glm::mat4& value) {
+  glProgramUniformMatrix4fv(program.name(), glGetUniformLocation(program.name(), name), 1, GL_FALSE,
+                            glm::value_ptr(value));
+}
+void set_uniform(const Program& program, const char* name, const glm::vec3& value) {
+  glProgramUniform3fv(program.name(), glGetUniformLocation(program.name(), name), 1, glm::value_ptr(value));
+}
+void set_uniform(const Program& program, const char* name, float value) {
+  glProgramUniform1f(program.name(), glGetUniformLocation(program.name(), name), value);
+}
+void set_uniform(const Program& program, const char* name, int value) {
+  glProgramUniform1i(program.name(), glGetUniformLocation(program.name(), name), value);
+}
+
+}  // namespace ecoview::gl

@@ -1,0 +1,19 @@
+#pragma once
+#include "app/gl/gl_objects.hpp"
+
+#include <glm/glm.hpp>
+
+#include <string>
+
+namespace ecoview::gl {
+
+// Compiles and links the embedded shaders at shaders/<vertex> and shaders/<fragment>.
+Program build_program(const std::string& vertex, const std::string& fragment);
+
+// Uniform setters by name; a name the linker dropped is ignored, as GL does.
+void set_uniform(const Program& program, const char* name, const glm::mat4& value);
+void set_uniform(const Program& program, const char* name, const glm::vec3& value);
+void set_uniform(const Program& program, const char* name, float value);
+void set_uniform(const Program& program, const char* name, int value);
+
+}  // namespace ecoview::gl

@@ -1,0 +1,92 @@
+#include "app/render/frame_pass.hpp"
+
+#include "app/gl/shader_program.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ecoview {
+namespace {
+
+const glm::vec3 sky_color(0.62f, 0.74f, 0.86f);  // sRGB
+
+}  // namespace
+
+FramePass::FramePass(int width, int height)
+    : width_(width), height_(height), program_(gl::build_program("frame.vert", "frame.frag")) {
+  glTextureStorage2D(color_.name(), 1, GL_RGBA8, width, height);
+  glTextureStorage2D(visibility_.name(), 1, GL_R8, width, height);
+  glTextureStorage2D(depth_.name(), 1, GL_R32F, width, height);
+  glTextureStorage2D(depth_buffer_.name(), 1, GL_DEPTH_COMPONENT32F, width, height);
+  const GLuint fb = framebuffer_.name();
+  glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT0, color_.name(), 0);
+  glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT1, visibility_.name(), 0);
+  glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT2, depth_.name(), 0);
+  glNamedFramebufferTexture(fb, GL_DEPTH_ATTACHMENT, depth_buffer_.name(), 0);
+  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(fb, 3, buffers);
+}
+
+void FramePass::render(const GpuScene& scene, const shadow::Camera& camera, const shadow::Light& light,
+                       const std::optional<ShadowLookup>& shadow_map) const {
+  const GLuint fb = framebuffer_.name();
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  glViewport(0, 0, width_, height_);
+  const float sky[4] = {sky_color.r, sky_color.g, sky_color.b, 1.0f};
+  const float fully_visible[4] = {1.0f, 0.0f, 0.0f, 0.0f};
+  const float no_surface[4] = {-1.0f, 0.0f, 0.0f, 0.0f};
+  const float far_depth = 1.0f;
+  glClearNamedFramebufferfv(fb, GL_COLOR, 0, sky);
+  glClearNamedFramebufferfv(fb, GL_COLOR, 1, fully_visible);
+  glClearNamedFramebufferfv(fb, GL_COLOR, 2, no_surface);
+  glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+
+  const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+  glUseProgram(program_.name());
+  gl::set_uniform(program_, "view", camera.view());
+  gl::set_uniform(program_, "view_projection", camera.projection(aspect) * camera.view());
+  gl::set_uniform(program_, "camera_position", camera.position);
+  gl::set_uniform(program_, "light_type", static_cast<int>(light.type));
+  gl::set_uniform(program_, "light_position", light.position);
+  gl::set_uniform(program_, "light_direction", glm::normalize(light.direction));
+  gl::set_uniform(program_, "spot_cos_cone", std::cos(glm::radians(light.cone_deg)));
+  gl::set_uniform(program_, "shadows_enabled", shadow_map ? 1 : 0);
+  if (shadow_map) {
+    gl::set_uniform(program_, "light_view_projection", shadow_map->light_view_projection);
+    gl::set_uniform(program_, "shadow_size", static_cast<float>(shadow_map->size));
+    glBindTextureUnit(0, shadow_map->depth_texture);
+  }
+  scene.draw();
+}
+
+template <class Sample>
+Image<Sample> FramePass::read(GLenum attachment, int channels, GLenum format, GLenum type) const {
+  Image<Sample> image{width_, height_, channels, {}};
+  const std::size_t row = static_cast<std::size_t>(width_) * static_cast<std::size_t>(channels);
+  std::vector<Sample> bottom_up(row * static_cast<std::size_t>(height_));
+  glNamedFramebufferReadBuffer(framebuffer_.name(), attachment);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.name());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, format, type, bottom_up.data());
+  image.samples.resize(bottom_up.size());
+  for (int y = 0; y < height_; ++y) {  // GL rows go up from the bottom; images go down from the top
+    std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(height_ - 1 - y)),
+                row, image.samples.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)));
+  }
+  return image;
+}
+
+Image8 FramePass::read_color() const { return read<std::uint8_t>(GL_COLOR_ATTACHMENT0, 3, GL_RGB, GL_UNSIGNED_BYTE); }
+Image8 FramePass::read_visibility() const { return read<std::uint8_t>(GL_COLOR_ATTACHMENT1, 1, GL_RED, GL_UNSIGNED_BYTE); }
+Image<float> FramePass::read_depth() const { return read<float>(GL_COLOR_ATTACHMENT2, 1, GL_RED, GL_FLOAT); }
+
+void FramePass::present(int width, int height) const {
+  glNamedFramebufferReadBuffer(framebuffer_.name(), GL_COLOR_ATTACHMENT0);
+  glBlitNamedFramebuffer(framebuffer_.name(), 0, 0, 0, width_, height_, 0, 0, width, height,
+                         GL_COLOR_BUFFER_BIT, GL_LINEAR);
+}
+
+}  // namespace ecoview

@@ -1,0 +1,51 @@
+#pragma once
+#include "app/gl/gl_objects.hpp"
+#include "app/render/gpu_scene.hpp"
+#include "app/render/image.hpp"
+#include "shadow/camera.hpp"
+#include "shadow/light.hpp"
+
+#include <optional>
+
+namespace ecoview {
+
+// Renders the camera's view with Blinn-Phong shading into three targets: sRGB colour, light
+// visibility (the `shadow` AOV) and linear view depth.
+class FramePass {
+ public:
+  FramePass(int width, int height);
+
+  // `shadow_map`: the depth texture and the matrix that maps world space to its clip space;
+  // without one every surface facing the light is lit.
+  struct ShadowLookup {
+    GLuint depth_texture;
+    glm::mat4 light_view_projection;
+    int size;
+  };
+  void render(const GpuScene& scene, const shadow::Camera& camera, const shadow::Light& light,
+              const std::optional<ShadowLookup>& shadow_map) const;
+
+  Image8 read_color() const;
+  Image8 read_visibility() const;
+  // Linear view depth in metres; negative where no surface was drawn.
+  Image<float> read_depth() const;
+  // Copies the colour to the default framebuffer (a window), scaled to fit.
+  void present(int width, int height) const;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  template <class Sample>
+  Image<Sample> read(GLenum attachment, int channels, GLenum format, GLenum type) const;
+
+  int width_, height_;
+  gl::Texture color_{GL_TEXTURE_2D};
+  gl::Texture visibility_{GL_TEXTURE_2D};
+  gl::Texture depth_{GL_TEXTURE_2D};
+  gl::Texture depth_buffer_{GL_TEXTURE_2D};
+  gl::Framebuffer framebuffer_;
+  gl::Program program_;
+};
+
+}  // namespace ecoview

@@ -1,0 +1,76 @@
+#include "app/render/gpu_scene.hpp"
+
+namespace ecoview {
+namespace {
+
+struct Vertex {
+  glm::vec3 position, normal, color;
+};
+
+struct Instance {
+  glm::mat4 model;
+  glm::vec4 normal_matrix[3];  // columns of mat3(transpose(inverse(model))), padded
+  glm::vec4 color;
+};
+
+template <class T>
+void upload(const gl::Buffer& buffer, const std::vector<T>& data) {
+  glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data(), 0);
+}
+
+void attribute(GLuint vao, GLuint location, GLuint binding, GLint size, GLuint offset) {
+  glEnableVertexArrayAttrib(vao, location);
+  glVertexArrayAttribFormat(vao, location, size, GL_FLOAT, GL_FALSE, offset);
+  glVertexArrayAttribBinding(vao, location, binding);
+}
+
+}  // namespace
+
+GpuScene::GpuScene(const Scene& scene) {
+  for (const pointgen::TriangleMesh& mesh : scene.meshes) {
+    std::vector<Vertex> vertices;
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+      vertices.push_back({mesh.positions[i], mesh.normals[i], mesh.colors[i]});
+    }
+    Mesh& m = meshes_.emplace_back();
+    upload(m.vertices, vertices);
+    upload(m.indices, mesh.indices);
+    m.index_count = static_cast<GLsizei>(mesh.indices.size());
+  }
+  for (const InstanceGroup& group : scene.groups) {
+    std::vector<Instance> instances;
+    for (std::size_t i = 0; i < group.transforms.size(); ++i) {
+      const glm::mat3 n = glm::transpose(glm::inverse(glm::mat3(group.transforms[i])));
+      instances.push_back({group.transforms[i], {glm::vec4(n[0], 0), glm::vec4(n[1], 0), glm::vec4(n[2], 0)},
+                           glm::vec4(group.colors[i], 1)});
+    }
+    const Mesh& mesh = meshes_[group.mesh];
+    Group& g = groups_.emplace_back();
+    upload(g.instances, instances);
+    g.index_count = mesh.index_count;
+    g.instance_count = static_cast<GLsizei>(instances.size());
+    triangles_ += static_cast<std::size_t>(mesh.index_count / 3) * instances.size();
+
+    const GLuint vao = g.vertex_array.name();
+    glVertexArrayVertexBuffer(vao, 0, mesh.vertices.name(), 0, sizeof(Vertex));
+    glVertexArrayVertexBuffer(vao, 1, g.instances.name(), 0, sizeof(Instance));
+    glVertexArrayBindingDivisor(vao, 1, 1);
+    glVertexArrayElementBuffer(vao, mesh.indices.name());
+    attribute(vao, 0, 0, 3, offsetof(Vertex, position));
+    attribute(vao, 1, 0, 3, offsetof(Vertex, normal));
+    attribute(vao, 2, 0, 3, offsetof(Vertex, color));
+    for (GLuint c = 0; c < 4; ++c) attribute(vao, 3 + c, 1, 4, offsetof(Instance, model) + c * sizeof(glm::vec4));
+    for (GLuint c = 0; c < 3; ++c) attribute(vao, 7 + c, 1, 3, offsetof(Instance, normal_matrix) + c * sizeof(glm::vec4));
+    attribute(vao, 10, 1, 3, offsetof(Instance, color));
+  }
+}
+
+void GpuScene::draw() const {
+  for (const Group& group : groups_) {
+    glBindVertexArray(group.vertex_array.name());
+    glDrawElementsInstanced(GL_TRIANGLES, group.index_count, GL_UNSIGNED_INT, nullptr, group.instance_count);
+  }
+  glBindVertexArray(0);
+}
+
+}  // namespace ecoview

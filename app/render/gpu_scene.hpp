@@ -1,0 +1,35 @@
+#pragma once
+#include "app/gl/gl_objects.hpp"
+#include "app/scene/scene.hpp"
+
+#include <vector>
+
+namespace ecoview {
+
+// The scene's meshes and instance tables in GL buffers: each mesh once, drawn with one instanced
+// call per group. Vertex attributes: 0 position, 1 normal, 2 colour; per instance: 3–6 model
+// matrix, 7–9 normal matrix, 10 colour.
+class GpuScene {
+ public:
+  explicit GpuScene(const Scene& scene);
+  void draw() const;
+  std::size_t triangles_per_draw() const { return triangles_; }
+
+ private:
+  struct Mesh {
+    gl::Buffer vertices;
+    gl::Buffer indices;
+    GLsizei index_count = 0;
+  };
+  struct Group {
+    gl::VertexArray vertex_array;
+    gl::Buffer instances;
+    GLsizei index_count = 0;
+    GLsizei instance_count = 0;
+  };
+  std::vector<Mesh> meshes_;
+  std::vector<Group> groups_;
+  std::size_t triangles_ = 0;
+};
+
+}  // namespace ecoview

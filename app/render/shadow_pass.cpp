@@ -1,0 +1,48 @@
+#include "app/render/shadow_pass.hpp"
+
+#include "app/gl/shader_program.hpp"
+
+namespace ecoview {
+namespace {
+
+// glPolygonOffset(factor, units): the factor scales with the depth slope of each triangle, which
+// removes acne on surfaces the light grazes; the units add a few depth steps everywhere.
+constexpr float offset_factor = 2.0f;
+constexpr float offset_units = 4.0f;
+
+}  // namespace
+
+ShadowPass::ShadowPass(int size) : size_(size), program_(gl::build_program("shadow_depth.vert", "shadow_depth.frag")) {
+  const GLuint t = depth_.name();
+  glTextureStorage2D(t, 1, GL_DEPTH_COMPONENT32F, size, size);
+  glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTextureParameteri(t, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  // Outside the map nothing was rendered: depth 1 there reads as lit.
+  glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+  glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+  const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  glTextureParameterfv(t, GL_TEXTURE_BORDER_COLOR, border);
+  glNamedFramebufferTexture(framebuffer_.name(), GL_DEPTH_ATTACHMENT, t, 0);
+  glNamedFramebufferDrawBuffer(framebuffer_.name(), GL_NONE);
+  glNamedFramebufferReadBuffer(framebuffer_.name(), GL_NONE);
+}
+
+void ShadowPass::render(const GpuScene& scene, const glm::mat4& light_view_projection) const {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.name());
+  glViewport(0, 0, size_, size_);
+  const float far_depth = 1.0f;
+  glClearNamedFramebufferfv(framebuffer_.name(), GL_DEPTH, 0, &far_depth);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);  // planes are single-sided but cast shadows from both sides
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(offset_factor, offset_units);
+  glUseProgram(program_.name());
+  gl::set_uniform(program_, "light_view_projection", light_view_projection);
+  scene.draw();
+  glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+}  // namespace ecoview

@@ -1,0 +1,69 @@
+#include "app/scene/camera_path.hpp"
+
+#include "app/scene/scene_fields.hpp"
+
+#include <algorithm>
+
+namespace ecoview {
+namespace {
+
+// Cubic Hermite segment between keys i and i+1 with Catmull-Rom tangents for uneven key times.
+template <class Get>
+glm::vec3 spline(const std::vector<CameraPath::Key>& keys, std::size_t i, double t, Get get) {
+  auto tangent = [&](std::size_t k) {
+    const std::size_t a = k == 0 ? 0 : k - 1;
+    const std::size_t b = std::min(k + 1, keys.size() - 1);
+    return (get(keys[b]) - get(keys[a])) / static_cast<float>(keys[b].t - keys[a].t);
+  };
+  const auto h = static_cast<float>(keys[i + 1].t - keys[i].t);
+  const auto s = static_cast<float>((t - keys[i].t) / (keys[i + 1].t - keys[i].t));
+  const float s2 = s * s, s3 = s2 * s;
+  return (2 * s3 - 3 * s2 + 1) * get(keys[i]) + (s3 - 2 * s2 + s) * h * tangent(i) +
+         (-2 * s3 + 3 * s2) * get(keys[i + 1]) + (s3 - s2) * h * tangent(i + 1);
+}
+
+}  // namespace
+
+CameraPath CameraPath::load(const InputSource& source) {
+  const nlohmann::json document = parse_json(source.text, source.name);
+  const JsonField root(document, source.name);
+  std::vector<Key> keys;
+  for (const JsonField& item : root.items(1)) {
+    item.only_keys({"t", "position", "target", "up"});
+    Key key{item["t"].number(0, 1e6), item["position"].vec3(), item["target"].vec3(), glm::vec3(0, 1, 0)};
+    if (auto up = item.optional("up")) key.up = up->vec3();
+    check_camera_frame(item, key.position, key.target, key.up);
+    if (!keys.empty() && key.t <= keys.back().t) item["t"].fail("times must increase from key to key");
+    keys.push_back(key);
+  }
+  return CameraPath(std::move(keys));
+}
+
+shadow::Camera CameraPath::at(double t, const shadow::Camera& base) const {
+  shadow::Camera camera = base;
+  if (keys_.size() == 1 || t <= keys_.front().t) {
+    camera.position = keys_.front().position;
+    camera.target = keys_.front().target;
+    camera.up = keys_.front().up;
+  } else if (t >= keys_.back().t) {
+    camera.position = keys_.back().position;
+    camera.target = keys_.back().target;
+    camera.up = keys_.back().up;
+  } else {
+    const auto next = std::upper_bound(keys_.begin(), keys_.end(), t, [](double v, const Key& k) { return v < k.t; });
+    const auto i = static_cast<std::size_t>(next - keys_.begin() - 1);
+    camera.position = spline(keys_, i, t, [](const Key& k) { return k.position; });
+    camera.target = spline(keys_, i, t, [](const Key& k) { return k.target; });
+    camera.up = glm::normalize(spline(keys_, i, t, [](const Key& k) { return k.up; }));
+  }
+  // A spline can pass through a degenerate frame between valid keys; keep the camera valid.
+  const glm::vec3 forward = camera.target - camera.position;
+  if (glm::length(forward) < 1e-6f) camera.target = camera.position + base.forward();
+  if (glm::length(glm::cross(glm::normalize(camera.target - camera.position), camera.up)) < 1e-4f) {
+    camera.up = std::abs(camera.target.y - camera.position.y) < 0.9f * glm::length(camera.target - camera.position)
+                    ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
+  }
+  return camera;
+}
+
+}  // namespace ecoview

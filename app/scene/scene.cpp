@@ -1,0 +1,33 @@
+#include "app/scene/scene.hpp"
+
+namespace ecoview {
+
+shadow::Box Scene::bounds() const {
+  shadow::Box box;
+  for (const InstanceGroup& group : groups) {
+    const pointgen::Bounds local = meshes[group.mesh].bounds();
+    if (local.empty()) continue;
+    for (const glm::mat4& transform : group.transforms) {
+      for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner((i & 1) ? local.max.x : local.min.x, (i & 2) ? local.max.y : local.min.y,
+                               (i & 4) ? local.max.z : local.min.z);
+        box.add(glm::vec3(transform * glm::vec4(corner, 1.0f)));
+      }
+    }
+  }
+  return box;
+}
+
+std::size_t Scene::triangle_count() const {
+  std::size_t count = 0;
+  for (const InstanceGroup& group : groups) count += meshes[group.mesh].triangle_count() * group.transforms.size();
+  return count;
+}
+
+std::size_t Scene::instance_count() const {
+  std::size_t count = 0;
+  for (const InstanceGroup& group : groups) count += group.transforms.size();
+  return count;
+}
+
+}  // namespace ecoview

@@ -1,0 +1,156 @@
+#include "app/scene/scene_file.hpp"
+
+#include "app/errors.hpp"
+#include "app/file_io.hpp"
+#include "app/resources.hpp"
+#include "app/scene/json_input.hpp"
+#include "app/scene/scene_fields.hpp"
+#include "pointgen/file_error.hpp"
+#include "pointgen/primitives.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <map>
+
+namespace ecoview {
+namespace {
+
+namespace fs = std::filesystem;
+
+const glm::vec3 default_color(0.8f);
+
+// The scene's meshes and groups as objects are added: each primitive and each mesh file is
+// stored once, and all instances of one mesh share a group.
+class SceneBuilder {
+ public:
+  SceneBuilder(Scene& scene, const InputSource& source) : scene_(scene), source_(source) {}
+
+  void add_object(const JsonField& object) {
+    const std::string type = object["type"].string();
+    const glm::vec3 color = object.has("color") ? srgb_to_linear(object["color"].color()) : default_color;
+    if (type == "plane") {
+      object.only_keys({"type", "center", "size", "color"});
+      const std::vector<double> size = object["size"].numbers(2, 1e-6, 2 * JsonField::max_coordinate);
+      const glm::mat4 t = glm::scale(glm::translate(glm::mat4(1.0f), object["center"].vec3()),
+                                     glm::vec3(size[0], 1.0, size[1]));
+      add_instance(primitive("plane"), t, color);
+    } else if (type == "box") {
+      object.only_keys({"type", "min", "max", "color"});
+      const glm::vec3 min = object["min"].vec3();
+      const glm::vec3 max = object["max"].vec3();
+      if (glm::any(glm::greaterThanEqual(min, max))) object["max"].fail("must be greater than min in x, y and z");
+      add_instance(primitive("box"), glm::scale(glm::translate(glm::mat4(1.0f), 0.5f * (min + max)), max - min), color);
+    } else if (type == "sphere") {
+      object.only_keys({"type", "center", "radius", "color"});
+      const float radius = object["radius"].number_f(1e-6, JsonField::max_coordinate);
+      add_instance(primitive("sphere"), glm::scale(glm::translate(glm::mat4(1.0f), object["center"].vec3()), glm::vec3(radius)), color);
+    } else if (type == "mesh") {
+      object.only_keys({"type", "file", "transforms", "color"});
+      const std::size_t mesh = mesh_file(object["file"]);
+      if (!object.has("transforms")) {
+        add_instance(mesh, glm::mat4(1.0f), color);
+        return;
+      }
+      for (const JsonField& item : object["transforms"].items(1)) add_instance(mesh, read_transform(item), color);
+    } else {
+      object["type"].fail("unknown object type '" + type + "' (known: plane, box, sphere, mesh)");
+    }
+  }
+
+ private:
+  std::size_t primitive(const std::string& kind) {
+    const auto it = primitives_.find(kind);
+    if (it != primitives_.end()) return it->second;
+    scene_.meshes.push_back(kind == "plane" ? pointgen::unit_plane()
+                            : kind == "box" ? pointgen::unit_box()
+                                            : pointgen::unit_sphere());
+    return primitives_[kind] = scene_.meshes.size() - 1;
+  }
+
+  std::size_t mesh_file(const JsonField& field) {
+    const std::string path = field.string();
+    const auto it = files_.find(path);
+    if (it != files_.end()) return it->second;
+    try {
+      scene_.meshes.push_back(pointgen::load_mesh_file(path, source_.read_relative));
+    } catch (const pointgen::FileError& e) {
+      field.fail(e.what());
+    }
+    return files_[path] = scene_.meshes.size() - 1;
+  }
+
+  static glm::mat4 read_transform(const JsonField& field) {
+    const std::vector<double> v = field.numbers(16, -JsonField::max_coordinate, JsonField::max_coordinate);
+    glm::mat4 m;
+    for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = static_cast<float>(v[static_cast<std::size_t>(i)]);
+    if (m[0][3] != 0.0f || m[1][3] != 0.0f || m[2][3] != 0.0f || m[3][3] != 1.0f) {
+      field.fail("not an affine transform: in column-major order, numbers 4, 8, 12 must be 0 and 16 must be 1");
+    }
+    if (std::abs(glm::determinant(glm::mat3(m))) < 1e-12f) field.fail("the transform is singular");
+    return m;
+  }
+
+  void add_instance(std::size_t mesh, const glm::mat4& transform, const glm::vec3& color) {
+    auto it = group_of_mesh_.find(mesh);
+    if (it == group_of_mesh_.end()) {
+      scene_.groups.push_back({mesh, {}, {}});
+      it = group_of_mesh_.emplace(mesh, scene_.groups.size() - 1).first;
+    }
+    scene_.groups[it->second].transforms.push_back(transform);
+    scene_.groups[it->second].colors.push_back(color);
+  }
+
+  Scene& scene_;
+  const InputSource& source_;
+  std::map<std::string, std::size_t> primitives_;
+  std::map<std::string, std::size_t> files_;
+  std::map<std::size_t, std::size_t> group_of_mesh_;
+};
+
+std::string singular(const std::string& folder) {
+  return folder.back() == 's' ? folder.substr(0, folder.size() - 1) : folder;
+}
+
+}  // namespace
+
+InputSource open_input(const std::string& name_or_file, const std::string& folder) {
+  std::error_code ec;
+  if (fs::exists(name_or_file, ec)) {
+    std::optional<std::string> text = read_file(name_or_file);
+    if (!text) throw InputError(name_or_file + ": cannot be read (not a regular, readable file)");
+    const fs::path base = fs::path(name_or_file).parent_path();
+    return {name_or_file, std::move(*text),
+            [base](const std::string& relative) { return read_file(base / relative); }};
+  }
+  const std::string resource = "data/" + folder + "/" + name_or_file + ".json";
+  if (const auto text = resources::find(resource)) {
+    const fs::path base = "data/" + folder;
+    return {resource, std::string(*text), [base](const std::string& relative) -> std::optional<std::string> {
+              const auto bytes = resources::find((base / relative).lexically_normal().generic_string());
+              if (!bytes) return std::nullopt;
+              return std::string(*bytes);
+            }};
+  }
+  std::string shipped;
+  for (const std::string& name : resources::names_in("data/" + folder, ".json")) {
+    shipped += (shipped.empty() ? "" : ", ") + name;
+  }
+  throw InputError(name_or_file + ": no such file, and no shipped " + singular(folder) +
+                   " of that name (shipped: " + shipped + ")");
+}
+
+Scene load_scene(const InputSource& source) {
+  const nlohmann::json document = parse_json(source.text, source.name);
+  const JsonField root(document, source.name);
+  root.only_keys({"camera", "lights", "objects", "comment"});
+  Scene scene;
+  scene.name = source.name;
+  scene.camera = read_camera(root["camera"]);
+  for (const JsonField& light : root["lights"].items(1)) scene.lights.push_back(read_light(light));
+  SceneBuilder builder(scene, source);
+  for (const JsonField& object : root["objects"].items(1)) builder.add_object(object);
+  return scene;
+}
+
+}  // namespace ecoview

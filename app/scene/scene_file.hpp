@@ -1,0 +1,27 @@
+#pragma once
+#include "app/scene/scene.hpp"
+#include "pointgen/mesh_file.hpp"
+
+#include <string>
+
+namespace ecoview {
+
+// Where a scene or path comes from: a file on disk or a resource shipped in the binary. Files it
+// names (meshes) are read relative to its folder, from the same place.
+struct InputSource {
+  std::string name;   // for messages: the path as given, or "data/scenes/NAME.json"
+  std::string text;
+  pointgen::ReadFile read_relative;  // reads a path relative to the source's folder
+};
+
+// `name_or_file` is a path to a file or the name of a file shipped under data/<folder>/
+// (e.g. "courtyard" for data/scenes/courtyard.json). Throws InputError when it is neither.
+InputSource open_input(const std::string& name_or_file, const std::string& folder);
+
+// Parses the scene JSON (format in README and DESIGN.md) and loads the meshes it names.
+Scene load_scene(const InputSource& source);
+
+// The scene used when no --scene is given.
+constexpr const char* default_scene_name = "courtyard";
+
+}  // namespace ecoview

@@ -1,0 +1,398 @@
+// glTF 2.0 through tinygltf. tinygltf parses; every index and byte range it hands over is checked
+// here before it is read, so hostile files fail with FileError instead of reading out of bounds.
+#include "pointgen/file_error.hpp"
+#include "pointgen/mesh_file.hpp"
+
+#include <tiny_gltf.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstring>
+#include <filesystem>
+
+namespace pointgen {
+namespace {
+
+constexpr std::size_t max_elements = std::size_t{1} << 28;
+
+// Routes tinygltf's file access through ReadFile; never expands paths (tinygltf's default runs
+// wordexp on URIs from the file).
+struct FileAccess {
+  const ReadFile* read;
+
+  static bool exists(const std::string& path, void* self) {
+    return static_cast<FileAccess*>(self)->read->operator()(path).has_value();
+  }
+  static std::string expand(const std::string& path, void*) { return path; }
+  static bool read_whole(std::vector<unsigned char>* out, std::string* err,
+                         const std::string& path, void* self) {
+    const std::optional<std::string> bytes = static_cast<FileAccess*>(self)->read->operator()(path);
+    if (!bytes) {
+      if (err) *err += "cannot read '" + path + "'\n";
+      return false;
+    }
+    out->assign(bytes->begin(), bytes->end());
+    return true;
+  }
+  static bool no_write(std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
+    return false;
+  }
+};
+
+// Images are not used (colour comes from materials and COLOR_0); skip decoding them.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                const unsigned char*, int, void*) {
+  return true;
+}
+
+class AccessorReader {
+ public:
+  AccessorReader(const tinygltf::Model& model, const std::string& path)
+      : model_(model), path_(path) {}
+
+  [[noreturn]] void fail(const std::string& problem) const { throw FileError(path_, problem); }
+
+  // count x components floats; integer components are normalized when the accessor says so.
+  std::vector<float> floats(int index, int components, const char* what) const {
+    const tinygltf::Accessor& a = accessor(index, what);
+    if (tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type)) != components) {
+      fail(std::string(what) + " accessor " + std::to_string(index) + " has the wrong type");
+    }
+    std::vector<float> out(a.count * static_cast<std::size_t>(components), 0.0f);
+    auto store = [&](std::size_t element, const unsigned char* src) {
+      for (int c = 0; c < components; ++c) {
+        out[element * static_cast<std::size_t>(components) + static_cast<std::size_t>(c)] =
+            component(src, a.componentType, c, a.normalized, what);
+      }
+    };
+    visit_elements(a, index, what, store);
+    return out;
+  }
+
+  std::vector<std::uint32_t> indices(int index, std::size_t vertex_count) const {
+    const tinygltf::Accessor& a = accessor(index, "index");
+    if (a.type != TINYGLTF_TYPE_SCALAR) fail("index accessor is not scalar");
+    std::vector<std::uint32_t> out(a.count, 0);
+    visit_elements(a, index, "index", [&](std::size_t element, const unsigned char* src) {
+      out[element] = integer(src, a.componentType, 0, "index");
+    });
+    for (std::uint32_t v : out) {
+      if (v >= vertex_count) fail("index " + std::to_string(v) + " is out of range");
+    }
+    return out;
+  }
+
+ private:
+  const tinygltf::Accessor& accessor(int index, const char* what) const {
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size()) {
+      fail(std::string(what) + " accessor " + std::to_string(index) + " does not exist");
+    }
+    const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
+    if (a.count > max_elements) fail(std::string(what) + " accessor is too large");
+    return a;
+  }
+
+  static std::size_t component_size(int type) {
+    switch (type) {
+      case TINYGLTF_COMPONENT_TYPE_BYTE:
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+      case TINYGLTF_COMPONENT_TYPE_SHORT:
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+      default: return 0;
+    }
+  }
+
+  // The bytes of a view, checked against its buffer, with the element size and stride it implies.
+  const unsigned char* view_range(int view_index, std::size_t offset, std::size_t count,
+                                  std::size_t element_size, std::size_t stride_override,
+                                  const char* what) const {
+    if (view_index < 0 || static_cast<std::size_t>(view_index) >= model_.bufferViews.size()) {
+      fail(std::string(what) + " data: buffer view " + std::to_string(view_index) +
+           " does not exist");
+    }
+    const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(view_index)];
+    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model_.buffers.size()) {
+      fail(std::string(what) + " data: buffer " + std::to_string(view.buffer) + " does not exist");
+    }
+    const auto& data = model_.buffers[static_cast<std::size_t>(view.buffer)].data;
+    const std::size_t stride = stride_override ? stride_override : element_size;
+    if (stride < element_size) fail(std::string(what) + " data: stride smaller than an element");
+    const std::size_t needed = count == 0 ? 0 : offset + stride * (count - 1) + element_size;
+    if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset ||
+        needed > view.byteLength) {
+      fail(std::string(what) + " data: accessor reads past the end of its buffer");
+    }
+    return data.data() + view.byteOffset + offset;
+  }
+
+  template <class Store>
+  void visit_elements(const tinygltf::Accessor& a, int index, const char* what,
+                      const Store& store) const {
+    const std::size_t components = static_cast<std::size_t>(
+        tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type)));
+    const std::size_t element_size = component_size(a.componentType) * components;
+    if (element_size == 0) fail(std::string(what) + " accessor has an unknown component type");
+    if (a.bufferView >= 0) {
+      const std::size_t stride = model_.bufferViews.size() > static_cast<std::size_t>(a.bufferView)
+                                     ? model_.bufferViews[static_cast<std::size_t>(a.bufferView)].byteStride
+                                     : 0;
+      const unsigned char* base =
+          view_range(a.bufferView, a.byteOffset, a.count, element_size, stride, what);
+      const std::size_t step = stride ? stride : element_size;
+      for (std::size_t i = 0; i < a.count; ++i) store(i, base + i * step);
+    } else if (!a.sparse.isSparse) {
+      fail(std::string(what) + " accessor " + std::to_string(index) + " has no data");
+    }
+    if (a.sparse.isSparse) apply_sparse(a, element_size, what, store);
+  }
+
+  template <class Store>
+  void apply_sparse(const tinygltf::Accessor& a, std::size_t element_size, const char* what,
+                    const Store& store) const {
+    if (a.sparse.count < 0 || static_cast<std::size_t>(a.sparse.count) > a.count) {
+      fail(std::string(what) + " accessor: bad sparse count");
+    }
+    const auto count = static_cast<std::size_t>(a.sparse.count);
+    const int index_type = a.sparse.indices.componentType;
+    const std::size_t index_size = component_size(index_type);
+    if (index_size == 0 || index_type == TINYGLTF_COMPONENT_TYPE_FLOAT || a.sparse.indices.byteOffset < 0 ||
+        a.sparse.values.byteOffset < 0) {
+      fail(std::string(what) + " accessor: bad sparse indices");
+    }
+    const unsigned char* indices = view_range(a.sparse.indices.bufferView,
+                                              static_cast<std::size_t>(a.sparse.indices.byteOffset),
+                                              count, index_size, 0, what);
+    const unsigned char* values = view_range(a.sparse.values.bufferView,
+                                             static_cast<std::size_t>(a.sparse.values.byteOffset),
+                                             count, element_size, 0, what);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::uint32_t target = integer(indices + i * index_size, index_type, 0, what);
+      if (target >= a.count) fail(std::string(what) + " accessor: sparse index out of range");
+      store(target, values + i * element_size);
+    }
+  }
+
+  std::uint32_t integer(const unsigned char* src, int type, int c, const char* what) const {
+    switch (type) {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return src[c];
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        std::uint16_t v;
+        std::memcpy(&v, src + 2 * c, 2);
+        return v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+        std::uint32_t v;
+        std::memcpy(&v, src + 4 * c, 4);
+        return v;
+      }
+      default: fail(std::string(what) + " data must be unsigned integers");
+    }
+  }
+
+  float component(const unsigned char* src, int type, int c, bool normalized,
+                  const char* what) const {
+    switch (type) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+        float v;
+        std::memcpy(&v, src + 4 * c, 4);
+        return v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_BYTE: {
+        const auto v = static_cast<float>(static_cast<std::int8_t>(src[c]));
+        return normalized ? std::max(v / 127.0f, -1.0f) : v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_SHORT: {
+        std::int16_t raw;
+        std::memcpy(&raw, src + 2 * c, 2);
+        const auto v = static_cast<float>(raw);
+        return normalized ? std::max(v / 32767.0f, -1.0f) : v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return normalized ? static_cast<float>(src[c]) / 255.0f : static_cast<float>(src[c]);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        const auto v = static_cast<float>(integer(src, type, c, what));
+        return normalized ? v / 65535.0f : v;
+      }
+      default: fail(std::string(what) + " data has an unsupported component type");
+    }
+  }
+
+  const tinygltf::Model& model_;
+  const std::string& path_;
+};
+
+glm::mat4 node_matrix(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) {
+    glm::mat4 m;
+    for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = static_cast<float>(node.matrix[static_cast<std::size_t>(i)]);
+    return m;
+  }
+  glm::mat4 m(1.0f);
+  if (node.translation.size() == 3) {
+    m = glm::translate(m, glm::vec3(node.translation[0], node.translation[1], node.translation[2]));
+  }
+  if (node.rotation.size() == 4) {
+    const glm::quat q(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
+                      static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2]));
+    m *= glm::mat4_cast(glm::normalize(q));
+  }
+  if (node.scale.size() == 3) {
+    m = glm::scale(m, glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
+  }
+  return m;
+}
+
+glm::vec3 base_color(const tinygltf::Model& model, int material) {
+  if (material < 0 || static_cast<std::size_t>(material) >= model.materials.size()) return glm::vec3(1.0f);
+  const auto& factor = model.materials[static_cast<std::size_t>(material)].pbrMetallicRoughness.baseColorFactor;
+  if (factor.size() < 3) return glm::vec3(1.0f);
+  return glm::clamp(glm::vec3(factor[0], factor[1], factor[2]), 0.0f, 1.0f);
+}
+
+// Triangle list indices for a primitive of any triangle mode.
+std::vector<std::uint32_t> triangle_list(const std::vector<std::uint32_t>& in, int mode) {
+  if (mode == TINYGLTF_MODE_TRIANGLES) return {in.begin(), in.begin() + static_cast<std::ptrdiff_t>(in.size() / 3 * 3)};
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 2; i < in.size(); ++i) {
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+      if (i % 2 == 0) out.insert(out.end(), {in[i - 2], in[i - 1], in[i]});
+      else out.insert(out.end(), {in[i - 1], in[i - 2], in[i]});
+    } else {  // fan
+      out.insert(out.end(), {in[0], in[i - 1], in[i]});
+    }
+  }
+  return out;
+}
+
+class MeshBuilder {
+ public:
+  MeshBuilder(const tinygltf::Model& model, const std::string& path)
+      : model_(model), reader_(model, path) {}
+
+  void add_node(int index, const glm::mat4& parent, int depth) {
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size()) {
+      reader_.fail("node " + std::to_string(index) + " does not exist");
+    }
+    if (depth > 64) reader_.fail("node hierarchy is cyclic or deeper than 64 levels");
+    const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
+    const glm::mat4 world = parent * node_matrix(node);
+    if (node.mesh >= 0) add_mesh(node.mesh, world);
+    for (int child : node.children) add_node(child, world, depth + 1);
+  }
+
+  TriangleMesh take() { return std::move(mesh_); }
+
+ private:
+  void add_mesh(int index, const glm::mat4& world) {
+    if (static_cast<std::size_t>(index) >= model_.meshes.size()) {
+      reader_.fail("mesh " + std::to_string(index) + " does not exist");
+    }
+    for (const tinygltf::Primitive& primitive : model_.meshes[static_cast<std::size_t>(index)].primitives) {
+      const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+      if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+          mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        continue;  // points and lines have no surface to shade or sample
+      }
+      mesh_.append(primitive_mesh(primitive, mode), world);
+    }
+  }
+
+  TriangleMesh primitive_mesh(const tinygltf::Primitive& primitive, int mode) const {
+    const auto position = primitive.attributes.find("POSITION");
+    if (position == primitive.attributes.end()) reader_.fail("a primitive has no POSITION");
+    TriangleMesh part;
+    const std::vector<float> p = reader_.floats(position->second, 3, "POSITION");
+    for (std::size_t i = 0; i + 2 < p.size(); i += 3) part.positions.emplace_back(p[i], p[i + 1], p[i + 2]);
+    const std::size_t n = part.positions.size();
+
+    std::vector<std::uint32_t> indices;
+    if (primitive.indices >= 0) {
+      indices = reader_.indices(primitive.indices, n);
+    } else {
+      for (std::size_t i = 0; i < n; ++i) indices.push_back(static_cast<std::uint32_t>(i));
+    }
+    part.indices = triangle_list(indices, mode);
+
+    const auto normal = primitive.attributes.find("NORMAL");
+    if (normal != primitive.attributes.end()) {
+      const std::vector<float> v = reader_.floats(normal->second, 3, "NORMAL");
+      if (v.size() != 3 * n) reader_.fail("NORMAL and POSITION counts differ");
+      for (std::size_t i = 0; i < v.size(); i += 3) {
+        const glm::vec3 nrm(v[i], v[i + 1], v[i + 2]);
+        const float length = glm::length(nrm);
+        part.normals.push_back(length > 0.0f && std::isfinite(length) ? nrm / length : glm::vec3(0, 1, 0));
+      }
+    } else {
+      part.normals = vertex_normals(part.positions, part.indices);
+    }
+
+    const glm::vec3 tint = base_color(model_, primitive.material);
+    part.colors.assign(n, tint);
+    const auto color = primitive.attributes.find("COLOR_0");
+    if (color != primitive.attributes.end()) {
+      const int index = color->second;
+      const bool rgba = index >= 0 && static_cast<std::size_t>(index) < model_.accessors.size() &&
+                        model_.accessors[static_cast<std::size_t>(index)].type == TINYGLTF_TYPE_VEC4;
+      const int components = rgba ? 4 : 3;
+      const std::vector<float> v = reader_.floats(index, components, "COLOR_0");
+      if (v.size() != static_cast<std::size_t>(components) * n) reader_.fail("COLOR_0 and POSITION counts differ");
+      for (std::size_t i = 0; i < n; ++i) {
+        const float* c = &v[i * static_cast<std::size_t>(components)];
+        part.colors[i] = tint * glm::clamp(glm::vec3(c[0], c[1], c[2]), 0.0f, 1.0f);
+      }
+    }
+    return part;
+  }
+
+  const tinygltf::Model& model_;
+  AccessorReader reader_;
+  TriangleMesh mesh_;
+};
+
+}  // namespace
+
+TriangleMesh load_gltf(const std::string& path, const std::string& bytes, const ReadFile& read) {
+  FileAccess access{&read};
+  tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks({&FileAccess::exists, &FileAccess::expand, &FileAccess::read_whole,
+                         &FileAccess::no_write, &access});
+  loader.SetImageLoader(&skip_image, nullptr);
+  tinygltf::Model model;
+  std::string error, warning;
+  const std::string base_dir = std::filesystem::path(path).parent_path().string();
+  const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+  const bool ok =
+      binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
+                                           reinterpret_cast<const unsigned char*>(bytes.data()),
+                                           static_cast<unsigned int>(bytes.size()), base_dir)
+             : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(),
+                                          static_cast<unsigned int>(bytes.size()), base_dir);
+  if (!ok) {
+    const std::string first_line = error.substr(0, error.find('\n'));
+    throw FileError(path, "not a valid glTF file: " + (first_line.empty() ? "parse failed" : first_line));
+  }
+
+  MeshBuilder builder(model, path);
+  if (!model.scenes.empty()) {
+    const std::size_t scene = model.defaultScene >= 0 ? static_cast<std::size_t>(model.defaultScene) : 0;
+    if (scene >= model.scenes.size()) throw FileError(path, "default scene does not exist");
+    for (int node : model.scenes[scene].nodes) builder.add_node(node, glm::mat4(1.0f), 0);
+  } else {  // no scenes: every node that is nobody's child is a root
+    std::vector<bool> is_child(model.nodes.size(), false);
+    for (const tinygltf::Node& node : model.nodes) {
+      for (int child : node.children) {
+        if (child >= 0 && static_cast<std::size_t>(child) < is_child.size()) is_child[static_cast<std::size_t>(child)] = true;
+      }
+    }
+    for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+      if (!is_child[i]) builder.add_node(static_cast<int>(i), glm::mat4(1.0f), 0);
+    }
+  }
+  return builder.take();
+}
+
+}  // namespace pointgen

@@ -1,0 +1,39 @@
+#include "pointgen/triangle_mesh.hpp"
+
+namespace pointgen {
+
+Bounds TriangleMesh::bounds() const {
+  Bounds b;
+  for (const glm::vec3& p : positions) b.add(p);
+  return b;
+}
+
+void TriangleMesh::append(const TriangleMesh& other, const glm::mat4& transform) {
+  const auto base = static_cast<std::uint32_t>(positions.size());
+  const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(transform)));
+  for (std::size_t i = 0; i < other.positions.size(); ++i) {
+    positions.push_back(glm::vec3(transform * glm::vec4(other.positions[i], 1.0f)));
+    normals.push_back(glm::normalize(normal_matrix * other.normals[i]));
+    colors.push_back(other.colors[i]);
+  }
+  for (std::uint32_t index : other.indices) indices.push_back(base + index);
+}
+
+std::vector<glm::vec3> vertex_normals(const std::vector<glm::vec3>& positions,
+                                      const std::vector<std::uint32_t>& indices) {
+  std::vector<glm::vec3> normals(positions.size(), glm::vec3(0.0f));
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    const glm::vec3& a = positions[indices[t]];
+    const glm::vec3& b = positions[indices[t + 1]];
+    const glm::vec3& c = positions[indices[t + 2]];
+    const glm::vec3 weighted = glm::cross(b - a, c - a);  // length = twice the area
+    for (int k = 0; k < 3; ++k) normals[indices[t + k]] += weighted;
+  }
+  for (glm::vec3& n : normals) {
+    const float length = glm::length(n);
+    n = length > 0.0f ? n / length : glm::vec3(0.0f, 1.0f, 0.0f);
+  }
+  return normals;
+}
+
+}  // namespace pointgen

@@ -1,0 +1,24 @@
+#version 450 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec3 vertex_color;
+layout(location = 3) in mat4 model;
+layout(location = 7) in mat3 normal_matrix;
+layout(location = 10) in vec3 instance_color;
+
+uniform mat4 view;
+uniform mat4 view_projection;
+
+out vec3 world_position;
+out vec3 world_normal;
+out vec3 albedo;
+out float view_depth;
+
+void main() {
+  vec4 world = model * vec4(position, 1.0);
+  world_position = world.xyz;
+  world_normal = normal_matrix * normal;
+  albedo = vertex_color * instance_color;
+  view_depth = -(view * world).z;
+  gl_Position = view_projection * world;
+}

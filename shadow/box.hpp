@@ -1,0 +1,26 @@
+#pragma once
+#include <glm/glm.hpp>
+
+#include <array>
+#include <limits>
+
+namespace shadow {
+
+// Axis-aligned box; empty until a point is added.
+struct Box {
+  glm::vec3 min{std::numeric_limits<float>::max()};
+  glm::vec3 max{std::numeric_limits<float>::lowest()};
+
+  bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
+  void add(const glm::vec3& p) {
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+  }
+  glm::vec3 center() const { return 0.5f * (min + max); }
+  // Corner i has x from max when bit 0 is set, y when bit 1, z when bit 2.
+  glm::vec3 corner(int i) const {
+    return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
+  }
+};
+
+}  // namespace shadow

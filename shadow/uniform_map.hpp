@@ -1,0 +1,16 @@
+#pragma once
+#include "shadow/box.hpp"
+#include "shadow/camera.hpp"
+#include "shadow/light.hpp"
+#include "shadow/shadow_setup.hpp"
+
+namespace shadow {
+
+// The focused uniform shadow map: an orthographic (directional light) or perspective (point and
+// spot light) view from the light, fitted to the receivers the camera sees and the casters that
+// can shadow them, instead of to the whole scene.
+//   receivers/casters → light view → fit the projection.
+ShadowSetup focused_uniform_map(const Camera& camera, float aspect, const Light& light,
+                                const Box& scene);
+
+}  // namespace shadow

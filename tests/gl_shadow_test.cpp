@@ -1,0 +1,65 @@
+// The `shadow` AOV of floating-box scenes against shadows computed from geometry, on every
+// headless backend and every light type.
+#include "app/gl/context.hpp"
+#include "app/render/renderer.hpp"
+#include "app/scene/scene_file.hpp"
+#include "floating_box.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <iostream>
+
+namespace ecoview::test {
+namespace {
+
+// ECOVIEW_TRUTH_SEED and ECOVIEW_TRUTH_CASES run other random scenes than the default ones, to
+// measure agreement beyond what the suite checks (see docs/benchmarks.md).
+int env_int(const char* name, int fallback) {
+  const char* v = std::getenv(name);
+  return v ? std::atoi(v) : fallback;
+}
+
+const char* light_name(shadow::LightType t) {
+  return t == shadow::LightType::directional ? "directional" : t == shadow::LightType::point ? "point" : "spot";
+}
+
+using Param = std::tuple<std::string, shadow::LightType>;
+
+class FloatingBoxShadow : public testing::TestWithParam<Param> {};
+
+TEST_P(FloatingBoxShadow, ShadowAovMatchesGeometryAwayFromEdges) {
+  const auto& [backend, type] = GetParam();
+  if (backend == "osmesa" && !osmesa_available()) GTEST_SKIP() << "this build has no OSMesa backend";
+  const auto context = create_headless_context(backend);
+  std::mt19937 rng(static_cast<unsigned>(env_int("ECOVIEW_TRUTH_SEED", 1) * 10 + static_cast<int>(type)));
+  const int cases = env_int("ECOVIEW_TRUTH_CASES", 3);
+  for (int i = 0; i < cases; ++i) {
+    const FloatingBox s = random_floating_box(rng, type);
+    const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
+    Renderer renderer(scene, {640, 480, 2048, ShadowMethod::uniform});
+    renderer.render(scene.camera, scene.lights[0]);
+    const TruthComparison c = compare_with_truth(s, renderer.frame().read_visibility(), 2);
+    ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    std::cout << backend << " " << light_name(type) << " case " << i << ": " << 100.0 * c.agreement()
+              << " % of " << c.lit + c.shadowed << " plane pixels agree; lit " << c.lit_agreeing << "/" << c.lit
+              << ", shadowed " << c.shadowed_agreeing << "/" << c.shadowed << "\n";
+    EXPECT_GE(c.agreement(), 0.995) << "scene:\n" << s.scene_json();
+    // Per class too, so that a frame with no shadows at all cannot pass on the lit majority.
+    EXPECT_GE(c.shadowed_agreement(), 0.99) << "scene:\n" << s.scene_json();
+    EXPECT_GE(c.lit_agreement(), 0.995) << "scene:\n" << s.scene_json();
+    EXPECT_GE(c.shadowed, 1000u) << "too little shadow in view to test; scene:\n" << s.scene_json();
+    EXPECT_GE(c.lit, 1000u) << "too little light in view to test; scene:\n" << s.scene_json();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AllBackendsAndLights, FloatingBoxShadow,
+    testing::Combine(testing::Values("egl", "osmesa"),
+                     testing::Values(shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot)),
+    [](const testing::TestParamInfo<Param>& info) {
+      return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param));
+    });
+
+}  // namespace
+}  // namespace ecoview::test
