@@ -41,6 +41,8 @@ TriangleMesh load_openmesh_format(const std::string& path, const std::string& by
   bool ok = false;
   try {
     ok = OpenMesh::IO::read_mesh(poly, stream, ext, options);
+  } catch (const std::bad_alloc&) {
+    throw FileError(path, "cannot be read: the counts in it ask for more memory than there is (corrupt file?)");
   } catch (const std::exception& e) {
     throw FileError(path, std::string("cannot be read: ") + e.what());
   }

@@ -18,9 +18,13 @@ uniform float spot_cos_cone;
 uniform vec3 camera_position;
 
 uniform int shadows_enabled;
-uniform mat4 light_view_projection;
+// The views of the shadow setup (shadow::ShadowSetup), one map layer each, and how a point picks
+// its view: one map, or cube faces by the major axis of (point - light).
+const int SINGLE = 0, CUBE_FACES = 1;
+uniform int shadow_selection;
+uniform mat4 shadow_matrices[6];
 uniform float shadow_size;  // texels per side
-layout(binding = 0) uniform sampler2DShadow shadow_map;
+layout(binding = 0) uniform sampler2DArrayShadow shadow_map;
 
 const float ambient = 0.18;
 const float dimming = 0.3;
@@ -29,8 +33,7 @@ const float specular_strength = 0.25;
 
 // World-space size of one shadow-map texel at p, from the gradient of the map coordinates of
 // the (projective) light matrix, so it holds for any parameterization.
-float texel_world_size(vec3 p) {
-  mat4 m = light_view_projection;
+float texel_world_size(mat4 m, vec3 p) {
   vec4 clip = m * vec4(p, 1.0);
   vec3 row_x = vec3(m[0][0], m[1][0], m[2][0]);
   vec3 row_y = vec3(m[0][1], m[1][1], m[2][1]);
@@ -44,17 +47,28 @@ float texel_world_size(vec3 p) {
 // comparisons (bilinear PCF), so 4x4 texels in all. The lookup moves off the surface along its
 // normal by about a texel where the light grazes it, so the outer taps do not hit the surface's
 // own depth (acne); slope-scaled polygon offset in the shadow pass covers the centre tap.
+int shadow_view(vec3 p) {
+  if (shadow_selection == SINGLE) return 0;
+  vec3 d = p - light_position;
+  vec3 a = abs(d);
+  if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0 : 1;
+  if (a.y >= a.z) return d.y >= 0.0 ? 2 : 3;
+  return d.z >= 0.0 ? 4 : 5;
+}
+
 float shadow_test(vec3 n, float n_dot_l) {
+  int layer = shadow_view(world_position);
+  mat4 m = shadow_matrices[layer];
   float sin_light = sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0));
-  vec3 p = world_position + n * (1.5 * texel_world_size(world_position) * sin_light);
-  vec4 clip = light_view_projection * vec4(p, 1.0);
+  vec3 p = world_position + n * (1.5 * texel_world_size(m, world_position) * sin_light);
+  vec4 clip = m * vec4(p, 1.0);
   if (clip.w <= 0.0) return 1.0;  // behind the map's projection centre: not covered
   vec3 map = clip.xyz / clip.w * 0.5 + 0.5;
   if (any(lessThan(map.xy, vec2(0.0))) || any(greaterThan(map.xy, vec2(1.0)))) return 1.0;
   float sum = 0.0;
   for (int y = -1; y <= 1; ++y) {
     for (int x = -1; x <= 1; ++x) {
-      sum += texture(shadow_map, vec3(map.xy + vec2(x, y) / shadow_size, map.z));
+      sum += texture(shadow_map, vec4(map.xy + vec2(x, y) / shadow_size, layer, map.z));
     }
   }
   return sum / 9.0;

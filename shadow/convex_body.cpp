@@ -99,6 +99,14 @@ void ConvexBody::clip(std::span<const Plane> planes) {
   }
 }
 
+ConvexBody ConvexBody::transformed(const glm::mat4& transform) const {
+  ConvexBody body = *this;
+  for (Polygon& face : body.faces_) {
+    for (glm::vec3& p : face) p = glm::vec3(transform * glm::vec4(p, 1.0f));
+  }
+  return body;
+}
+
 std::vector<glm::vec3> ConvexBody::vertices() const {
   std::vector<glm::vec3> points;
   for (const Polygon& face : faces_) {

@@ -23,6 +23,9 @@ class ConvexBody {
   void clip(const Plane& plane);
   void clip(std::span<const Plane> planes);
 
+  // The body with every vertex moved by `transform` (an affine map keeps it convex).
+  ConvexBody transformed(const glm::mat4& transform) const;
+
   bool empty() const { return faces_.empty(); }
   const std::vector<Polygon>& faces() const { return faces_; }
   // The distinct vertices.

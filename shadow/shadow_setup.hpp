@@ -1,15 +1,30 @@
 #pragma once
 #include <glm/glm.hpp>
 
+#include <vector>
+
 namespace shadow {
 
-// What a renderer needs to draw one shadow map and look it up: world → light space → light clip
-// space. Points that must be covered map into the clip cube [-1, 1]^3.
-struct ShadowSetup {
+// One shadow-map view: world → light space → light clip space. Points it must cover map into the
+// clip cube [-1, 1]^3.
+struct ShadowView {
   glm::mat4 view{1.0f};
   glm::mat4 projection{1.0f};
 
   glm::mat4 view_projection() const { return projection * view; }
+};
+
+// How a surface point picks the view whose map holds its shadow.
+enum class ViewSelection {
+  single,      // one map
+  cube_faces,  // six maps around a point light, by the major axis of (point - light):
+               // +x, -x, +y, -y, +z, -z
+};
+
+// What a renderer needs to draw a shadow map (one layer per view) and look it up.
+struct ShadowSetup {
+  std::vector<ShadowView> views;
+  ViewSelection selection = ViewSelection::single;
 };
 
 }  // namespace shadow

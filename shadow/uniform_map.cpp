@@ -10,9 +10,9 @@
 namespace shadow {
 namespace {
 
-// Widest half-angle one perspective map covers for a point light; receivers wider than this
-// around the light fall outside the map (an omnidirectional light needs several maps).
-constexpr float max_point_half_angle_deg = 75.0f;
+// Widest half-angle of receivers around a point light served by one perspective map; beyond it
+// texels at the map's rim grow too large, and the light gets a cube of six maps.
+constexpr float max_single_map_half_angle_deg = 60.0f;
 
 glm::vec3 any_perpendicular(const glm::vec3& v) {
   return glm::normalize(std::abs(v.y) < 0.9f ? glm::cross(v, glm::vec3(0, 1, 0))
@@ -33,21 +33,31 @@ glm::vec3 centroid(const std::vector<glm::vec3>& points) {
   return sum / static_cast<float>(points.size());
 }
 
-glm::vec3 light_axis(const Light& light, const std::vector<glm::vec3>& receivers) {
-  if (light.type != LightType::point) return glm::normalize(light.direction);
+// A cone from the light around the receivers: its axis and the cosine of its half-angle.
+struct Cone {
+  glm::vec3 axis;
+  float cos_half_angle;
+};
+
+Cone receiver_cone(const glm::vec3& light, const std::vector<glm::vec3>& receivers) {
   glm::vec3 sum(0.0f);
   for (const glm::vec3& p : receivers) {
-    const glm::vec3 d = p - light.position;
-    if (glm::length(d) > 0.0f) sum += glm::normalize(d);
+    if (glm::length(p - light) > 0.0f) sum += glm::normalize(p - light);
   }
-  return glm::length(sum) > 1e-6f ? glm::normalize(sum) : glm::vec3(0.0f, -1.0f, 0.0f);
+  if (glm::length(sum) < 1e-6f) return {glm::vec3(0, -1, 0), -1.0f};
+  Cone cone{glm::normalize(sum), 1.0f};
+  for (const glm::vec3& p : receivers) {
+    if (glm::length(p - light) > 0.0f) {
+      cone.cos_half_angle = std::min(cone.cos_half_angle, glm::dot(cone.axis, glm::normalize(p - light)));
+    }
+  }
+  return cone;
 }
 
-ShadowSetup fit_orthographic(const glm::mat4& view, const std::vector<glm::vec3>& receivers,
-                             const std::vector<glm::vec3>& casters) {
+ShadowView fit_orthographic(const glm::mat4& view, const FocusBodies& bodies) {
   Box r, c;
-  for (const glm::vec3& p : receivers) r.add(glm::vec3(view * glm::vec4(p, 1.0f)));
-  for (const glm::vec3& p : casters) c.add(glm::vec3(view * glm::vec4(p, 1.0f)));
+  for (const glm::vec3& p : bodies.receivers.vertices()) r.add(glm::vec3(view * glm::vec4(p, 1.0f)));
+  for (const glm::vec3& p : bodies.casters.vertices()) c.add(glm::vec3(view * glm::vec4(p, 1.0f)));
   const glm::vec3 pad = 0.01f * (r.max - r.min) + 1e-4f;
   const float nearest = std::max(r.max.z, c.max.z) + pad.z;  // light space looks down -z
   const float farthest = r.min.z - pad.z;
@@ -55,41 +65,61 @@ ShadowSetup fit_orthographic(const glm::mat4& view, const std::vector<glm::vec3>
                            -nearest, -farthest)};
 }
 
-ShadowSetup fit_perspective(const glm::mat4& view, float max_tan,
-                            const std::vector<glm::vec3>& receivers,
-                            const std::vector<glm::vec3>& casters) {
-  glm::vec2 lo(max_tan), hi(-max_tan);
+// The perspective projection of a light view whose pyramid has the side tangents lo..hi: far
+// reaches the last receiver inside the pyramid, near the first caster inside it (kept off zero
+// for depth precision).
+glm::mat4 pyramid_projection(const glm::mat4& view, glm::vec2 lo, glm::vec2 hi, const FocusBodies& bodies) {
+  const Plane sides[4] = {Plane::through(glm::vec3(0.0f), {1, 0, hi.x}), Plane::through(glm::vec3(0.0f), {-1, 0, -lo.x}),
+                          Plane::through(glm::vec3(0.0f), {0, 1, hi.y}), Plane::through(glm::vec3(0.0f), {0, -1, -lo.y})};
+  ConvexBody receivers = bodies.receivers.transformed(view);
+  ConvexBody casters = bodies.casters.transformed(view);
+  receivers.clip(sides);
+  casters.clip(sides);
   float far = 0.0f;
-  for (const glm::vec3& p : receivers) {
+  for (const glm::vec3& p : receivers.vertices()) far = std::max(far, -p.z);
+  far = std::max(far * 1.01f, 1e-3f);
+  float near = far;
+  for (const glm::vec3& p : casters.vertices()) near = std::min(near, -p.z);
+  near = std::clamp(near * 0.99f, far * 1e-4f, far * 0.5f);
+  return glm::frustum(lo.x * near, hi.x * near, lo.y * near, hi.y * near, near, far);
+}
+
+// One perspective view fitted around the receivers, within max_tan of its axis.
+ShadowView fit_perspective(const glm::mat4& view, float max_tan, const FocusBodies& bodies) {
+  glm::vec2 lo(max_tan), hi(-max_tan);
+  for (const glm::vec3& p : bodies.receivers.vertices()) {
     const glm::vec3 q(view * glm::vec4(p, 1.0f));
-    const float depth = -q.z;
-    far = std::max(far, depth);
-    if (depth <= 1e-6f * glm::length(q)) {  // beside or behind the light: widest map
+    if (-q.z <= 1e-6f * glm::length(q)) {  // beside or behind the light: widest map
       lo = glm::vec2(-max_tan);
       hi = glm::vec2(max_tan);
       continue;
     }
-    const glm::vec2 t = glm::clamp(glm::vec2(q.x, q.y) / depth, -max_tan, max_tan);
+    const glm::vec2 t = glm::clamp(glm::vec2(q.x, q.y) / -q.z, -max_tan, max_tan);
     lo = glm::min(lo, t);
     hi = glm::max(hi, t);
   }
-  far = std::max(far * 1.01f, 1e-3f);
-  float near = far;
-  for (const glm::vec3& p : casters) {
-    const float depth = -(view * glm::vec4(p, 1.0f)).z;
-    if (depth > 0.0f) near = std::min(near, depth);
-  }
-  near = std::clamp(near * 0.99f, far * 1e-4f, far * 0.5f);
   const glm::vec2 pad = 0.01f * (hi - lo) + 1e-5f;
-  lo -= pad;
-  hi += pad;
-  return {view, glm::frustum(lo.x * near, hi.x * near, lo.y * near, hi.y * near, near, far)};
+  return {view, pyramid_projection(view, lo - pad, hi + pad, bodies)};
+}
+
+// The six 90° views of a cube around a point light, each a little wider than 90° so that
+// filtering near a face's edge stays inside that face's map.
+ShadowSetup cube_faces(const glm::vec3& light, const FocusBodies& bodies, int map_size) {
+  const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+  const glm::vec2 tan_half(1.0f + 8.0f / static_cast<float>(map_size));
+  ShadowSetup setup{{}, ViewSelection::cube_faces};
+  for (int face = 0; face < 6; ++face) {
+    const glm::mat4 view = glm::lookAt(light, light + axes[face], ups[face]);
+    setup.views.push_back({view, pyramid_projection(view, -tan_half, tan_half, bodies)});
+  }
+  return setup;
 }
 
 }  // namespace
 
-ShadowSetup focused_uniform_map(const Camera& camera, float aspect, const Light& light,
-                                const Box& scene) {
+ShadowSetup focused_uniform_map(const Camera& camera, float aspect, const Light& light, const Box& scene,
+                                int map_size) {
   FocusBodies bodies = focus_bodies(camera.projection(aspect) * camera.view(), light, scene);
   if (bodies.receivers.empty()) {  // the camera sees none of the scene: cover all of it
     bodies.receivers = ConvexBody::from_box(scene);
@@ -99,21 +129,28 @@ ShadowSetup focused_uniform_map(const Camera& camera, float aspect, const Light&
   if (bodies.receivers.empty()) {  // the light does not reach the scene: any valid map will do
     bodies.receivers = bodies.casters = ConvexBody::from_box(scene);
   }
-  const std::vector<glm::vec3> receivers = bodies.receivers.vertices();
-  std::vector<glm::vec3> casters = bodies.casters.vertices();
-  casters.insert(casters.end(), receivers.begin(), receivers.end());
 
-  const glm::vec3 axis = light_axis(light, receivers);
-  const glm::vec3 up = light_up(axis, camera);
-  if (light.type == LightType::directional) {
-    const glm::vec3 center = centroid(receivers);
-    return fit_orthographic(glm::lookAt(center - axis, center, up), receivers, casters);
+  switch (light.type) {
+    case LightType::directional: {
+      const glm::vec3 axis = glm::normalize(light.direction);
+      const glm::vec3 center = centroid(bodies.receivers.vertices());
+      return {{fit_orthographic(glm::lookAt(center - axis, center, light_up(axis, camera)), bodies)}};
+    }
+    case LightType::spot: {
+      const glm::vec3 axis = glm::normalize(light.direction);
+      const glm::mat4 view = glm::lookAt(light.position, light.position + axis, light_up(axis, camera));
+      return {{fit_perspective(view, std::tan(glm::radians(light.cone_deg)), bodies)}};
+    }
+    case LightType::point: {
+      const Cone cone = receiver_cone(light.position, bodies.receivers.vertices());
+      if (cone.cos_half_angle < std::cos(glm::radians(max_single_map_half_angle_deg))) {
+        return cube_faces(light.position, bodies, map_size);
+      }
+      const glm::mat4 view = glm::lookAt(light.position, light.position + cone.axis, light_up(cone.axis, camera));
+      return {{fit_perspective(view, std::tan(glm::radians(max_single_map_half_angle_deg)), bodies)}};
+    }
   }
-  const float max_tan = light.type == LightType::spot
-                            ? std::tan(glm::radians(light.cone_deg))
-                            : std::tan(glm::radians(max_point_half_angle_deg));
-  return fit_perspective(glm::lookAt(light.position, light.position + axis, up), max_tan,
-                         receivers, casters);
+  return {};
 }
 
 }  // namespace shadow

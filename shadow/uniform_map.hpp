@@ -10,7 +10,9 @@ namespace shadow {
 // spot light) view from the light, fitted to the receivers the camera sees and the casters that
 // can shadow them, instead of to the whole scene.
 //   receivers/casters → light view → fit the projection.
+// A point light whose receivers spread wider than one perspective map covers well gets the six
+// faces of a cube instead.
 ShadowSetup focused_uniform_map(const Camera& camera, float aspect, const Light& light,
-                                const Box& scene);
+                                const Box& scene, int map_size);
 
 }  // namespace shadow

@@ -109,7 +109,8 @@ FloatingBox random_floating_box(std::mt19937& rng, shadow::LightType type) {
   const float along = center.y / towards_light.y;  // box centre to the plane along the light
   shadow_center = ground_below - glm::vec3(towards_light.x, 0.0f, towards_light.z) * along;
 
-  const float camera_azimuth = uniform(rng, 0.0f, glm::two_pi<float>());
+  // From the side the light goes to, so the box does not hide its own shadow.
+  const float camera_azimuth = azimuth + glm::pi<float>() + glm::radians(uniform(rng, -100.0f, 100.0f));
   const float camera_elevation = glm::radians(uniform(rng, 20.0f, 60.0f));
   const float distance = uniform(rng, 6.0f, 14.0f);
   s.camera.target = 0.5f * (shadow_center + center);
@@ -145,6 +146,7 @@ TruthComparison compare_with_truth(const FloatingBox& s, const Image8& aov, int 
     }
   }
   TruthComparison result;
+  result.mismatches = {w, h, 3, std::vector<std::uint8_t>(static_cast<std::size_t>(w * h * 3), 0)};
   for (int y = margin; y < h - margin; ++y) {
     for (int x = margin; x < w - margin; ++x) {
       const Truth t = truth[static_cast<std::size_t>(y * w + x)];
@@ -160,6 +162,10 @@ TruthComparison compare_with_truth(const FloatingBox& s, const Image8& aov, int 
       }
       if (!uniform_window) continue;
       const bool rendered_shadowed = aov.at(x, y) < 128;
+      const glm::u8vec3 mark = rendered_shadowed == (t == Truth::shadowed) ? glm::u8vec3(128)
+                               : rendered_shadowed                     ? glm::u8vec3(0, 0, 255)
+                                                                        : glm::u8vec3(255, 0, 0);
+      std::copy_n(&mark.x, 3, &result.mismatches.samples[static_cast<std::size_t>((y * w + x) * 3)]);
       if (t == Truth::shadowed) {
         ++result.shadowed;
         result.shadowed_agreeing += rendered_shadowed;

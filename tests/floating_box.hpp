@@ -31,6 +31,9 @@ struct TruthComparison {
   double agreement() const { return ratio(lit_agreeing + shadowed_agreeing, lit + shadowed); }
   double lit_agreement() const { return ratio(lit_agreeing, lit); }
   double shadowed_agreement() const { return ratio(shadowed_agreeing, shadowed); }
+  // For looking at failures: gray where compared and agreeing, red where the geometry says
+  // shadowed but the frame is lit, blue the other way round, black where not compared.
+  Image8 mismatches;
 };
 
 // Compares the binary state (visibility < 0.5) of each plane pixel in a `shadow` AOV with the

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace ecoview {
 namespace {
@@ -55,7 +56,12 @@ void FramePass::render(const GpuScene& scene, const shadow::Camera& camera, cons
   gl::set_uniform(program_, "spot_cos_cone", std::cos(glm::radians(light.cone_deg)));
   gl::set_uniform(program_, "shadows_enabled", shadow_map ? 1 : 0);
   if (shadow_map) {
-    gl::set_uniform(program_, "light_view_projection", shadow_map->light_view_projection);
+    const shadow::ShadowSetup& setup = shadow_map->setup;
+    gl::set_uniform(program_, "shadow_selection", static_cast<int>(setup.selection));
+    for (std::size_t i = 0; i < setup.views.size(); ++i) {
+      const std::string name = "shadow_matrices[" + std::to_string(i) + "]";
+      gl::set_uniform(program_, name.c_str(), setup.views[i].view_projection());
+    }
     gl::set_uniform(program_, "shadow_size", static_cast<float>(shadow_map->size));
     glBindTextureUnit(0, shadow_map->depth_texture);
   }

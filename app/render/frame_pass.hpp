@@ -4,6 +4,7 @@
 #include "app/render/image.hpp"
 #include "shadow/camera.hpp"
 #include "shadow/light.hpp"
+#include "shadow/shadow_setup.hpp"
 
 #include <optional>
 
@@ -15,11 +16,11 @@ class FramePass {
  public:
   FramePass(int width, int height);
 
-  // `shadow_map`: the depth texture and the matrix that maps world space to its clip space;
-  // without one every surface facing the light is lit.
+  // `shadow_map`: the depth-texture array with one layer per view of `setup`; without one every
+  // surface facing the light is lit.
   struct ShadowLookup {
     GLuint depth_texture;
-    glm::mat4 light_view_projection;
+    const shadow::ShadowSetup& setup;
     int size;
   };
   void render(const GpuScene& scene, const shadow::Camera& camera, const shadow::Light& light,

@@ -22,10 +22,9 @@ void Renderer::render(const shadow::Camera& camera, const shadow::Light& light) 
   std::optional<FramePass::ShadowLookup> lookup;
   if (settings_.method == ShadowMethod::uniform) {
     const float aspect = static_cast<float>(settings_.width) / static_cast<float>(settings_.height);
-    const glm::mat4 light_matrix =
-        shadow::focused_uniform_map(camera, aspect, light, scene_bounds_).view_projection();
-    shadow_pass_.render(gpu_scene_, light_matrix);
-    lookup = FramePass::ShadowLookup{shadow_pass_.depth_texture(), light_matrix, shadow_pass_.size()};
+    setup_ = shadow::focused_uniform_map(camera, aspect, light, scene_bounds_, settings_.shadow_size);
+    shadow_pass_.render(gpu_scene_, setup_);
+    lookup.emplace(FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size()});
   }
   frame_pass_.render(gpu_scene_, camera, light, lookup);
 }

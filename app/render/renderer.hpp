@@ -32,6 +32,7 @@ class Renderer {
   shadow::Box scene_bounds_;
   GpuScene gpu_scene_;
   ShadowPass shadow_pass_;
+  shadow::ShadowSetup setup_;  // of the last frame
   FramePass frame_pass_;
 };
 

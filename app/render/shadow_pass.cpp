@@ -13,8 +13,15 @@ constexpr float offset_units = 4.0f;
 }  // namespace
 
 ShadowPass::ShadowPass(int size) : size_(size), program_(gl::build_program("shadow_depth.vert", "shadow_depth.frag")) {
+  allocate(1);
+}
+
+// Texture storage is immutable: a setup with more views than allocated gets a new texture.
+void ShadowPass::allocate(int layers) {
+  depth_ = gl::Texture(GL_TEXTURE_2D_ARRAY);
+  layers_ = layers;
   const GLuint t = depth_.name();
-  glTextureStorage2D(t, 1, GL_DEPTH_COMPONENT32F, size, size);
+  glTextureStorage3D(t, 1, GL_DEPTH_COMPONENT32F, size_, size_, layers);
   glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(t, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
@@ -24,24 +31,28 @@ ShadowPass::ShadowPass(int size) : size_(size), program_(gl::build_program("shad
   glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
   const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
   glTextureParameterfv(t, GL_TEXTURE_BORDER_COLOR, border);
-  glNamedFramebufferTexture(framebuffer_.name(), GL_DEPTH_ATTACHMENT, t, 0);
   glNamedFramebufferDrawBuffer(framebuffer_.name(), GL_NONE);
   glNamedFramebufferReadBuffer(framebuffer_.name(), GL_NONE);
 }
 
-void ShadowPass::render(const GpuScene& scene, const glm::mat4& light_view_projection) const {
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.name());
+void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup) {
+  if (static_cast<int>(setup.views.size()) > layers_) allocate(static_cast<int>(setup.views.size()));
+  const GLuint fb = framebuffer_.name();
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glViewport(0, 0, size_, size_);
-  const float far_depth = 1.0f;
-  glClearNamedFramebufferfv(framebuffer_.name(), GL_DEPTH, 0, &far_depth);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);  // planes are single-sided but cast shadows from both sides
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(offset_factor, offset_units);
   glUseProgram(program_.name());
-  gl::set_uniform(program_, "light_view_projection", light_view_projection);
-  scene.draw();
+  for (std::size_t layer = 0; layer < setup.views.size(); ++layer) {
+    glNamedFramebufferTextureLayer(fb, GL_DEPTH_ATTACHMENT, depth_.name(), 0, static_cast<GLint>(layer));
+    const float far_depth = 1.0f;
+    glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
+    gl::set_uniform(program_, "light_view_projection", setup.views[layer].view_projection());
+    scene.draw();
+  }
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 

@@ -1,21 +1,26 @@
 #pragma once
 #include "app/gl/gl_objects.hpp"
 #include "app/render/gpu_scene.hpp"
+#include "shadow/shadow_setup.hpp"
 
 namespace ecoview {
 
-// Renders the scene's depth as the light sees it into a square depth texture set up for hardware
-// depth comparison (sampler2DShadow, bilinear PCF), with slope-scaled polygon offset against acne.
+// Renders the scene's depth as the light sees it, one layer of a square depth-texture array per
+// view of the shadow setup, set up for hardware depth comparison (sampler2DArrayShadow, bilinear
+// PCF), with slope-scaled polygon offset against acne.
 class ShadowPass {
  public:
   explicit ShadowPass(int size);
-  void render(const GpuScene& scene, const glm::mat4& light_view_projection) const;
+  void render(const GpuScene& scene, const shadow::ShadowSetup& setup);
   GLuint depth_texture() const { return depth_.name(); }
   int size() const { return size_; }
 
  private:
+  void allocate(int layers);
+
   int size_;
-  gl::Texture depth_{GL_TEXTURE_2D};
+  int layers_ = 0;
+  gl::Texture depth_{GL_TEXTURE_2D_ARRAY};
   gl::Framebuffer framebuffer_;
   gl::Program program_;
 };

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace ecoview {
 namespace {
@@ -14,10 +15,18 @@ std::string type_name(const nlohmann::json& v) {
 }
 
 std::string format_number(double v) {
-  std::string s = std::to_string(v);
-  s.erase(s.find_last_not_of('0') + 1);
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s;
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+// "line:column" of a byte offset into text, both from 1.
+std::string position(const std::string& text, std::size_t byte) {
+  byte = std::min(byte, text.size());
+  const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(byte), '\n');
+  const std::size_t line_start = byte == 0 ? std::string::npos : text.rfind('\n', byte - 1);
+  const std::size_t column = line_start == std::string::npos ? byte + 1 : byte - line_start;
+  return std::to_string(line) + ":" + std::to_string(column);
 }
 
 }  // namespace
@@ -26,15 +35,20 @@ nlohmann::json parse_json(const std::string& text, const std::string& file) {
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    const std::size_t byte = std::min<std::size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
-    const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(byte), '\n'));
-    const std::size_t line_start = text.rfind('\n', byte == 0 ? 0 : byte - 1);
-    const std::size_t column = line_start == std::string::npos ? byte + 1 : byte - line_start;
     std::string reason = e.what();
     const std::size_t colon = reason.find(": ", reason.find("parse error"));
     if (colon != std::string::npos) reason = reason.substr(colon + 2);
-    throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                     ": invalid JSON: " + reason);
+    throw InputError(file + ":" + position(text, e.byte == 0 ? 0 : e.byte - 1) + ": invalid JSON: " + reason);
+  } catch (const nlohmann::json::exception& e) {
+    // Number overflow ("1e999") carries no position; find the literal the message quotes.
+    const std::string reason = e.what();
+    const std::size_t open = reason.find('\'');
+    const std::size_t close = reason.find('\'', open + 1);
+    const std::size_t at = open == std::string::npos || close == std::string::npos
+                               ? std::string::npos
+                               : text.find(reason.substr(open + 1, close - open - 1));
+    throw InputError(file + (at == std::string::npos ? "" : ":" + position(text, at)) +
+                     ": invalid JSON: " + reason.substr(reason.find(']') + 2));
   }
 }
 

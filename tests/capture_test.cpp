@@ -1,0 +1,165 @@
+// `ecoview capture` as a user runs it: outputs, determinism, resume, and bad input.
+#include "test_support.hpp"
+
+#include <stb/stb_image.h>
+
+#include <gtest/gtest.h>
+
+namespace ecoview::test {
+namespace {
+
+struct Gray {
+  int width = 0, height = 0;
+  std::vector<unsigned char> pixels;
+};
+
+Gray load_gray(const std::filesystem::path& png) {
+  Gray g;
+  int channels = 0;
+  unsigned char* data = stbi_load(png.string().c_str(), &g.width, &g.height, &channels, 1);
+  if (data == nullptr) return g;
+  g.pixels.assign(data, data + static_cast<std::ptrdiff_t>(g.width) * g.height);
+  stbi_image_free(data);
+  return g;
+}
+
+TEST(Capture, DefaultSceneFrameIsLitAndShadowed) {
+  const TempDir dir;
+  const CommandResult r = run_ecoview({"capture", "--aov", "color,shadow,depth", "--size", "320x180", "--out", dir.path()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(files_in(dir.path()), (std::vector<std::string>{"color_00000.png", "depth_00000.png", "shadow_00000.png"}));
+  const Gray shadow = load_gray(dir / "shadow_00000.png");
+  ASSERT_EQ(shadow.width, 320);
+  ASSERT_EQ(shadow.height, 180);
+  const auto dark = std::count_if(shadow.pixels.begin(), shadow.pixels.end(), [](unsigned char v) { return v < 128; });
+  EXPECT_GT(dark, 320 * 180 / 200) << "no shadow in the default frame";
+  EXPECT_GT(static_cast<long>(shadow.pixels.size()) - dark, 320 * 180 / 2) << "most of the default frame should be lit";
+}
+
+TEST(Capture, SameFrameGivesSameBytes) {
+  for (const char* backend : {"egl", "osmesa"}) {
+    const TempDir a, b;
+    const std::vector<std::string> args = {"capture", "--backend", backend, "--path", "courtyard", "--frames", "3:5",
+                                           "--aov", "color,shadow,depth", "--size", "256x160"};
+    auto with_out = [&](const TempDir& d) { auto v = args; v.insert(v.end(), {"--out", d.path().string()}); return v; };
+    const CommandResult ra = run_ecoview(with_out(a));
+    if (ra.exit_code == 1 && std::string(backend) == "osmesa") continue;  // built without OSMesa
+    ASSERT_EQ(ra.exit_code, 0) << ra.err;
+    ASSERT_EQ(run_ecoview(with_out(b)).exit_code, 0);
+    const std::vector<std::string> files = files_in(a.path());
+    ASSERT_EQ(files.size(), 6u);
+    ASSERT_EQ(files, files_in(b.path()));
+    for (const std::string& f : files) EXPECT_EQ(read_bytes(a / f), read_bytes(b / f)) << backend << " " << f;
+  }
+}
+
+TEST(Capture, FramesAlongAPathDiffer) {
+  const TempDir dir;
+  ASSERT_EQ(run_ecoview({"capture", "--path", "courtyard", "--frames", "0:31:", "--out", dir.path()}).exit_code, 2);
+  ASSERT_EQ(run_ecoview({"capture", "--path", "courtyard", "--fps", "1", "--size", "160x90", "--out", dir.path()}).exit_code, 0);
+  // The path lasts 3 s: at 1 frame per second, frames 0 to 3.
+  ASSERT_EQ(files_in(dir.path()).size(), 4u);
+  EXPECT_NE(read_bytes(dir / "color_00000.png"), read_bytes(dir / "color_00003.png"));
+}
+
+TEST(Capture, ResumesWhereItStopped) {
+  const TempDir dir;
+  const std::vector<std::string> args = {"capture", "--path", "courtyard", "--frames", "0:3", "--size", "160x90",
+                                         "--out", dir.path().string()};
+  ASSERT_EQ(run_ecoview(args).exit_code, 0);
+  const std::string frame1 = read_bytes(dir / "color_00001.png");
+  const auto frame0_time = std::filesystem::last_write_time(dir / "color_00000.png");
+  std::filesystem::remove(dir / "color_00001.png");
+
+  const CommandResult resumed = run_ecoview(args);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("wrote 1 frame(s)"), std::string::npos) << resumed.out;
+  EXPECT_NE(resumed.out.find("2 already there"), std::string::npos) << resumed.out;
+  EXPECT_EQ(read_bytes(dir / "color_00001.png"), frame1);
+  EXPECT_EQ(std::filesystem::last_write_time(dir / "color_00000.png"), frame0_time);
+
+  const CommandResult complete = run_ecoview(args);
+  EXPECT_NE(complete.out.find("all 3 frames already"), std::string::npos) << complete.out;
+  auto forced = args;
+  forced.push_back("--force");
+  EXPECT_NE(run_ecoview(forced).out.find("wrote 3 frame(s)"), std::string::npos);
+  EXPECT_EQ(files_in(dir.path()).size(), 3u);  // no temporary files left behind
+}
+
+TEST(Capture, RendersARealGltfFile) {
+  const auto cube = shared_testdata_dir() / "gltf" / "Cube" / "Cube.gltf";
+  if (!std::filesystem::exists(cube)) GTEST_SKIP() << cube << " is absent";
+  const TempDir dir;
+  write_text(dir / "scene.json", R"({"camera": {"position": [4, 4, 6], "target": [0, 0.5, 0]},
+    "lights": [{"type": "directional", "direction": [0.5, -1, 0.3]}],
+    "objects": [{"type": "plane", "center": [0, -2, 0], "size": [10, 10]},
+                {"type": "mesh", "file": ")" + cube.string() + R"("}]})");
+  const CommandResult r = run_ecoview({"capture", "--scene", (dir / "scene.json").string(), "--aov", "shadow",
+                                       "--size", "160x90", "--out", (dir / "out").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Gray shadow = load_gray(dir / "out" / "shadow_00000.png");
+  EXPECT_GT(std::count_if(shadow.pixels.begin(), shadow.pixels.end(), [](unsigned char v) { return v < 128; }), 50);
+}
+
+TEST(Capture, HelpExitsZero) {
+  const CommandResult r = run_ecoview({"capture", "--help"});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("--shadow-size"), std::string::npos);
+}
+
+struct BadInput {
+  const char* name;
+  std::string scene;               // written to bad.json when not empty
+  std::vector<std::string> args;   // extra arguments
+  std::vector<std::string> expect; // parts of the message
+};
+
+class CaptureBadInput : public testing::TestWithParam<BadInput> {};
+
+const std::string good_start = R"({"camera": {"position": [0, 8, 12], "target": [0, 0, 0]},
+  "lights": [{"type": "directional", "direction": [0.3, -1, 0.2]}],
+  "objects": [)";
+
+TEST_P(CaptureBadInput, ExitsTwoWithOneLineAndWritesNothing) {
+  const BadInput& c = GetParam();
+  const TempDir dir;
+  std::vector<std::string> args = {"capture", "--out", (dir / "out").string()};
+  if (!c.scene.empty()) {
+    write_text(dir / "bad.json", c.scene);
+    args.insert(args.end(), {"--scene", (dir / "bad.json").string()});
+  }
+  args.insert(args.end(), c.args.begin(), c.args.end());
+  const CommandResult r = run_ecoview(args);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  for (const std::string& part : c.expect) EXPECT_NE(r.err.find(part), std::string::npos) << "'" << part << "' not in " << r.err;
+  EXPECT_TRUE(files_in(dir / "out").empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CaptureBadInput,
+    testing::Values(
+        BadInput{"invalid_json", good_start + "{\"type\": \"plane\" \"center\": [0,0,0]}]}", {}, {"bad.json:3:", "invalid JSON"}},
+        BadInput{"unknown_object", good_start + R"({"type": "torus"}]})", {}, {"bad.json", "objects[0].type"}},
+        BadInput{"missing_mesh", good_start + R"({"type": "mesh", "file": "gone.obj"}]})", {}, {"bad.json", "objects[0].file", "gone.obj"}},
+        BadInput{"wrong_length", good_start + R"({"type": "box", "min": [0, 0], "max": [1, 1, 1]}]})", {}, {"bad.json", "objects[0].min"}},
+        BadInput{"nan", good_start + R"({"type": "sphere", "center": [0, NaN, 0], "radius": 1}]})", {}, {"bad.json:3:"}},
+        BadInput{"infinity", good_start + R"({"type": "sphere", "center": [0, 1e400, 0], "radius": 1}]})", {}, {"bad.json:3:"}},
+        BadInput{"zero_light_direction", R"({"camera": {"position": [0, 8, 12], "target": [0, 0, 0]},
+          "lights": [{"type": "directional", "direction": [0, 0, 0]}], "objects": [{"type": "sphere", "center": [0, 1, 0], "radius": 1}]})",
+                 {}, {"bad.json", "lights[0].direction"}},
+        BadInput{"truncated", good_start, {}, {"bad.json:", "invalid JSON"}},
+        BadInput{"wrong_type", good_start + R"({"type": "sphere", "center": [0, 1, 0], "radius": [1]}]})", {}, {"bad.json", "objects[0].radius"}},
+        BadInput{"size_zero", "", {"--size", "0x0"}, {"--size"}},
+        BadInput{"frames_backwards", "", {"--frames", "5:2"}, {"--frames"}},
+        BadInput{"unknown_method", "", {"--method", "magic"}, {"--method"}},
+        BadInput{"unknown_aov", "", {"--aov", "color,normals"}, {"--aov", "normals"}},
+        BadInput{"unknown_scene", "", {"--scene", "no-such-scene"}, {"no-such-scene", "courtyard"}},
+        BadInput{"light_index", "", {"--light", "7"}, {"--light"}},
+        BadInput{"huge_shadow_map", "", {"--shadow-size", "100000"}, {"--shadow-size"}},
+        BadInput{"unknown_option", "", {"--colour"}, {"--colour"}}),
+    [](const testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace ecoview::test

@@ -1,0 +1,198 @@
+// Scene files: every object type loads with the values written; every kind of bad input is an
+// InputError naming the file and the field.
+#include "app/errors.hpp"
+#include "app/scene/scene_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+namespace ecoview {
+namespace {
+
+const char* camera_and_light = R"("camera": {"position": [0, 8, 12], "target": [0, 0, 0]},
+  "lights": [{"type": "directional", "direction": [0.3, -1, 0.2]}])";
+
+// A tetrahedron in OBJ.
+const char* tetrahedron_obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+
+Scene load_text(const std::string& json, std::map<std::string, std::string> files = {}) {
+  return load_scene({"test.json", json, [files](const std::string& path) -> std::optional<std::string> {
+                       const auto it = files.find(path);
+                       if (it == files.end()) return std::nullopt;
+                       return it->second;
+                     }});
+}
+
+Scene load_objects(const std::string& objects, std::map<std::string, std::string> files = {}) {
+  return load_text(std::string("{") + camera_and_light + ", \"objects\": [" + objects + "]}", std::move(files));
+}
+
+// World bounds of one instance.
+shadow::Box instance_bounds(const Scene& scene, std::size_t group, std::size_t instance) {
+  const pointgen::Bounds local = scene.meshes[scene.groups[group].mesh].bounds();
+  shadow::Box box;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 c((i & 1) ? local.max.x : local.min.x, (i & 2) ? local.max.y : local.min.y,
+                      (i & 4) ? local.max.z : local.min.z);
+    box.add(glm::vec3(scene.groups[group].transforms[instance] * glm::vec4(c, 1.0f)));
+  }
+  return box;
+}
+
+void expect_near(const glm::vec3& a, const glm::vec3& b) {
+  EXPECT_NEAR(a.x, b.x, 1e-4f);
+  EXPECT_NEAR(a.y, b.y, 1e-4f);
+  EXPECT_NEAR(a.z, b.z, 1e-4f);
+}
+
+TEST(SceneFile, PlaneKeepsCentreSizeAndColour) {
+  const Scene s = load_objects(R"({"type": "plane", "center": [1, 2, 3], "size": [10, 4], "color": [1, 0.5, 0]})");
+  ASSERT_EQ(s.groups.size(), 1u);
+  const shadow::Box b = instance_bounds(s, 0, 0);
+  expect_near(b.min, {-4, 2, 1});
+  expect_near(b.max, {6, 2, 5});
+  // Colours are sRGB in the file, linear in the scene.
+  expect_near(s.groups[0].colors[0], {1.0f, 0.21404f, 0.0f});
+}
+
+TEST(SceneFile, BoxesShareOneMeshAndKeepTheirCorners) {
+  const Scene s = load_objects(R"({"type": "box", "min": [-1, 1, -1], "max": [1, 3, 2]},
+                                  {"type": "box", "min": [5, 0, 5], "max": [6, 1, 6]})");
+  ASSERT_EQ(s.meshes.size(), 1u);
+  ASSERT_EQ(s.groups[0].transforms.size(), 2u);
+  expect_near(instance_bounds(s, 0, 0).min, {-1, 1, -1});
+  expect_near(instance_bounds(s, 0, 0).max, {1, 3, 2});
+  expect_near(instance_bounds(s, 0, 1).max, {6, 1, 6});
+}
+
+TEST(SceneFile, SphereKeepsCentreAndRadius) {
+  const Scene s = load_objects(R"({"type": "sphere", "center": [3, 1, 0], "radius": 2})");
+  expect_near(instance_bounds(s, 0, 0).min, {1, -1, -2});
+  expect_near(instance_bounds(s, 0, 0).max, {5, 3, 2});
+}
+
+TEST(SceneFile, MeshIsLoadedOnceAndDrawnPerTransform) {
+  const Scene s = load_objects(
+      R"({"type": "mesh", "file": "tet.obj", "transforms": [[1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1],
+                                                           [2,0,0,0, 0,2,0,0, 0,0,2,0, 10,0,0,1]]},
+         {"type": "mesh", "file": "tet.obj"})",
+      {{"tet.obj", tetrahedron_obj}});
+  ASSERT_EQ(s.meshes.size(), 1u);
+  EXPECT_EQ(s.meshes[0].triangle_count(), 4u);
+  ASSERT_EQ(s.instance_count(), 3u);
+  expect_near(instance_bounds(s, 0, 1).min, {10, 0, 0});
+  expect_near(instance_bounds(s, 0, 1).max, {12, 2, 2});
+  EXPECT_EQ(s.triangle_count(), 12u);
+}
+
+TEST(SceneFile, CameraAndEveryLightTypeKeepTheirFields) {
+  const Scene s = load_text(R"({"camera": {"position": [1, 2, 3], "target": [0, 1, 0], "up": [0, 0, 1],
+                                           "fov_y_deg": 35, "near": 0.5, "far": 90},
+    "lights": [{"type": "directional", "direction": [0, -2, 0]},
+               {"type": "point", "position": [4, 5, 6]},
+               {"type": "spot", "position": [0, 10, 0], "direction": [0, -1, 0], "cone_deg": 25}],
+    "objects": [{"type": "plane", "center": [0, 0, 0], "size": [4, 4]}]})");
+  expect_near(s.camera.position, {1, 2, 3});
+  expect_near(s.camera.up, {0, 0, 1});
+  EXPECT_FLOAT_EQ(s.camera.fov_y_deg, 35.0f);
+  EXPECT_FLOAT_EQ(s.camera.near, 0.5f);
+  EXPECT_FLOAT_EQ(s.camera.far, 90.0f);
+  ASSERT_EQ(s.lights.size(), 3u);
+  EXPECT_EQ(s.lights[0].type, shadow::LightType::directional);
+  expect_near(s.lights[0].direction, {0, -1, 0});  // normalized
+  EXPECT_EQ(s.lights[1].type, shadow::LightType::point);
+  expect_near(s.lights[1].position, {4, 5, 6});
+  EXPECT_EQ(s.lights[2].type, shadow::LightType::spot);
+  EXPECT_FLOAT_EQ(s.lights[2].cone_deg, 25.0f);
+}
+
+// Loading `json` fails with a message that contains every one of `parts`.
+void expect_input_error(const std::string& json, std::initializer_list<const char*> parts,
+                        std::map<std::string, std::string> files = {}) {
+  try {
+    load_text(json, std::move(files));
+    ADD_FAILURE() << "no error for:\n" << json;
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    for (const char* part : parts) EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
+  }
+}
+
+std::string with_objects(const std::string& objects) {
+  return std::string("{") + camera_and_light + ", \"objects\": [" + objects + "]}";
+}
+
+TEST(SceneFileErrors, SyntaxErrorNamesFileAndLine) {
+  expect_input_error("{\n  \"camera\": {\n    \"position\": [0, 8 12]\n", {"test.json:3:", "invalid JSON"});
+  expect_input_error(with_objects("").substr(0, 40), {"test.json:", "invalid JSON"});  // truncated
+}
+
+TEST(SceneFileErrors, NaNAndInfinityAreRejected) {
+  expect_input_error(R"({"camera": {"position": [0, 8, NaN], "target": [0, 0, 0]}})", {"test.json:1:", "invalid JSON"});
+  expect_input_error(R"({"camera": {"position": [0, 8, Infinity], "target": [0, 0, 0]}})", {"test.json:1:"});
+  expect_input_error(R"({"camera": {"position": [0, 8, 1e999], "target": [0, 0, 0]}})", {"test.json:1:", "overflow"});
+}
+
+TEST(SceneFileErrors, HugeNumbersAreOutOfRange) {
+  expect_input_error(R"({"camera": {"position": [0, 8, 1e300], "target": [0, 0, 0]}, "lights": [], "objects": []})",
+                     {"camera.position[2]", "between"});
+}
+
+TEST(SceneFileErrors, UnknownObjectTypeNamesTheField) {
+  expect_input_error(with_objects(R"({"type": "cone"})"), {"test.json", "objects[0].type", "cone"});
+}
+
+TEST(SceneFileErrors, UnknownKeyIsNamed) {
+  expect_input_error(with_objects(R"({"type": "box", "min": [0,0,0], "max": [1,1,1], "colour": [1,0,0]})"),
+                     {"objects[0].colour", "unknown key"});
+}
+
+TEST(SceneFileErrors, WrongArrayLengthsAndTypes) {
+  expect_input_error(R"({"camera": {"position": [0, 8], "target": [0, 0, 0]}})", {"camera.position", "3 numbers"});
+  expect_input_error(R"({"camera": {"position": [0, 8, 1], "target": "x"}})", {"camera.target", "a string"});
+  expect_input_error(with_objects(R"({"type": "plane", "center": [0,0,0], "size": [1, 2, 3]})"), {"objects[0].size"});
+  expect_input_error(with_objects(R"({"type": "mesh", "file": "t.obj", "transforms": [[1, 0, 0]]})"),
+                     {"objects[0].transforms[0]", "16 numbers"}, {{"t.obj", tetrahedron_obj}});
+  expect_input_error(with_objects(R"({"type": "sphere", "center": [0,0,0], "radius": "big"})"), {"objects[0].radius"});
+  expect_input_error(R"([1, 2])", {"test.json", "top level", "object"});
+}
+
+TEST(SceneFileErrors, ImpossibleGeometryIsNamed) {
+  expect_input_error(with_objects(R"({"type": "box", "min": [0,0,0], "max": [1,0,1]})"), {"objects[0].max"});
+  expect_input_error(with_objects(R"({"type": "sphere", "center": [0,0,0], "radius": 0})"), {"objects[0].radius"});
+  expect_input_error(with_objects(R"({"type": "mesh", "file": "t.obj", "transforms": [[0,0,0,0, 0,0,0,0, 0,0,0,0, 0,0,0,1]]})"),
+                     {"objects[0].transforms[0]", "singular"}, {{"t.obj", tetrahedron_obj}});
+  expect_input_error(R"({"camera": {"position": [0, 8, 1], "target": [0, 8, 1]}})", {"camera", "target"});
+  expect_input_error(R"({"camera": {"position": [0, 8, 0], "target": [0, 0, 0]}})", {"camera", "parallel"});
+  expect_input_error(R"({"camera": {"position": [0, 8, 1], "target": [0, 0, 0], "near": 5, "far": 1}})", {"camera.far"});
+}
+
+TEST(SceneFileErrors, ZeroLengthLightDirectionAndBadConeAreNamed) {
+  expect_input_error(R"({"camera": {"position": [0, 8, 12], "target": [0, 0, 0]},
+                         "lights": [{"type": "directional", "direction": [0, 0, 0]}], "objects": []})",
+                     {"lights[0].direction", "zero length"});
+  expect_input_error(R"({"camera": {"position": [0, 8, 12], "target": [0, 0, 0]},
+                         "lights": [{"type": "spot", "position": [0, 9, 0], "direction": [0, -1, 0], "cone_deg": 120}],
+                         "objects": []})",
+                     {"lights[0].cone_deg"});
+  expect_input_error(R"({"camera": {"position": [0, 8, 12], "target": [0, 0, 0]}, "lights": [], "objects": []})",
+                     {"lights", "at least 1"});
+}
+
+TEST(SceneFileErrors, MissingOrCorruptMeshNamesTheObjectAndFile) {
+  expect_input_error(with_objects(R"({"type": "mesh", "file": "nothere.glb"})"),
+                     {"test.json", "objects[0].file", "nothere.glb", "no such file"});
+  expect_input_error(with_objects(R"({"type": "mesh", "file": "bad.glb"})"), {"objects[0].file", "bad.glb", "glTF"},
+                     {{"bad.glb", "glTF\x02\0\0\0garbage"}});
+  expect_input_error(with_objects(R"({"type": "mesh", "file": "bad.obj"})"), {"objects[0].file", "bad.obj"},
+                     {{"bad.obj", "v 1 2\nf 1 2 3\n"}});
+  expect_input_error(with_objects(R"({"type": "mesh", "file": "bad.off"})"), {"objects[0].file", "bad.off"},
+                     {{"bad.off", "OFF\n99999999999 1 0\n"}});
+  expect_input_error(with_objects(R"({"type": "mesh", "file": "model.fbx"})"), {"objects[0].file", "unknown mesh format"},
+                     {{"model.fbx", "x"}});
+}
+
+}  // namespace
+}  // namespace ecoview

@@ -1,0 +1,68 @@
+#include "test_support.hpp"
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace ecoview::test {
+namespace {
+
+std::string shell_quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+}  // namespace
+
+TempDir::TempDir() {
+  std::string pattern = (std::filesystem::temp_directory_path() / "ecoview_test_XXXXXX").string();
+  if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
+  path_ = pattern;
+}
+
+TempDir::~TempDir() {
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+std::string read_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::string> files_in(const std::filesystem::path& folder) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+CommandResult run_ecoview(const std::vector<std::string>& args) {
+  const TempDir streams;
+  std::string command = shell_quote(ECOVIEW_BINARY);
+  for (const std::string& a : args) command += " " + shell_quote(a);
+  command += " >" + shell_quote((streams / "out").string()) + " 2>" + shell_quote((streams / "err").string());
+  const int status = std::system(command.c_str());
+  CommandResult result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.out = read_bytes(streams / "out");
+  result.err = read_bytes(streams / "err");
+  return result;
+}
+
+std::filesystem::path source_dir() { return ECOVIEW_SOURCE_DIR; }
+std::filesystem::path shared_testdata_dir() { return source_dir().parent_path() / "shared" / "testdata"; }
+
+}  // namespace ecoview::test

@@ -1,0 +1,40 @@
+#pragma once
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+// Helpers for tests that run the ecoview binary or need files.
+namespace ecoview::test {
+
+// A fresh empty folder under the system's temporary folder, removed with the object.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+void write_text(const std::filesystem::path& path, const std::string& text);
+std::string read_bytes(const std::filesystem::path& path);
+// Names of the files in a folder, sorted; empty if the folder does not exist.
+std::vector<std::string> files_in(const std::filesystem::path& folder);
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out, err;
+};
+// Runs the ecoview binary built with these tests.
+CommandResult run_ecoview(const std::vector<std::string>& args);
+
+// The repository's root folder, and the shared test data beside it (which a user's clone lacks).
+std::filesystem::path source_dir();
+std::filesystem::path shared_testdata_dir();
+
+}  // namespace ecoview::test
