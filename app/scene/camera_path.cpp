@@ -41,14 +41,15 @@ CameraPath CameraPath::load(const InputSource& source) {
 
 shadow::Camera CameraPath::at(double t, const shadow::Camera& base) const {
   shadow::Camera camera = base;
+  auto place_at = [&](const Key& key) {
+    camera.position = key.position;
+    camera.target = key.target;
+    camera.up = key.up;
+  };
   if (keys_.size() == 1 || t <= keys_.front().t) {
-    camera.position = keys_.front().position;
-    camera.target = keys_.front().target;
-    camera.up = keys_.front().up;
+    place_at(keys_.front());
   } else if (t >= keys_.back().t) {
-    camera.position = keys_.back().position;
-    camera.target = keys_.back().target;
-    camera.up = keys_.back().up;
+    place_at(keys_.back());
   } else {
     const auto next = std::upper_bound(keys_.begin(), keys_.end(), t, [](double v, const Key& k) { return v < k.t; });
     const auto i = static_cast<std::size_t>(next - keys_.begin() - 1);
@@ -56,12 +57,11 @@ shadow::Camera CameraPath::at(double t, const shadow::Camera& base) const {
     camera.target = spline(keys_, i, t, [](const Key& k) { return k.target; });
     camera.up = glm::normalize(spline(keys_, i, t, [](const Key& k) { return k.up; }));
   }
-  // A spline can pass through a degenerate frame between valid keys; keep the camera valid.
-  const glm::vec3 forward = camera.target - camera.position;
-  if (glm::length(forward) < 1e-6f) camera.target = camera.position + base.forward();
-  if (glm::length(glm::cross(glm::normalize(camera.target - camera.position), camera.up)) < 1e-4f) {
-    camera.up = std::abs(camera.target.y - camera.position.y) < 0.9f * glm::length(camera.target - camera.position)
-                    ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
+  // Between valid keys a spline can pass through a degenerate frame; keep the camera valid.
+  if (glm::length(camera.target - camera.position) < 1e-6f) camera.target = camera.position + base.forward();
+  const glm::vec3 forward = glm::normalize(camera.target - camera.position);
+  if (glm::length(glm::cross(forward, camera.up)) < 1e-4f) {
+    camera.up = std::abs(forward.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
   }
   return camera;
 }
