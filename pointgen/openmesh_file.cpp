@@ -1,10 +1,12 @@
 // OBJ, PLY and OFF through OpenMesh's readers, from memory.
+#include "pointgen/declared_counts.hpp"
 #include "pointgen/file_error.hpp"
 #include "pointgen/mesh_file.hpp"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -36,8 +38,10 @@ TriangleMesh load_openmesh_format(const std::string& path, const std::string& by
   OpenMesh::IO::Options options;
   options += OpenMesh::IO::Options::VertexNormal;
   options += OpenMesh::IO::Options::VertexColor;
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  check_declared_counts(path, ext, bytes);
   std::istringstream stream(bytes);
-  const std::string ext = std::filesystem::path(path).extension().string();
   bool ok = false;
   try {
     ok = OpenMesh::IO::read_mesh(poly, stream, ext, options);

@@ -1,0 +1,12 @@
+#pragma once
+#include <string>
+
+namespace pointgen {
+
+// OFF and PLY files declare counts (vertices, faces, vertices per face) that OpenMesh's readers
+// trust: they reserve memory and loop by them, so one corrupt number can ask for gigabytes. This
+// checks every count against what the file can hold before OpenMesh reads it, and throws
+// FileError on a count that cannot be right. `ext` is ".off" or ".ply"; other formats pass.
+void check_declared_counts(const std::string& path, const std::string& ext, const std::string& bytes);
+
+}  // namespace pointgen

@@ -1,0 +1,69 @@
+// Mesh files through OpenMesh: the three formats load the same tetrahedron; counts that cannot be
+// right are refused before OpenMesh reserves memory for them.
+#include "pointgen/file_error.hpp"
+#include "pointgen/mesh_file.hpp"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+pointgen::TriangleMesh load(const std::string& name, const std::string& bytes) {
+  return pointgen::load_mesh_file(name, [&](const std::string& path) -> std::optional<std::string> {
+    if (path == name) return bytes;
+    return std::nullopt;
+  });
+}
+
+const char* off_tetrahedron = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+const char* ply_tetrahedron =
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+    "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+const char* obj_tetrahedron = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+
+TEST(MeshFile, EveryOpenMeshFormatLoadsTheTetrahedron) {
+  for (const auto& [name, bytes] : {std::pair{"t.off", off_tetrahedron}, {"t.ply", ply_tetrahedron}, {"t.obj", obj_tetrahedron}}) {
+    const pointgen::TriangleMesh mesh = load(name, bytes);
+    EXPECT_EQ(mesh.triangle_count(), 4u) << name;
+    EXPECT_EQ(mesh.bounds().max, glm::vec3(1.0f)) << name;
+    // Normals point out of the tetrahedron: away from its centre.
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+      EXPECT_GT(glm::dot(mesh.normals[i], mesh.positions[i] - glm::vec3(0.25f)), 0.0f) << name;
+    }
+  }
+}
+
+void expect_refused(const std::string& name, const std::string& bytes, const char* part) {
+  try {
+    load(name, bytes);
+    ADD_FAILURE() << name << " loaded";
+  } catch (const pointgen::FileError& e) {
+    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
+}
+
+TEST(MeshFile, ImpossibleCountsAreRefusedBeforeReading) {
+  expect_refused("a.off", "OFF\n99999999999 1 0\n0 0 0\n", "declares");
+  expect_refused("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n41113238394 0 1 2\n", "face 0 declares");
+  expect_refused("c.off", "OFF BINARY\n", "binary OFF");
+  expect_refused("d.ply", "ply\nformat ascii 1.0\nelement vertex 9999999999\nproperty float x\nend_header\n", "vertex");
+  expect_refused("e.ply",
+                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                 "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n",
+                 "declares 4000000000");
+  expect_refused("f.ply",
+                 "ply\nformat binary_little_endian 1.0\nelement face 1\nproperty list int int vertex_indices\nend_header\n",
+                 "list counts of type 'int'");
+}
+
+TEST(MeshFile, UnknownFormatAndMissingFileAreNamed) {
+  expect_refused("model.fbx", "x", "unknown mesh format");
+  try {
+    pointgen::load_mesh_file("gone.obj", [](const std::string&) { return std::nullopt; });
+    ADD_FAILURE();
+  } catch (const pointgen::FileError& e) {
+    EXPECT_EQ(std::string(e.what()), "gone.obj: no such file");
+  }
+}
+
+}  // namespace
