@@ -53,7 +53,7 @@ TEST(SceneFile, PlaneKeepsCentreSizeAndColour) {
   expect_near(b.min, {-4, 2, 1});
   expect_near(b.max, {6, 2, 5});
   // Colours are sRGB in the file, linear in the scene.
-  expect_near(s.groups[0].colors[0], {1.0f, 0.21404f, 0.0f});
+  expect_near(s.groups[0].tints[0], {1.0f, 0.21404f, 0.0f});
 }
 
 TEST(SceneFile, BoxesShareOneMeshAndKeepTheirCorners) {

@@ -3,6 +3,7 @@
 #include "app/capture/aov.hpp"
 #include "app/cli/options.hpp"
 #include "app/cli/progress.hpp"
+#include "app/cli/scene_info.hpp"
 #include "app/errors.hpp"
 #include "app/file_io.hpp"
 #include "app/gl/context.hpp"
@@ -52,6 +53,8 @@ CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
   cmd->add_option("--fps", o.fps, "Frames per second: frame i is at time i / fps")->capture_default_str();
   cmd->add_option("--aov", o.aov, "Comma-separated images per frame: color, shadow, depth")->capture_default_str();
   cmd->add_option("--light", o.light, "Index of the scene light that shines and casts shadows")->capture_default_str();
+  cmd->add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes that would need more memory than this, in GiB")
+      ->capture_default_str();
   cmd->add_flag("--force", o.force, "Render frames again even where their files exist (by default a capture "
                                     "resumes, skipping finished frames)");
   cmd->add_option("--out", o.out, "Output folder (created if missing)")->required();
@@ -67,7 +70,10 @@ int run_capture(const CaptureOptions& o) {
   if (o.backend != "egl" && o.backend != "osmesa") {
     throw InputError("--backend: unknown backend '" + o.backend + "' (available: egl, osmesa)");
   }
-  const Scene scene = load_scene_option(o.scene);
+  const auto load_start = std::chrono::steady_clock::now();
+  const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
+  std::cout << describe_scene(scene, std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count())
+            << std::endl;
   const shadow::Light& light = select_light(scene, o.light);
   std::optional<CameraPath> path;
   if (!o.path.empty()) path = CameraPath::load(open_input(o.path, "paths"));

@@ -17,6 +17,7 @@ struct CaptureOptions {
   std::string aov = "color";
   int light = 0;
   bool force = false;
+  double memory_budget_gib = 4.0;
   std::string out;
 };
 

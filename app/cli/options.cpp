@@ -46,8 +46,12 @@ double check_fps(double fps) {
   return fps;
 }
 
-Scene load_scene_option(const std::string& scene) {
-  return load_scene(open_input(scene.empty() ? default_scene_name : scene, "scenes"));
+Scene load_scene_option(const std::string& scene, double memory_budget_gib) {
+  if (!std::isfinite(memory_budget_gib) || memory_budget_gib <= 0.0) {
+    throw InputError("--memory-budget: must be a positive number of GiB");
+  }
+  return load_scene(open_input(scene.empty() ? default_scene_name : scene, "scenes"),
+                    {memory_budget_gib * 1024.0 * 1024.0 * 1024.0});
 }
 
 const shadow::Light& select_light(const Scene& scene, int index) {

@@ -15,6 +15,8 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
   cmd->add_option("--size", o.size, "Window size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--shadow-size", o.shadow_size, "Shadow map size in texels")->capture_default_str();
   cmd->add_option("--light", o.light, "Index of the scene light that shines and casts shadows")->capture_default_str();
+  cmd->add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes that would need more memory than this, in GiB")
+      ->capture_default_str();
   cmd->add_option("--exit-after", o.exit_after, "Close after this many frames (0: when the window is closed)");
   return cmd;
 }
@@ -23,7 +25,7 @@ int run_view(const ViewOptions& o) {
   const glm::ivec2 size = parse_size(o.size);
   const RenderSettings settings{size.x, size.y, check_shadow_size(o.shadow_size), parse_shadow_method(o.method)};
   if (o.exit_after < 0) throw InputError("--exit-after: must be 0 or more");
-  const Scene scene = load_scene_option(o.scene);
+  const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
   const shadow::Light& light = select_light(scene, o.light);
 
   GlfwWindow window(size.x, size.y, "ecoview — " + scene.name);

@@ -11,7 +11,8 @@ struct ViewOptions {
   std::string size = "1280x720";
   int shadow_size = 2048;
   int light = 0;
-  int exit_after = 0;  // frames; 0 runs until the window is closed
+  int exit_after = 0;
+  double memory_budget_gib = 4.0;  // frames; 0 runs until the window is closed
 };
 
 // Registers `ecoview view` on `app`.

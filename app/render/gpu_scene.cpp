@@ -37,12 +37,12 @@ GpuScene::GpuScene(const Scene& scene) {
     upload(m.indices, mesh.indices);
     m.index_count = static_cast<GLsizei>(mesh.indices.size());
   }
-  for (const InstanceGroup& group : scene.groups) {
+  for (const pointgen::InstanceTable& group : scene.groups) {
     std::vector<Instance> instances;
     for (std::size_t i = 0; i < group.transforms.size(); ++i) {
       const glm::mat3 n = glm::transpose(glm::inverse(glm::mat3(group.transforms[i])));
       instances.push_back({group.transforms[i], {glm::vec4(n[0], 0), glm::vec4(n[1], 0), glm::vec4(n[2], 0)},
-                           glm::vec4(group.colors[i], 1)});
+                           glm::vec4(group.tints[i], 1)});
     }
     const Mesh& mesh = meshes_[group.mesh];
     Group& g = groups_.emplace_back();

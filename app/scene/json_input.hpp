@@ -33,6 +33,7 @@ class JsonField {
   std::vector<JsonField> items(std::size_t min_count = 0) const;
 
   // Leaves.
+  bool is_string() const { return value_->is_string(); }
   std::string string() const;
   double number(double min, double max) const;
   float number_f(double min, double max) const { return static_cast<float>(number(min, max)); }

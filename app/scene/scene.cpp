@@ -4,7 +4,7 @@ namespace ecoview {
 
 shadow::Box Scene::bounds() const {
   shadow::Box box;
-  for (const InstanceGroup& group : groups) {
+  for (const pointgen::InstanceTable& group : groups) {
     const pointgen::Bounds local = meshes[group.mesh].bounds();
     if (local.empty()) continue;
     for (const glm::mat4& transform : group.transforms) {
@@ -20,13 +20,13 @@ shadow::Box Scene::bounds() const {
 
 std::size_t Scene::triangle_count() const {
   std::size_t count = 0;
-  for (const InstanceGroup& group : groups) count += meshes[group.mesh].triangle_count() * group.transforms.size();
+  for (const pointgen::InstanceTable& group : groups) count += meshes[group.mesh].triangle_count() * group.transforms.size();
   return count;
 }
 
 std::size_t Scene::instance_count() const {
   std::size_t count = 0;
-  for (const InstanceGroup& group : groups) count += group.transforms.size();
+  for (const pointgen::InstanceTable& group : groups) count += group.transforms.size();
   return count;
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include "pointgen/instance_table.hpp"
 #include "pointgen/triangle_mesh.hpp"
 #include "shadow/box.hpp"
 #include "shadow/camera.hpp"
@@ -9,20 +10,13 @@
 
 namespace ecoview {
 
-// One mesh drawn once per transform (instanced), each instance with its own linear RGB colour.
-struct InstanceGroup {
-  std::size_t mesh = 0;  // index into Scene::meshes
-  std::vector<glm::mat4> transforms;
-  std::vector<glm::vec3> colors;
-};
-
 // A loaded scene: each mesh once, instances as transforms. Units are metres, +Y is up.
 struct Scene {
   std::string name;  // the file or shipped scene it came from, for messages
   shadow::Camera camera;
   std::vector<shadow::Light> lights;
   std::vector<pointgen::TriangleMesh> meshes;
-  std::vector<InstanceGroup> groups;
+  std::vector<pointgen::InstanceTable> groups;  // each drawn with one instanced call
 
   shadow::Box bounds() const;
   // Triangles drawn when every instance is drawn as polygons.

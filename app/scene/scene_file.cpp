@@ -3,14 +3,17 @@
 #include "app/errors.hpp"
 #include "app/file_io.hpp"
 #include "app/resources.hpp"
+#include "app/scene/ecosystem_fields.hpp"
 #include "app/scene/json_input.hpp"
 #include "app/scene/scene_fields.hpp"
 #include "pointgen/file_error.hpp"
 #include "pointgen/primitives.hpp"
+#include "pointgen/random.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cstdio>
 #include <map>
 
 namespace ecoview {
@@ -20,11 +23,12 @@ namespace fs = std::filesystem;
 
 const glm::vec3 default_color(0.8f);
 
-// The scene's meshes and groups as objects are added: each primitive and each mesh file is
-// stored once, and all instances of one mesh share a group.
+// The scene's meshes and instance tables as objects are added: each primitive and each mesh file
+// is stored once, and all instances of one mesh share a table.
 class SceneBuilder {
  public:
-  SceneBuilder(Scene& scene, const InputSource& source) : scene_(scene), source_(source) {}
+  SceneBuilder(Scene& scene, const InputSource& source, std::uint64_t seed, const LoadLimits& limits)
+      : scene_(scene), source_(source), seed_(seed), limits_(limits) {}
 
   void add_object(const JsonField& object) {
     const std::string type = object["type"].string();
@@ -53,8 +57,12 @@ class SceneBuilder {
         return;
       }
       for (const JsonField& item : object["transforms"].items(1)) add_instance(mesh, read_transform(item), color);
+    } else if (type == "plant") {
+      add_plants(object);
+    } else if (type == "ecosystem") {
+      add_ecosystem(object);
     } else {
-      object["type"].fail("unknown object type '" + type + "' (known: plane, box, sphere, mesh)");
+      object["type"].fail("unknown object type '" + type + "' (known: plane, box, sphere, mesh, plant, ecosystem)");
     }
   }
 
@@ -91,18 +99,61 @@ class SceneBuilder {
     return m;
   }
 
+  // {"type": "plant", "species": name or {...}, "seed", "positions": [[x, y, z], ...], "scale"}
+  void add_plants(const JsonField& object) {
+    object.only_keys({"type", "species", "seed", "positions", "scale", "color"});
+    const pointgen::PlantSpecies species = read_species(object["species"], {});
+    const auto seed = object.has("seed") ? static_cast<std::uint64_t>(object["seed"].integer(0, 2147483647)) : 1u;
+    const float scale = object.has("scale") ? object["scale"].number_f(1e-3, 1e3) : 1.0f;
+    const glm::vec3 color = object.has("color") ? srgb_to_linear(object["color"].color()) : glm::vec3(1.0f);
+    scene_.meshes.push_back(pointgen::build_plant(species, pointgen::derive_seed(seed_, seed)));
+    const std::size_t mesh = scene_.meshes.size() - 1;
+    for (const JsonField& p : object["positions"].items(1)) {
+      add_instance(mesh, glm::scale(glm::translate(glm::mat4(1.0f), p.vec3()), glm::vec3(scale)), color);
+    }
+  }
+
+  void add_ecosystem(const JsonField& object) {
+    const pointgen::EcosystemSpec spec = read_ecosystem(object);
+    reserve_memory(object, static_cast<double>(pointgen::estimated_bytes(spec)));
+    pointgen::Ecosystem eco = pointgen::grow_ecosystem(spec);
+    const std::size_t first = scene_.meshes.size();
+    for (pointgen::TriangleMesh& mesh : eco.meshes) scene_.meshes.push_back(std::move(mesh));
+    const float base = object.has("center") ? object["center"].vec3().y : 0.0f;
+    for (pointgen::InstanceTable& table : eco.tables) {
+      if (table.size() == 0) continue;
+      table.mesh += first;
+      for (glm::mat4& t : table.transforms) t[3].y += base;
+      scene_.groups.push_back(std::move(table));
+    }
+  }
+
+  void reserve_memory(const JsonField& object, double bytes) {
+    reserved_bytes_ += bytes;
+    if (reserved_bytes_ > limits_.memory_budget_bytes) {
+      const double gib = 1024.0 * 1024.0 * 1024.0;
+      char message[160];
+      std::snprintf(message, sizeof message, "the scene would need about %.2f GiB, above the memory budget of %.2f GiB "
+                    "(raise it with --memory-budget)", reserved_bytes_ / gib, limits_.memory_budget_bytes / gib);
+      object.fail(message);
+    }
+  }
+
   void add_instance(std::size_t mesh, const glm::mat4& transform, const glm::vec3& color) {
     auto it = group_of_mesh_.find(mesh);
     if (it == group_of_mesh_.end()) {
-      scene_.groups.push_back({mesh, {}, {}});
+      scene_.groups.push_back({mesh, {}, {}, {}});
       it = group_of_mesh_.emplace(mesh, scene_.groups.size() - 1).first;
     }
-    scene_.groups[it->second].transforms.push_back(transform);
-    scene_.groups[it->second].colors.push_back(color);
+    scene_.groups[it->second].add(transform, color, pointgen::derive_seed(seed_, next_instance_++));
   }
 
   Scene& scene_;
   const InputSource& source_;
+  std::uint64_t seed_;
+  const LoadLimits& limits_;
+  double reserved_bytes_ = 0.0;
+  std::uint64_t next_instance_ = 0;
   std::map<std::string, std::size_t> primitives_;
   std::map<std::string, std::size_t> files_;
   std::map<std::size_t, std::size_t> group_of_mesh_;
@@ -140,15 +191,16 @@ InputSource open_input(const std::string& name_or_file, const std::string& folde
                    " of that name (shipped: " + shipped + ")");
 }
 
-Scene load_scene(const InputSource& source) {
+Scene load_scene(const InputSource& source, const LoadLimits& limits) {
   const nlohmann::json document = parse_json(source.text, source.name);
   const JsonField root(document, source.name);
-  root.only_keys({"camera", "lights", "objects", "comment"});
+  root.only_keys({"camera", "lights", "objects", "seed", "comment"});
   Scene scene;
   scene.name = source.name;
   scene.camera = read_camera(root["camera"]);
   for (const JsonField& light : root["lights"].items(1)) scene.lights.push_back(read_light(light));
-  SceneBuilder builder(scene, source);
+  const auto seed = root.has("seed") ? static_cast<std::uint64_t>(root["seed"].integer(0, 2147483647)) : 1u;
+  SceneBuilder builder(scene, source, seed, limits);
   for (const JsonField& object : root["objects"].items(1)) builder.add_object(object);
   return scene;
 }

@@ -18,8 +18,14 @@ struct InputSource {
 // (e.g. "courtyard" for data/scenes/courtyard.json). Throws InputError when it is neither.
 InputSource open_input(const std::string& name_or_file, const std::string& folder);
 
-// Parses the scene JSON (format in README and DESIGN.md) and loads the meshes it names.
-Scene load_scene(const InputSource& source);
+struct LoadLimits {
+  // A scene that would need more memory than this is refused before it is built.
+  double memory_budget_bytes = 4.0 * 1024 * 1024 * 1024;
+};
+
+// Parses the scene JSON (format in README and DESIGN.md), loads the meshes it names and grows
+// the procedural objects. Throws InputError naming the file and field.
+Scene load_scene(const InputSource& source, const LoadLimits& limits = {});
 
 // The scene used when no --scene is given.
 constexpr const char* default_scene_name = "courtyard";

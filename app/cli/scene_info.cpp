@@ -1,0 +1,26 @@
+#include "app/cli/scene_info.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace ecoview {
+
+double resident_mib() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // the value is in kB
+  }
+  return 0.0;
+}
+
+std::string describe_scene(const Scene& scene, double load_seconds) {
+  char text[256];
+  std::snprintf(text, sizeof text, "scene: %s: %zu instances, %.3g triangles as polygons, %zu meshes; loaded in %.1f s, %.0f MiB resident",
+                scene.name.c_str(), scene.instance_count(), static_cast<double>(scene.triangle_count()), scene.meshes.size(),
+                load_seconds, resident_mib());
+  return text;
+}
+
+}  // namespace ecoview

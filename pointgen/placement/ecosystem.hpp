@@ -1,0 +1,43 @@
+#pragma once
+#include "pointgen/instance_table.hpp"
+#include "pointgen/placement/terrain.hpp"
+#include "pointgen/plants/plant_species.hpp"
+
+#include <string>
+#include <vector>
+
+namespace pointgen {
+
+struct PlantRequest {
+  PlantSpecies species;
+  int count = 0;
+  int variants = 2;  // meshes per species, each grown from its own seed
+};
+
+// A landscape: a terrain over an area and plants on it, placed by Poisson-disk sampling in three
+// layers (trees, bushes, ground cover; each layer keeps its own minimum distance) and given to
+// species by clustered density maps, so each species grows in groves and patches.
+struct EcosystemSpec {
+  std::uint64_t seed = 1;
+  TerrainSpec terrain;  // its centre and size are the ecosystem's area
+  std::vector<PlantRequest> plants;
+  std::vector<glm::vec3> clearings;  // (x, z, radius): meadows where no trees or bushes grow
+};
+
+struct Ecosystem {
+  Terrain terrain;
+  std::vector<TriangleMesh> meshes;  // the terrain first, then every species variant
+  std::vector<std::string> mesh_names;
+  std::vector<InstanceTable> tables;  // one per mesh; the terrain's has one instance
+  std::vector<float> layer_radius;    // the minimum distance kept in each layer (trees, bushes, ground)
+};
+
+Ecosystem grow_ecosystem(const EcosystemSpec& spec);
+
+// Memory the ecosystem will take in this process, in bytes, known before growing it.
+std::size_t estimated_bytes(const EcosystemSpec& spec);
+
+// The placement layer of a plant kind: 0 trees, 1 bushes, 2 ground cover.
+int placement_layer(PlantKind kind);
+
+}  // namespace pointgen
