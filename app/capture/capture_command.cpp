@@ -70,6 +70,8 @@ int run_capture(const CaptureOptions& o) {
   if (o.backend != "egl" && o.backend != "osmesa") {
     throw InputError("--backend: unknown backend '" + o.backend + "' (available: egl, osmesa)");
   }
+  const std::optional<FrameRange> asked_frames =
+      o.frames.empty() ? std::nullopt : std::optional<FrameRange>(parse_frames(o.frames));
   const auto load_start = std::chrono::steady_clock::now();
   const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
   std::cout << describe_scene(scene, std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count())
@@ -77,7 +79,7 @@ int run_capture(const CaptureOptions& o) {
   const shadow::Light& light = select_light(scene, o.light);
   std::optional<CameraPath> path;
   if (!o.path.empty()) path = CameraPath::load(open_input(o.path, "paths"));
-  const FrameRange frames = o.frames.empty() ? default_frames(path, fps) : parse_frames(o.frames);
+  const FrameRange frames = asked_frames ? *asked_frames : default_frames(path, fps);
 
   const fs::path out(o.out);
   std::error_code ec;
@@ -104,7 +106,7 @@ int run_capture(const CaptureOptions& o) {
   for (int frame : todo) {
     const double t = static_cast<double>(frame) / fps;
     const shadow::Camera camera = path ? path->at(t, scene.camera) : scene.camera;
-    renderer.render(camera, light);
+    renderer.render(camera, light, t);
     for (Aov aov : aovs) {
       write_file_atomically(frame_file(out, aov, frame), encode_aov(aov, renderer.frame(), camera.far));
     }

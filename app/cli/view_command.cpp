@@ -5,6 +5,8 @@
 #include "app/gl/glfw_window.hpp"
 #include "app/render/renderer.hpp"
 
+#include <chrono>
+
 namespace ecoview {
 
 CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
@@ -30,8 +32,9 @@ int run_view(const ViewOptions& o) {
 
   GlfwWindow window(size.x, size.y, "ecoview — " + scene.name);
   Renderer renderer(scene, settings);
+  const auto start = std::chrono::steady_clock::now();
   for (int frame = 0; !window.should_close() && (o.exit_after == 0 || frame < o.exit_after); ++frame) {
-    renderer.render(scene.camera, light);
+    renderer.render(scene.camera, light, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     const glm::ivec2 window_size = window.framebuffer_size();
     renderer.frame().present(window_size.x, window_size.y);
     window.swap_and_poll();

@@ -14,8 +14,19 @@ struct Instance {
 };
 
 template <class T>
-void upload(const gl::Buffer& buffer, const std::vector<T>& data) {
-  glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data(), 0);
+void upload(const gl::Buffer& buffer, const std::vector<T>& data, GLbitfield flags = 0) {
+  glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data(), flags);
+}
+
+std::vector<Instance> instances_of(const pointgen::InstanceTable& table) {
+  std::vector<Instance> instances;
+  instances.reserve(table.size());
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const glm::mat3 n = glm::transpose(glm::inverse(glm::mat3(table.transforms[i])));
+    instances.push_back({table.transforms[i], {glm::vec4(n[0], 0), glm::vec4(n[1], 0), glm::vec4(n[2], 0)},
+                         glm::vec4(table.tints[i], 1)});
+  }
+  return instances;
 }
 
 void attribute(GLuint vao, GLuint location, GLuint binding, GLint size, GLuint offset) {
@@ -38,15 +49,10 @@ GpuScene::GpuScene(const Scene& scene) {
     m.index_count = static_cast<GLsizei>(mesh.indices.size());
   }
   for (const pointgen::InstanceTable& group : scene.groups) {
-    std::vector<Instance> instances;
-    for (std::size_t i = 0; i < group.transforms.size(); ++i) {
-      const glm::mat3 n = glm::transpose(glm::inverse(glm::mat3(group.transforms[i])));
-      instances.push_back({group.transforms[i], {glm::vec4(n[0], 0), glm::vec4(n[1], 0), glm::vec4(n[2], 0)},
-                           glm::vec4(group.tints[i], 1)});
-    }
+    const std::vector<Instance> instances = instances_of(group);
     const Mesh& mesh = meshes_[group.mesh];
     Group& g = groups_.emplace_back();
-    upload(g.instances, instances);
+    upload(g.instances, instances, GL_DYNAMIC_STORAGE_BIT);
     g.index_count = mesh.index_count;
     g.instance_count = static_cast<GLsizei>(instances.size());
     triangles_ += static_cast<std::size_t>(mesh.index_count / 3) * instances.size();
@@ -63,6 +69,12 @@ GpuScene::GpuScene(const Scene& scene) {
     for (GLuint c = 0; c < 3; ++c) attribute(vao, 7 + c, 1, 3, offsetof(Instance, normal_matrix) + c * sizeof(glm::vec4));
     attribute(vao, 10, 1, 3, offsetof(Instance, color));
   }
+}
+
+void GpuScene::update(std::size_t group, const pointgen::InstanceTable& table) {
+  const std::vector<Instance> instances = instances_of(table);
+  glNamedBufferSubData(groups_[group].instances.name(), 0, static_cast<GLsizeiptr>(instances.size() * sizeof(Instance)),
+                       instances.data());
 }
 
 void GpuScene::draw() const {

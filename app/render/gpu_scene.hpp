@@ -13,6 +13,8 @@ class GpuScene {
  public:
   explicit GpuScene(const Scene& scene);
   void draw() const;
+  // Replaces the instances of a group with `table`, which has as many.
+  void update(std::size_t group, const pointgen::InstanceTable& table);
   std::size_t triangles_per_draw() const { return triangles_; }
 
  private:

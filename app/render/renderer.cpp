@@ -12,13 +12,18 @@ ShadowMethod parse_shadow_method(const std::string& name) {
 }
 
 Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
-    : settings_(settings),
+    : scene_(scene),
+      settings_(settings),
       scene_bounds_(scene.bounds()),
       gpu_scene_(scene),
       shadow_pass_(settings.shadow_size),
       frame_pass_(settings.width, settings.height) {}
 
-void Renderer::render(const shadow::Camera& camera, const shadow::Light& light) {
+void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, double t) {
+  for (const Animation& animation : scene_.animations) {
+    const std::vector<pointgen::InstanceTable> tables = animation.set.pose(t, animation.first_mesh);
+    for (std::size_t i = 0; i < tables.size(); ++i) gpu_scene_.update(animation.first_group + i, tables[i]);
+  }
   std::optional<FramePass::ShadowLookup> lookup;
   if (settings_.method == ShadowMethod::uniform) {
     const float aspect = static_cast<float>(settings_.width) / static_cast<float>(settings_.height);

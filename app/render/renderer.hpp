@@ -24,10 +24,12 @@ struct RenderSettings {
 class Renderer {
  public:
   Renderer(const Scene& scene, const RenderSettings& settings);
-  void render(const shadow::Camera& camera, const shadow::Light& light);
+  // The frame at time t (seconds): moving objects are posed for t first.
+  void render(const shadow::Camera& camera, const shadow::Light& light, double t = 0.0);
   const FramePass& frame() const { return frame_pass_; }
 
  private:
+  const Scene& scene_;
   RenderSettings settings_;
   shadow::Box scene_bounds_;
   GpuScene gpu_scene_;

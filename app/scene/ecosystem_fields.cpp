@@ -72,7 +72,7 @@ pointgen::PlantSpecies read_species(const JsonField& field, const std::vector<po
 }
 
 pointgen::EcosystemSpec read_ecosystem(const JsonField& field) {
-  field.only_keys({"type", "seed", "center", "size", "terrain", "species", "plants", "clearings"});
+  field.only_keys({"type", "seed", "center", "size", "terrain", "species", "plants", "clearings", "animals"});
   pointgen::EcosystemSpec spec;
   if (auto f = field.optional("seed")) spec.seed = static_cast<std::uint64_t>(f->integer(0, 2147483647));
   const glm::vec3 center = field.has("center") ? field["center"].vec3() : glm::vec3(0.0f);

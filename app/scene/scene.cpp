@@ -15,6 +15,13 @@ shadow::Box Scene::bounds() const {
       }
     }
   }
+  for (const Animation& a : animations) {
+    const pointgen::Bounds b = a.set.bounds();
+    if (!b.empty()) {
+      box.add(b.min);
+      box.add(b.max);
+    }
+  }
   return box;
 }
 

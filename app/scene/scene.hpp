@@ -1,5 +1,6 @@
 #pragma once
 #include "pointgen/instance_table.hpp"
+#include "pointgen/movers/moving_set.hpp"
 #include "pointgen/triangle_mesh.hpp"
 #include "shadow/box.hpp"
 #include "shadow/camera.hpp"
@@ -10,14 +11,24 @@
 
 namespace ecoview {
 
+// Groups whose instances move: groups[first_group …] hold the set's part tables, posed anew for
+// each frame's time.
+struct Animation {
+  pointgen::MovingSet set;
+  std::size_t first_group = 0;
+  std::size_t first_mesh = 0;
+};
+
 // A loaded scene: each mesh once, instances as transforms. Units are metres, +Y is up.
 struct Scene {
   std::string name;  // the file or shipped scene it came from, for messages
   shadow::Camera camera;
   std::vector<shadow::Light> lights;
   std::vector<pointgen::TriangleMesh> meshes;
-  std::vector<pointgen::InstanceTable> groups;  // each drawn with one instanced call
+  std::vector<pointgen::InstanceTable> groups;  // each drawn with one instanced call; moving ones posed at t = 0
+  std::vector<Animation> animations;
 
+  // Bounds of everything at any time.
   shadow::Box bounds() const;
   // Triangles drawn when every instance is drawn as polygons.
   std::size_t triangle_count() const;

@@ -5,6 +5,7 @@
 #include "app/resources.hpp"
 #include "app/scene/ecosystem_fields.hpp"
 #include "app/scene/json_input.hpp"
+#include "app/scene/mover_fields.hpp"
 #include "app/scene/scene_fields.hpp"
 #include "pointgen/file_error.hpp"
 #include "pointgen/primitives.hpp"
@@ -61,8 +62,14 @@ class SceneBuilder {
       add_plants(object);
     } else if (type == "ecosystem") {
       add_ecosystem(object);
+    } else if (type == "crowd") {
+      reserve_memory(object, bytes_per_mover * (object.has("count") ? object["count"].number(0, 1e6) : 0.0));
+      add_moving_set(read_crowd(object, seed_));
+    } else if (type == "traffic") {
+      add_moving_set(read_traffic(object, seed_));
     } else {
-      object["type"].fail("unknown object type '" + type + "' (known: plane, box, sphere, mesh, plant, ecosystem)");
+      object["type"].fail("unknown object type '" + type +
+                          "' (known: plane, box, sphere, mesh, plant, ecosystem, crowd, traffic)");
     }
   }
 
@@ -126,7 +133,28 @@ class SceneBuilder {
       for (glm::mat4& t : table.transforms) t[3].y += base;
       scene_.groups.push_back(std::move(table));
     }
+    if (auto animals = object.optional("animals")) {
+      for (const JsonField& item : animals->items()) {
+        item.only_keys({"kind", "count"});
+        if (item["kind"].string() != "cow") item["kind"].fail("unknown animal (known: cow)");
+        const int count = item["count"].integer(0, 100000);
+        reserve_memory(item, bytes_per_mover * count);
+        add_moving_set(pointgen::make_herd(count, eco.terrain, base, pointgen::derive_seed(spec.seed, 0xc0)));
+      }
+    }
   }
+
+  // The set's part meshes and its tables posed at t = 0; the renderer poses them per frame.
+  void add_moving_set(pointgen::MovingSet set) {
+    const std::size_t first_mesh = scene_.meshes.size();
+    for (pointgen::TriangleMesh& mesh : set.part_meshes()) scene_.meshes.push_back(std::move(mesh));
+    const std::size_t first_group = scene_.groups.size();
+    for (pointgen::InstanceTable& table : set.pose(0.0, first_mesh)) scene_.groups.push_back(std::move(table));
+    scene_.animations.push_back({std::move(set), first_group, first_mesh});
+  }
+
+  // A mover's part records (table rows and GPU instances), about.
+  static constexpr double bytes_per_mover = 10 * (84 + 128);
 
   void reserve_memory(const JsonField& object, double bytes) {
     reserved_bytes_ += bytes;
