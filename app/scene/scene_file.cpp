@@ -6,6 +6,7 @@
 #include "app/scene/ecosystem_fields.hpp"
 #include "app/scene/json_input.hpp"
 #include "app/scene/mover_fields.hpp"
+#include "app/scene/set_piece_fields.hpp"
 #include "app/scene/scene_fields.hpp"
 #include "pointgen/file_error.hpp"
 #include "pointgen/primitives.hpp"
@@ -66,10 +67,18 @@ class SceneBuilder {
       reserve_memory(object, bytes_per_mover * (object.has("count") ? object["count"].number(0, 1e6) : 0.0));
       add_moving_set(read_crowd(object, seed_));
     } else if (type == "traffic") {
+      reserve_memory(object, bytes_per_mover * (object.has("cars") ? object["cars"].number(0, 1e6) : 0.0));
       add_moving_set(read_traffic(object, seed_));
+    } else if (std::vector<PlacedMesh> pieces = read_set_piece(object, type, seed_); !pieces.empty()) {
+      for (PlacedMesh& piece : pieces) {
+        scene_.meshes.push_back(std::move(piece.mesh));
+        for (std::size_t i = 0; i < piece.transforms.size(); ++i) {
+          add_instance(scene_.meshes.size() - 1, piece.transforms[i], piece.colors[i]);
+        }
+      }
     } else {
-      object["type"].fail("unknown object type '" + type +
-                          "' (known: plane, box, sphere, mesh, plant, ecosystem, crowd, traffic)");
+      object["type"].fail("unknown object type '" + type + "' (known: plane, box, sphere, mesh, plant, ecosystem, "
+                          "crowd, traffic, cathedral, houses, chess, lathe)");
     }
   }
 

@@ -28,6 +28,6 @@ struct LoadLimits {
 Scene load_scene(const InputSource& source, const LoadLimits& limits = {});
 
 // The scene used when no --scene is given.
-constexpr const char* default_scene_name = "courtyard";
+constexpr const char* default_scene_name = "ecosystem";
 
 }  // namespace ecoview
