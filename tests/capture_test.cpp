@@ -40,7 +40,7 @@ TEST(Capture, DefaultSceneFrameIsLitAndShadowed) {
 TEST(Capture, SameFrameGivesSameBytes) {
   for (const char* backend : {"egl", "osmesa"}) {
     const TempDir a, b;
-    const std::vector<std::string> args = {"capture", "--backend", backend, "--path", "courtyard", "--frames", "3:5",
+    const std::vector<std::string> args = {"capture", "--backend", backend, "--scene", "courtyard", "--path", "courtyard", "--frames", "3:5",
                                            "--aov", "color,shadow,depth", "--size", "256x160"};
     auto with_out = [&](const TempDir& d) { auto v = args; v.insert(v.end(), {"--out", d.path().string()}); return v; };
     const CommandResult ra = run_ecoview(with_out(a));
@@ -56,8 +56,8 @@ TEST(Capture, SameFrameGivesSameBytes) {
 
 TEST(Capture, FramesAlongAPathDiffer) {
   const TempDir dir;
-  ASSERT_EQ(run_ecoview({"capture", "--path", "courtyard", "--frames", "0:31:", "--out", dir.path()}).exit_code, 2);
-  ASSERT_EQ(run_ecoview({"capture", "--path", "courtyard", "--fps", "1", "--size", "160x90", "--out", dir.path()}).exit_code, 0);
+  ASSERT_EQ(run_ecoview({"capture", "--scene", "courtyard", "--path", "courtyard", "--frames", "0:31:", "--out", dir.path()}).exit_code, 2);
+  ASSERT_EQ(run_ecoview({"capture", "--scene", "courtyard", "--path", "courtyard", "--fps", "1", "--size", "160x90", "--out", dir.path()}).exit_code, 0);
   // The path lasts 3 s: at 1 frame per second, frames 0 to 3.
   ASSERT_EQ(files_in(dir.path()).size(), 4u);
   EXPECT_NE(read_bytes(dir / "color_00000.png"), read_bytes(dir / "color_00003.png"));
@@ -65,7 +65,7 @@ TEST(Capture, FramesAlongAPathDiffer) {
 
 TEST(Capture, ResumesWhereItStopped) {
   const TempDir dir;
-  const std::vector<std::string> args = {"capture", "--path", "courtyard", "--frames", "0:3", "--size", "160x90",
+  const std::vector<std::string> args = {"capture", "--scene", "courtyard", "--path", "courtyard", "--frames", "0:3", "--size", "160x90",
                                          "--out", dir.path().string()};
   ASSERT_EQ(run_ecoview(args).exit_code, 0);
   const std::string frame1 = read_bytes(dir / "color_00001.png");
@@ -85,6 +85,41 @@ TEST(Capture, ResumesWhereItStopped) {
   forced.push_back("--force");
   EXPECT_NE(run_ecoview(forced).out.find("wrote 3 frame(s)"), std::string::npos);
   EXPECT_EQ(files_in(dir.path()).size(), 3u);  // no temporary files left behind
+}
+
+// Each shipped scene renders on each headless backend (the default scene, the ecosystem, above).
+class ShippedScene : public testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(ShippedScene, Captures) {
+  const auto& [scene, backend] = GetParam();
+  const TempDir dir;
+  const CommandResult r = run_ecoview({"capture", "--scene", scene, "--backend", backend, "--size", "192x108",
+                                       "--aov", "shadow", "--out", dir.path().string()});
+  if (r.exit_code == 1 && backend == "osmesa") GTEST_SKIP() << "this build has no OSMesa backend";
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("scene: data/scenes/" + scene + ".json"), std::string::npos) << r.out;
+  const Gray shadow = load_gray(dir / "shadow_00000.png");
+  EXPECT_GT(std::count_if(shadow.pixels.begin(), shadow.pixels.end(), [](unsigned char v) { return v < 128; }), 100)
+      << "no shadow in " << scene;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScene,
+                         testing::Combine(testing::Values("courtyard", "square", "street", "chess", "single"),
+                                          testing::Values("egl", "osmesa")),
+                         [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
+
+TEST(Capture, CrowdAndTrafficMoveTheSameWayInEveryProcess) {
+  for (const char* scene : {"square", "street"}) {
+    const TempDir a, b;
+    for (const TempDir* dir : {&a, &b}) {
+      // Frames 30 and 60: t = 1 s and 2 s.
+      ASSERT_EQ(run_ecoview({"capture", "--scene", scene, "--frames", "30:31", "--size", "192x108", "--out", dir->path().string()}).exit_code, 0);
+      ASSERT_EQ(run_ecoview({"capture", "--scene", scene, "--frames", "60:61", "--size", "192x108", "--out", dir->path().string()}).exit_code, 0);
+    }
+    EXPECT_EQ(read_bytes(a / "color_00030.png"), read_bytes(b / "color_00030.png")) << scene;
+    EXPECT_EQ(read_bytes(a / "color_00060.png"), read_bytes(b / "color_00060.png")) << scene;
+    EXPECT_NE(read_bytes(a / "color_00030.png"), read_bytes(a / "color_00060.png")) << scene << ": nothing moved in 1 s";
+  }
 }
 
 TEST(Capture, RendersARealGltfFile) {
@@ -157,9 +192,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"unknown_method", "", {"--method", "magic"}, {"--method"}},
         BadInput{"unknown_aov", "", {"--aov", "color,normals"}, {"--aov", "normals"}},
         BadInput{"unknown_scene", "", {"--scene", "no-such-scene"}, {"no-such-scene", "courtyard"}},
-        BadInput{"light_index", "", {"--light", "7"}, {"--light"}},
+        BadInput{"light_index", "", {"--scene", "courtyard", "--light", "7"}, {"--light"}},
         BadInput{"huge_shadow_map", "", {"--shadow-size", "100000"}, {"--shadow-size"}},
-        BadInput{"unknown_option", "", {"--colour"}, {"--colour"}}),
+        BadInput{"unknown_option", "", {"--colour"}, {"--colour"}},
+        BadInput{"memory_budget", good_start + R"({"type": "ecosystem", "size": [900, 900], "plants": [{"species": "oak", "count": 30000000}]}]})",
+                 {"--memory-budget", "2"}, {"bad.json", "objects[0]", "memory budget of 2.00 GiB"}},
+        BadInput{"bad_species", good_start + R"({"type": "ecosystem", "size": [90, 90], "plants": [{"species": "kelp", "count": 3}]}]})",
+                 {}, {"bad.json", "objects[0].plants[0].species", "kelp"}},
+        BadInput{"bad_crowd", good_start + R"({"type": "crowd", "count": 10, "center": [0, 0, 0], "size": [-1, 4]}]})",
+                 {}, {"bad.json", "objects[0].size"}}),
     [](const testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
 
 }  // namespace

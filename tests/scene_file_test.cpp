@@ -7,6 +7,8 @@
 
 #include <map>
 
+#include "pointgen/movers/moving_set.hpp"
+
 namespace ecoview {
 namespace {
 
@@ -194,5 +196,58 @@ TEST(SceneFileErrors, MissingOrCorruptMeshNamesTheObjectAndFile) {
                      {{"model.fbx", "x"}});
 }
 
+TEST(SceneFileErrors, MalformedSpeciesAndCrowdsNameTheField) {
+  const std::string eco = R"({"type": "ecosystem", "size": [50, 50], "plants": [)";
+  expect_input_error(with_objects(eco + R"({"species": "baobab", "count": 3}]})"), {"objects[0].plants[0].species", "baobab"});
+  expect_input_error(with_objects(eco + R"({"species": {"name": "x", "kind": "mushroom"}, "count": 3}]})"),
+                     {"objects[0].plants[0].species.kind", "mushroom"});
+  expect_input_error(with_objects(eco + R"({"species": {"like": "oak", "height": -2}, "count": 3}]})"),
+                     {"objects[0].plants[0].species.height"});
+  expect_input_error(with_objects(eco + R"({"species": {"kind": "bush"}, "count": 3}]})"),
+                     {"objects[0].plants[0].species", "name"});
+  expect_input_error(with_objects(eco + R"({"species": "oak", "count": -1}]})"), {"objects[0].plants[0].count"});
+  expect_input_error(with_objects(eco + R"({"species": "oak", "count": 3, "variants": 0}]})"), {"objects[0].plants[0].variants"});
+  expect_input_error(with_objects(R"({"type": "crowd", "count": -5, "center": [0, 0, 0], "size": [10, 10]})"),
+                     {"objects[0].count"});
+  expect_input_error(with_objects(R"({"type": "crowd", "count": 5, "center": [0, 0, 0], "size": [10, 10], "avoid": [[1, 1, 0, 0]]})"),
+                     {"objects[0].avoid[0]", "x0 < x1"});
+  expect_input_error(with_objects(R"({"type": "crowd", "count": 5, "center": [0, 0], "size": [10, 10]})"), {"objects[0].center"});
+  expect_input_error(with_objects(R"({"type": "traffic", "cars": 5})"), {"objects[0].cars", "loops"});
+  expect_input_error(with_objects(R"({"type": "ecosystem", "size": [50, 50], "plants": [{"species": "oak", "count": 1}],
+                                      "animals": [{"kind": "dragon", "count": 1}]})"), {"objects[0].animals[0].kind"});
+}
+
+TEST(SceneFileErrors, AScenePastTheMemoryBudgetIsRefusedBeforeItIsBuilt) {
+  const std::string huge = with_objects(R"({"type": "plane", "center": [0, 0, 0], "size": [4, 4]},
+      {"type": "ecosystem", "size": [5000, 5000], "plants": [{"species": "meadow grass", "count": 90000000}]})");
+  try {
+    load_scene({"test.json", huge, [](const std::string&) { return std::nullopt; }}, {1024.0 * 1024.0 * 1024.0});
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("objects[1]"), std::string::npos) << message;
+    EXPECT_NE(message.find("memory budget of 1.00 GiB"), std::string::npos) << message;
+    EXPECT_NE(message.find("would need about 21."), std::string::npos) << message;  // 9e7 plants x 260 bytes
+  }
+}
+
+TEST(SceneFile, EcosystemCrowdTrafficAndSetPiecesLoad) {
+  const Scene s = load_objects(R"({"type": "ecosystem", "size": [60, 60], "seed": 3, "plants": [{"species": "birch", "count": 7}],
+                                   "animals": [{"kind": "cow", "count": 2}]},
+                                  {"type": "crowd", "count": 4, "center": [0, 0, 0], "size": [10, 10]},
+                                  {"type": "traffic", "cars": 3, "loops": [[-5, -5, 5, 5]], "aeroplanes": 1},
+                                  {"type": "chess", "center": [0, 0, 0]},
+                                  {"type": "cathedral", "center": [50, 0, 0]},
+                                  {"type": "houses", "from": [0, 0], "to": [0, 40]},
+                                  {"type": "lathe", "center": [0, 0, 0], "profile": [[0, 0], [1, 0.5], [0, 1]]},
+                                  {"type": "plant", "species": "oak", "positions": [[1, 0, 1], [2, 0, 2]]})");
+  ASSERT_EQ(s.animations.size(), 3u);  // the herd, the crowd, the traffic
+  std::size_t movers = 0;
+  for (const Animation& a : s.animations) movers += a.set.movers.size();
+  EXPECT_EQ(movers, 2u + 4u + 4u);
+  // terrain 1 + birches 7 + cow parts 2 x 6 + people 4 x 6 + cars 3 x 6 + aeroplane 1 x 2 + board 1 + pieces 32
+  // + cathedral 1 + houses 1 + lathe 1 + oaks 2
+  EXPECT_EQ(s.instance_count(), 1u + 7u + 12u + 24u + 18u + 2u + 1u + 32u + 1u + 1u + 1u + 2u);
+}
 }  // namespace
 }  // namespace ecoview

@@ -46,7 +46,7 @@ pointgen::PlantSpecies read_species(const JsonField& field, const std::vector<po
     try {
       s.kind = pointgen::parse_plant_kind(f->string());
     } catch (const std::invalid_argument& known) {
-      f->fail(std::string("unknown plant kind (known: ") + known.what() + ")");
+      f->fail("unknown plant kind '" + f->string() + "' (known: " + known.what() + ")");
     }
   }
   if (auto f = field.optional("height")) s.height = f->number_f(0.01, 200);

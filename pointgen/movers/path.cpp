@@ -8,11 +8,22 @@
 namespace pointgen {
 namespace {
 
+// Whether the segment from a to b touches the rectangle (Liang-Barsky clipping).
 bool segment_hits(const glm::vec2& a, const glm::vec2& b, const Rect& r) {
-  for (int k = 0; k <= 16; ++k) {  // samples closer than the smallest obstacle here
-    if (r.contains(glm::mix(a, b, static_cast<float>(k) / 16.0f))) return true;
+  float t0 = 0.0f, t1 = 1.0f;
+  const glm::vec2 d = b - a;
+  for (int axis = 0; axis < 2; ++axis) {
+    if (d[axis] == 0.0f) {
+      if (a[axis] < r.min[axis] || a[axis] > r.max[axis]) return false;
+      continue;
+    }
+    float enter = (r.min[axis] - a[axis]) / d[axis], leave = (r.max[axis] - a[axis]) / d[axis];
+    if (enter > leave) std::swap(enter, leave);
+    t0 = std::max(t0, enter);
+    t1 = std::min(t1, leave);
+    if (t0 > t1) return false;
   }
-  return false;
+  return true;
 }
 
 }  // namespace

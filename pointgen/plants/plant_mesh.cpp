@@ -55,9 +55,10 @@ class PlantBuilder {
 
   // A leaf hanging from `at`, pointing roughly along `out`.
   void add_leaf(const glm::vec3& at, const glm::vec3& out) {
-    glm::vec3 dir = glm::normalize(out + 0.6f * random_direction(rng_) - s_.droop * up);
-    if (glm::length(dir) < 1e-3f) dir = up;
+    glm::vec3 dir = out + 0.6f * random_direction(rng_) - s_.droop * up;
+    dir = glm::length(dir) < 1e-3f ? up : glm::normalize(dir);
     const float size = s_.leaf_size * rng_.uniform(0.8f, 1.2f);
+    if (at.y + size * dir.y < 0.0f) dir.y = std::abs(dir.y);  // no leaf reaches into the ground
     mesh_.leaf(at, dir, perpendicular(dir), size, 0.55f * size, leaf_color());
   }
 
@@ -65,9 +66,10 @@ class PlantBuilder {
   // children along its outer part, or leaves when it is a twig.
   void branch(const glm::vec3& base, const glm::vec3& dir, float length, float radius, int level) {
     const int sides = std::max(3, 7 - 2 * level);
-    const glm::vec3 bent = glm::normalize(dir + 0.15f * random_direction(rng_) +
-                                          (0.12f - 0.25f * s_.droop * static_cast<float>(level)) * up);
+    glm::vec3 bent = glm::normalize(dir + 0.15f * random_direction(rng_) +
+                                    (0.12f - 0.25f * s_.droop * static_cast<float>(level)) * up);
     const glm::vec3 mid = base + 0.5f * length * dir;
+    if (mid.y + 0.5f * length * bent.y < 0.1f * s_.height) bent.y = std::abs(bent.y);  // hanging, not digging
     const glm::vec3 tip = mid + 0.5f * length * bent;
     mesh_.tube(base, mid, radius, 0.8f * radius, sides, s_.bark);
     mesh_.tube(mid, tip, 0.8f * radius, 0.55f * radius, sides, s_.bark);
