@@ -219,7 +219,7 @@ TEST(Herd, CowsWalkOnTheTerrain) {
   spec.relief = 15.0f;
   spec.feature = 30.0f;
   const Terrain terrain(spec);
-  const MovingSet herd = make_herd(5, terrain, 0.0f, 3);
+  const MovingSet herd = make_herd(5, terrain, {{-30.0f, -30.0f}, {30.0f, 30.0f}}, 0.0f, 3);
   for (double t : {0.0, 3.3, 100.0}) {
     const std::vector<InstanceTable> tables = herd.pose(t, 0);
     for (const glm::mat4& m : tables[0].transforms) EXPECT_NEAR(m[3].y, terrain.height(m[3].x, m[3].z), 1e-4f);

@@ -17,7 +17,7 @@ double resident_mib() {
 
 std::string describe_scene(const Scene& scene, double load_seconds) {
   char text[256];
-  std::snprintf(text, sizeof text, "scene: %s: %zu instances, %.3g triangles as polygons, %zu meshes; loaded in %.1f s, %.0f MiB resident",
+  std::snprintf(text, sizeof text, "scene: %s: %zu instances, %.3g triangles as polygons, %zu meshes; loaded in %.2f s, %.0f MiB resident",
                 scene.name.c_str(), scene.instance_count(), static_cast<double>(scene.triangle_count()), scene.meshes.size(),
                 load_seconds, resident_mib());
   return text;

@@ -144,11 +144,14 @@ class SceneBuilder {
     }
     if (auto animals = object.optional("animals")) {
       for (const JsonField& item : animals->items()) {
-        item.only_keys({"kind", "count"});
+        item.only_keys({"kind", "count", "pasture"});
         if (item["kind"].string() != "cow") item["kind"].fail("unknown animal (known: cow)");
         const int count = item["count"].integer(0, 100000);
         reserve_memory(item, bytes_per_mover * count);
-        add_moving_set(pointgen::make_herd(count, eco.terrain, base, pointgen::derive_seed(spec.seed, 0xc0)));
+        const glm::vec2 center = spec.terrain.center;
+        const pointgen::Rect pasture = item.has("pasture") ? read_rect(item["pasture"])
+                                                           : pointgen::Rect{center - 20.0f, center + 20.0f};
+        add_moving_set(pointgen::make_herd(count, eco.terrain, pasture, base, pointgen::derive_seed(spec.seed, 0xc0)));
       }
     }
   }

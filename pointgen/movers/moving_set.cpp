@@ -123,19 +123,14 @@ MovingSet make_crowd(int count, const Rect& region, const std::vector<Rect>& obs
   return set;
 }
 
-MovingSet make_herd(int count, const Terrain& ground, float y, std::uint64_t seed) {
+MovingSet make_herd(int count, const Terrain& ground, const Rect& pasture, float y, std::uint64_t seed) {
   MovingSet set;
   set.bodies.push_back(make_cow());
   set.ground = ground;
-  const TerrainSpec& spec = ground.spec();
-  Random herd(seed);
-  // The herd grazes together: each cow wanders within a pasture around a common centre.
-  const glm::vec2 center = spec.center + 0.25f * spec.size * glm::vec2(herd.uniform(-1, 1), herd.uniform(-1, 1));
-  const glm::vec2 half = glm::min(glm::vec2(25.0f), 0.5f * spec.size);
   for (int i = 0; i < count; ++i) {
     const std::uint64_t own_seed = derive_seed(seed, static_cast<std::uint64_t>(i));
     Random rng(own_seed);
-    set.paths.push_back(wander_loop(rng, {center - half, center + half}, {}, 5, y));
+    set.paths.push_back(wander_loop(rng, pasture, {}, 5, y));
     Mover m;
     m.path = set.paths.size() - 1;
     m.speed = rng.uniform(0.3f, 0.7f);

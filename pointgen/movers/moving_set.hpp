@@ -43,8 +43,8 @@ struct MovingSet {
 // Builders of moving sets.
 // People wandering in `region` (at height y), keeping out of `obstacles`.
 MovingSet make_crowd(int count, const Rect& region, const std::vector<Rect>& obstacles, float y, std::uint64_t seed);
-// Cows wandering slowly over a terrain, raised by y.
-MovingSet make_herd(int count, const Terrain& ground, float y, std::uint64_t seed);
+// Cows wandering slowly in `pasture` over a terrain, raised by y.
+MovingSet make_herd(int count, const Terrain& ground, const Rect& pasture, float y, std::uint64_t seed);
 // Cars round `loops` (rectangles at height y) and aeroplanes circling `center` at `altitude`.
 MovingSet make_traffic(int cars, const std::vector<Rect>& loops, float y, int aeroplanes, const glm::vec3& center,
                        float radius, float altitude, std::uint64_t seed);
