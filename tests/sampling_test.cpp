@@ -1,0 +1,91 @@
+// Surface samples and the view-adaptive count, against facts computed here.
+#include "pointgen/primitives.hpp"
+#include "pointgen/sampling/point_count.hpp"
+#include "pointgen/sampling/surface_samples.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace pointgen {
+namespace {
+
+// Two separate triangles in the plane y = 0: one of area 0.5 around x in [0, 1], one of area 1.5
+// around x in [10, 13]; corner colours red, green, blue.
+TriangleMesh two_triangles() {
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {10, 0, 0}, {13, 0, 0}, {10, 0, 1}};
+  m.normals.assign(6, glm::vec3(0, 1, 0));
+  m.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  m.indices = {0, 2, 1, 3, 5, 4};
+  return m;
+}
+
+double share_in_big(const std::vector<SurfaceSample>& s, std::size_t n) {
+  std::size_t big = 0;
+  for (std::size_t i = 0; i < n; ++i) big += s[i].position.x >= 10.0f;
+  return static_cast<double>(big) / static_cast<double>(n);
+}
+
+TEST(SurfaceSamples, TrianglesAreHitInProportionToTheirAreaInEveryPrefix) {
+  const std::vector<SurfaceSample> s = sample_surface(two_triangles(), 40000, 1);
+  ASSERT_EQ(s.size(), 40000u);
+  for (std::size_t n : {400u, 4000u, 40000u}) {
+    const double sd = std::sqrt(0.75 * 0.25 / static_cast<double>(n));
+    EXPECT_NEAR(share_in_big(s, n), 0.75, 4.5 * sd) << "prefix of " << n;
+  }
+}
+
+TEST(SurfaceSamples, PointsAreUniformInsideEachTriangleWithInterpolatedAttributes) {
+  const std::vector<SurfaceSample> s = sample_surface(two_triangles(), 20000, 2);
+  glm::dvec3 mean(0.0);
+  std::size_t small = 0;
+  for (const SurfaceSample& p : s) {
+    if (p.position.x >= 10.0f) continue;
+    ++small;
+    EXPECT_GE(p.position.x, 0.0f);
+    EXPECT_GE(p.position.z, 0.0f);
+    EXPECT_LE(p.position.x + p.position.z, 1.0f + 1e-5f);
+    // Colours are the barycentric weights of the corners: green grows with x, blue with z.
+    EXPECT_NEAR(p.color.g, p.position.x, 1e-4f);
+    EXPECT_NEAR(p.color.b, p.position.z, 1e-4f);
+    EXPECT_NEAR(p.color.r, 1.0f - p.position.x - p.position.z, 1e-4f);
+    mean += glm::dvec3(p.position);
+  }
+  mean /= static_cast<double>(small);
+  // The centroid of the triangle (0,0)-(1,0)-(0,1) is (1/3, 1/3); the mean's sd is about 0.24/sqrt(n).
+  EXPECT_NEAR(mean.x, 1.0 / 3.0, 0.01);
+  EXPECT_NEAR(mean.z, 1.0 / 3.0, 0.01);
+}
+
+TEST(SurfaceSamples, SameSeedSameListOtherSeedOtherList) {
+  const TriangleMesh box = unit_box();
+  const auto a = sample_surface(box, 100, 7), b = sample_surface(box, 100, 7), c = sample_surface(box, 100, 8);
+  EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(SurfaceSample)));
+  EXPECT_NE(0, std::memcmp(a.data(), c.data(), a.size() * sizeof(SurfaceSample)));
+  for (const SurfaceSample& p : a) {
+    EXPECT_NEAR(std::max({std::abs(p.position.x), std::abs(p.position.y), std::abs(p.position.z)}), 0.5f, 1e-5f);
+  }
+}
+
+TEST(SurfaceArea, OfKnownShapes) {
+  EXPECT_NEAR(surface_area(unit_box()), 6.0f, 1e-4f);
+  EXPECT_NEAR(surface_area(two_triangles()), 2.0f, 1e-5f);
+  EXPECT_NEAR(surface_area(unit_sphere(96, 48)), 4.0f * 3.14159265f, 0.02f);
+}
+
+TEST(PointCount, MatchesThePixelAreaOfASmallSquareFacingTheCamera) {
+  // A 0.1 m square facing the camera 10 m ahead covers (0.01 / 100) * rho^2 pixels; randomly
+  // oriented two-sided surfaces cover half as much on average, so k points per pixel of that.
+  const PointDensity density{500.0f, 2.0f};
+  const float pixels_if_facing = 0.01f / 100.0f * 500.0f * 500.0f;
+  EXPECT_NEAR(points_needed(density, 0.01f, 10.0f, 10.0f), 2.0f * 0.5f * pixels_if_facing, 1e-3f);
+  // Twice as far: a quarter. Off axis at the same depth (distance > depth): more, by d / z.
+  EXPECT_NEAR(points_needed(density, 0.01f, 20.0f, 20.0f), 0.25f * points_needed(density, 0.01f, 10.0f, 10.0f), 1e-3f);
+  EXPECT_NEAR(points_needed(density, 0.01f, 10.0f, 12.0f), 1.2f * points_needed(density, 0.01f, 10.0f, 10.0f), 1e-3f);
+}
+
+}  // namespace
+}  // namespace pointgen
