@@ -1,6 +1,4 @@
 #version 450 core
-// Blinn-Phong with one shadowing light. The shadow term dims the diffuse light instead of
-// removing it (seed 003): (ambient + diffuse_shade * diffuse) * albedo + visibility * specular.
 in vec3 world_position;
 in vec3 world_normal;
 in vec3 albedo;
@@ -10,99 +8,12 @@ layout(location = 0) out vec4 out_color;       // sRGB
 layout(location = 1) out float out_visibility;  // the `shadow` AOV
 layout(location = 2) out float out_depth;       // linear view depth, metres
 
-const int DIRECTIONAL = 0, POINT = 1, SPOT = 2;
-uniform int light_type;
-uniform vec3 light_position;
-uniform vec3 light_direction;  // the way the light travels
-uniform float spot_cos_cone;
-uniform vec3 camera_position;
-
-uniform int shadows_enabled;
-// The views of the shadow setup (shadow::ShadowSetup), one map layer each, and how a point picks
-// its view: one map, or cube faces by the major axis of (point - light).
-const int SINGLE = 0, CUBE_FACES = 1;
-uniform int shadow_selection;
-uniform mat4 shadow_matrices[6];
-uniform float shadow_size;  // texels per side
-layout(binding = 0) uniform sampler2DArrayShadow shadow_map;
-
-const float ambient = 0.18;
-const float dimming = 0.3;
-const float shininess = 48.0;
-const float specular_strength = 0.25;
-
-// World-space size of one shadow-map texel at p, from the gradient of the map coordinates of
-// the (projective) light matrix, so it holds for any parameterization.
-float texel_world_size(mat4 m, vec3 p) {
-  vec4 clip = m * vec4(p, 1.0);
-  vec3 row_x = vec3(m[0][0], m[1][0], m[2][0]);
-  vec3 row_y = vec3(m[0][1], m[1][1], m[2][1]);
-  vec3 row_w = vec3(m[0][3], m[1][3], m[2][3]);
-  vec3 grad_u = 0.5 * (row_x - clip.x / clip.w * row_w) / clip.w;
-  vec3 grad_v = 0.5 * (row_y - clip.y / clip.w * row_w) / clip.w;
-  return 1.0 / (shadow_size * max(min(length(grad_u), length(grad_v)), 1e-20));
-}
-
-// Fraction of the light reaching p past the occluders in the map: 3x3 taps of hardware-filtered
-// comparisons (bilinear PCF), so 4x4 texels in all. The lookup moves off the surface along its
-// normal by about a texel where the light grazes it, so the outer taps do not hit the surface's
-// own depth (acne); slope-scaled polygon offset in the shadow pass covers the centre tap.
-int shadow_view(vec3 p) {
-  if (shadow_selection == SINGLE) return 0;
-  vec3 d = p - light_position;
-  vec3 a = abs(d);
-  if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0 : 1;
-  if (a.y >= a.z) return d.y >= 0.0 ? 2 : 3;
-  return d.z >= 0.0 ? 4 : 5;
-}
-
-float shadow_test(vec3 n, float n_dot_l) {
-  int layer = shadow_view(world_position);
-  mat4 m = shadow_matrices[layer];
-  float sin_light = sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0));
-  vec3 p = world_position + n * (1.5 * texel_world_size(m, world_position) * sin_light);
-  vec4 clip = m * vec4(p, 1.0);
-  if (clip.w <= 0.0) return 1.0;  // behind the map's projection centre: not covered
-  vec3 map = clip.xyz / clip.w * 0.5 + 0.5;
-  if (any(lessThan(map.xy, vec2(0.0))) || any(greaterThan(map.xy, vec2(1.0)))) return 1.0;
-  float sum = 0.0;
-  for (int y = -1; y <= 1; ++y) {
-    for (int x = -1; x <= 1; ++x) {
-      sum += texture(shadow_map, vec4(map.xy + vec2(x, y) / shadow_size, layer, map.z));
-    }
-  }
-  return sum / 9.0;
-}
-
-vec3 linear_to_srgb(vec3 c) {
-  c = clamp(c, 0.0, 1.0);
-  return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
-}
+#include "lighting.glsl"
 
 void main() {
   vec3 n = normalize(world_normal);
-  if (!gl_FrontFacing) n = -n;  // thin surfaces are lit from either side
-  vec3 to_light = light_type == DIRECTIONAL ? -light_direction : normalize(light_position - world_position);
-  float n_dot_l = dot(n, to_light);
-
-  float cone = 1.0;
-  float falloff = 1.0;
-  if (light_type == SPOT) {
-    float cos_angle = dot(-to_light, light_direction);
-    cone = cos_angle >= spot_cos_cone ? 1.0 : 0.0;
-    falloff = smoothstep(spot_cos_cone, mix(spot_cos_cone, 1.0, 0.25), cos_angle);
-  }
-  float visibility = n_dot_l > 0.0 ? cone : 0.0;
-  if (visibility > 0.0 && shadows_enabled != 0) visibility *= shadow_test(n, n_dot_l);
-
-  vec3 view_dir = normalize(camera_position - world_position);
-  vec3 half_dir = normalize(to_light + view_dir);
-  float diffuse = max(n_dot_l, 0.0) * falloff;
-  float specular = n_dot_l > 0.0 ? specular_strength * pow(max(dot(n, half_dir), 0.0), shininess) * falloff : 0.0;
-  float diffuse_shade = dimming + (1.0 - dimming) * visibility;
-  vec3 color = (ambient + diffuse_shade * diffuse) * albedo + visibility * specular;
-
-  out_color = vec4(linear_to_srgb(color), 1.0);
-  out_visibility = visibility;
+  Shading s = shade(world_position, gl_FrontFacing ? n : -n, albedo);
+  out_color = vec4(linear_to_srgb(s.color), 1.0);
+  out_visibility = s.visibility;
   out_depth = view_depth;
 }

@@ -2,6 +2,9 @@
 #include "pointgen/primitives.hpp"
 #include "pointgen/sampling/point_count.hpp"
 #include "pointgen/sampling/surface_samples.hpp"
+#include "pointgen/sampling/view_sampler.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <gtest/gtest.h>
 
@@ -85,6 +88,48 @@ TEST(PointCount, MatchesThePixelAreaOfASmallSquareFacingTheCamera) {
   // Twice as far: a quarter. Off axis at the same depth (distance > depth): more, by d / z.
   EXPECT_NEAR(points_needed(density, 0.01f, 20.0f, 20.0f), 0.25f * points_needed(density, 0.01f, 10.0f, 10.0f), 1e-3f);
   EXPECT_NEAR(points_needed(density, 0.01f, 10.0f, 12.0f), 1.2f * points_needed(density, 0.01f, 10.0f, 10.0f), 1e-3f);
+}
+
+}  // namespace
+}  // namespace pointgen
+
+namespace pointgen {
+namespace {
+
+// A camera at the origin looking down -Z with a 90° vertical field of view, square image.
+SamplerView test_view() {
+  SamplerView v;
+  v.view_projection = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f);
+  v.density = {256.0f, 2.0f};  // 512 pixels high
+  v.points_per_triangle = 4.0f;
+  return v;
+}
+
+InstanceTable table_at(const std::vector<glm::vec3>& positions) {
+  InstanceTable t;
+  for (const glm::vec3& p : positions) t.add(glm::translate(glm::mat4(1.0f), p), glm::vec3(1.0f), 0);
+  return t;
+}
+
+TEST(ViewSampler, CullsWhatIsOutOfViewAndCountsTheRest) {
+  const SampledMesh mesh{2.0f, 0.5f, 1000, 5000};  // 2 m² in 1,000 triangles: break-even at 4,000 points
+  const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, 40}, {0, 0, -40}, {100, 0, -40}})}, {mesh});
+  ASSERT_EQ(f.points.size(), 1u) << "the instances behind and beside the view are culled";
+  EXPECT_EQ(f.points[0].instance, 1u);
+  // n = k rho^2 A d / (2 z^3) with z, d at the sphere's near side: 39.5 m.
+  EXPECT_EQ(f.points[0].count, static_cast<std::uint32_t>(std::ceil(2.0f * 256.0f * 256.0f * 2.0f / (2.0f * 39.5f * 39.5f))));
+  EXPECT_TRUE(f.polygons[0].empty());
+}
+
+TEST(ViewSampler, NearInstancesArePolygonsAndTheBandBetweenDrawsBoth) {
+  const SampledMesh mesh{2.0f, 0.5f, 1000, 5000};
+  // Points needed = 131072 / z^2: 4,000 (break-even) at z = 5.7 m.
+  const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, -3.5f}, {0, 0, -6.2f}, {0, 0, -9.5f}})}, {mesh});
+  ASSERT_EQ(f.polygons[0], (std::vector<std::uint32_t>{0, 1}));
+  ASSERT_EQ(f.points.size(), 2u);
+  EXPECT_EQ(f.points[0].instance, 1u) << "in the band the instance is drawn both ways";
+  EXPECT_EQ(f.points[1].instance, 2u);
+  EXPECT_EQ(f.triangle_count, 2000u);
 }
 
 }  // namespace

@@ -5,15 +5,30 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <sstream>
+
 namespace ecoview::gl {
 namespace {
 
+// The embedded source of shaders/<file> with each line `#include "other"` replaced by that file.
+std::string source_of(const std::string& file, int depth = 0) {
+  const auto text = resources::find("shaders/" + file);
+  if (!text || depth > 8) throw RuntimeFailure("shader shaders/" + file + " is not embedded in this binary");
+  std::istringstream lines{std::string(*text)};
+  std::string out, line;
+  while (std::getline(lines, line)) {
+    const std::size_t open = line.rfind("#include \"", 0) == 0 ? line.find('"') : std::string::npos;
+    const std::size_t close = open == std::string::npos ? open : line.find('"', open + 1);
+    out += close == std::string::npos ? line + "\n" : source_of(line.substr(open + 1, close - open - 1), depth + 1);
+  }
+  return out;
+}
+
 Shader compile(GLenum type, const std::string& file) {
-  const auto source = resources::find("shaders/" + file);
-  if (!source) throw RuntimeFailure("shader shaders/" + file + " is not embedded in this binary");
+  const std::string source = source_of(file);
   Shader shader(type);
-  const char* text = source->data();
-  const auto length = static_cast<GLint>(source->size());
+  const char* text = source.data();
+  const auto length = static_cast<GLint>(source.size());
   glShaderSource(shader.name(), 1, &text, &length);
   glCompileShader(shader.name());
   GLint ok = 0;

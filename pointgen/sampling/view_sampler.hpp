@@ -1,0 +1,49 @@
+#pragma once
+#include "pointgen/instance_table.hpp"
+#include "pointgen/sampling/point_count.hpp"
+
+#include <vector>
+
+namespace pointgen {
+
+// What the sampler knows of a mesh whose instances may be drawn as points.
+struct SampledMesh {
+  float area = 0.0f;            // surface area, square metres
+  float radius = 0.0f;          // of a sphere around the origin holding the mesh
+  std::size_t triangles = 0;
+  std::size_t samples = 0;      // length of its surface-sample list
+};
+
+// The view: world → clip, the eye, and the density.
+struct SamplerView {
+  glm::mat4 view_projection{1.0f};
+  glm::vec3 eye{0.0f};
+  glm::vec3 forward{0.0f, 0.0f, -1.0f};
+  PointDensity density;
+  // A point costs about 1 / points_per_triangle of a triangle: an instance needing more points
+  // than points_per_triangle × its triangles is cheaper as polygons.
+  float points_per_triangle = 4.0f;
+};
+
+// One instance drawn as points: the first `count` samples of its mesh.
+struct PointDraw {
+  std::uint32_t table = 0;
+  std::uint32_t instance = 0;
+  std::uint32_t count = 0;
+};
+
+struct SampledFrame {
+  std::vector<PointDraw> points;
+  // Per table, the instances drawn as polygons.
+  std::vector<std::vector<std::uint32_t>> polygons;
+  std::size_t point_count = 0;
+  std::size_t triangle_count = 0;
+};
+
+// For each instance in view: points (as many as the view needs) or polygons, whichever is cheaper.
+// In a band around the break-even an instance is drawn both ways, so the switch shows no pop while
+// every frame stays a function of its own view alone. Instances outside the view are culled.
+SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTable>& tables,
+                         const std::vector<SampledMesh>& meshes);
+
+}  // namespace pointgen
