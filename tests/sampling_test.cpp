@@ -99,7 +99,7 @@ namespace {
 // A camera at the origin looking down -Z with a 90° vertical field of view, square image.
 SamplerView test_view() {
   SamplerView v;
-  v.view_projection = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f);
+  v.views = {glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f)};
   v.density = {256.0f, 2.0f};  // 512 pixels high
   v.points_per_triangle = 4.0f;
   return v;

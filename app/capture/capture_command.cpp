@@ -42,12 +42,9 @@ CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
                                       "default scene)");
   cmd->add_option("--path", o.path, "Camera path JSON file, or the name of a shipped path; without one every "
                                     "frame uses the scene's camera");
-  cmd->add_option("--method", o.method, "Shadow method: uniform (focused uniform shadow map) or none")
-      ->capture_default_str();
+  add_render_options(*cmd, o.render);
   cmd->add_option("--backend", o.backend, "GL context: egl (default; GPU device or Mesa surfaceless) or osmesa")
       ->capture_default_str();
-  cmd->add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
-  cmd->add_option("--shadow-size", o.shadow_size, "Shadow map size in texels (square)")->capture_default_str();
   cmd->add_option("--frames", o.frames, "Frames A:B renders frames A to B-1 (default: the whole path at --fps, "
                                         "or frame 0 without a path)");
   cmd->add_option("--fps", o.fps, "Frames per second: frame i is at time i / fps")->capture_default_str();
@@ -63,8 +60,7 @@ CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
 
 int run_capture(const CaptureOptions& o) {
   // Check every input before any file is written.
-  const glm::ivec2 size = parse_size(o.size);
-  const RenderSettings settings{size.x, size.y, check_shadow_size(o.shadow_size), parse_shadow_method(o.method)};
+  const RenderSettings settings = render_settings(o.render);
   const double fps = check_fps(o.fps);
   const std::vector<Aov> aovs = parse_aov_list(o.aov);
   if (o.backend != "egl" && o.backend != "osmesa") {
@@ -115,6 +111,7 @@ int run_capture(const CaptureOptions& o) {
   progress.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << "capture: wrote " << todo.size() << " frame(s) to " << o.out;
+  std::cout << "; the last drew " << renderer.stats().points << " points and " << renderer.stats().triangles << " triangles";
   if (static_cast<int>(todo.size()) < total) std::cout << " (" << total - static_cast<int>(todo.size()) << " already there)";
   std::printf(" in %.1f s on %s\n", seconds, context->description().c_str());
   return 0;

@@ -1,4 +1,6 @@
 #pragma once
+#include "app/cli/options.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -8,10 +10,8 @@ namespace ecoview {
 struct CaptureOptions {
   std::string scene;
   std::string path;
-  std::string method = "uniform";
+  RenderOptions render;
   std::string backend = "egl";
-  std::string size = "1280x720";
-  int shadow_size = 2048;
   std::string frames;
   double fps = 30.0;
   std::string aov = "color";

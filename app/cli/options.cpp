@@ -39,6 +39,35 @@ int check_shadow_size(int size) {
   return size;
 }
 
+void add_render_options(CLI::App& command, RenderOptions& o) {
+  command.add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
+  command.add_option("--shadow-size", o.shadow_size, "Shadow map size in texels (square)")->capture_default_str();
+  command.add_option("--method", o.method, "Shadow method: uniform (focused uniform shadow map) or none")
+      ->capture_default_str();
+  command.add_option("--geometry", o.geometry, "points: far plants, people and animals as view-adaptive point "
+                                               "splats; polygons: everything as polygons")->capture_default_str();
+  command.add_option("--k", o.k, "Point density: points per pixel of projected surface")->capture_default_str();
+  command.add_option("--splat", o.splat, "Splat size in pixels (per side)")->capture_default_str();
+}
+
+RenderSettings render_settings(const RenderOptions& o) {
+  const glm::ivec2 size = parse_size(o.size);
+  RenderSettings settings;
+  settings.width = size.x;
+  settings.height = size.y;
+  settings.shadow_size = check_shadow_size(o.shadow_size);
+  settings.method = parse_shadow_method(o.method);
+  if (o.geometry != "points" && o.geometry != "polygons") {
+    throw InputError("--geometry: expected points or polygons, got '" + o.geometry + "'");
+  }
+  settings.points = o.geometry == "points";
+  if (!std::isfinite(o.k) || o.k <= 0.0 || o.k > 1000.0) throw InputError("--k: must be above 0 and at most 1000");
+  settings.k = static_cast<float>(o.k);
+  if (o.splat < 1 || o.splat > 16) throw InputError("--splat: must be between 1 and 16 pixels");
+  settings.splat_size = o.splat;
+  return settings;
+}
+
 double check_fps(double fps) {
   if (!std::isfinite(fps) || fps <= 0.0 || fps > 10000.0) {
     throw InputError("--fps: must be a number above 0 and at most 10000");

@@ -1,5 +1,8 @@
 #pragma once
+#include "app/render/renderer.hpp"
 #include "app/scene/scene.hpp"
+
+#include <CLI/CLI.hpp>
 
 #include <glm/glm.hpp>
 
@@ -18,6 +21,20 @@ struct FrameRange {
 FrameRange parse_frames(const std::string& text);  // "A:B", frames A … B-1
 
 int check_shadow_size(int size);
+
+// The rendering options capture and view share: --size, --shadow-size, --method, --geometry,
+// --k, --splat.
+struct RenderOptions {
+  std::string size = "1280x720";
+  int shadow_size = 2048;
+  std::string method = "uniform";
+  std::string geometry = "points";
+  double k = 1.5;
+  int splat = 1;
+};
+void add_render_options(CLI::App& command, RenderOptions& options);
+// Validated settings; throws InputError naming the option.
+RenderSettings render_settings(const RenderOptions& options);
 double check_fps(double fps);
 
 // The scene named by --scene (a file or a shipped scene; the default scene when empty), refused

@@ -13,9 +13,7 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
   CLI::App* cmd = app.add_subcommand("view", "Show a scene in a window (the scene's camera; flight controls "
                                              "are still to come)");
   cmd->add_option("--scene", o.scene, "Scene JSON file, or the name of a shipped scene");
-  cmd->add_option("--method", o.method, "Shadow method: uniform or none")->capture_default_str();
-  cmd->add_option("--size", o.size, "Window size WIDTHxHEIGHT")->capture_default_str();
-  cmd->add_option("--shadow-size", o.shadow_size, "Shadow map size in texels")->capture_default_str();
+  add_render_options(*cmd, o.render);
   cmd->add_option("--light", o.light, "Index of the scene light that shines and casts shadows")->capture_default_str();
   cmd->add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes that would need more memory than this, in GiB")
       ->capture_default_str();
@@ -24,13 +22,12 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
 }
 
 int run_view(const ViewOptions& o) {
-  const glm::ivec2 size = parse_size(o.size);
-  const RenderSettings settings{size.x, size.y, check_shadow_size(o.shadow_size), parse_shadow_method(o.method)};
+  const RenderSettings settings = render_settings(o.render);
   if (o.exit_after < 0) throw InputError("--exit-after: must be 0 or more");
   const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
   const shadow::Light& light = select_light(scene, o.light);
 
-  GlfwWindow window(size.x, size.y, "ecoview — " + scene.name);
+  GlfwWindow window(settings.width, settings.height, "ecoview — " + scene.name);
   Renderer renderer(scene, settings);
   const auto start = std::chrono::steady_clock::now();
   for (int frame = 0; !window.should_close() && (o.exit_after == 0 || frame < o.exit_after); ++frame) {

@@ -1,4 +1,6 @@
 #pragma once
+#include "app/cli/options.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -7,9 +9,7 @@ namespace ecoview {
 
 struct ViewOptions {
   std::string scene;
-  std::string method = "uniform";
-  std::string size = "1280x720";
-  int shadow_size = 2048;
+  RenderOptions render;
   int light = 0;
   int exit_after = 0;
   double memory_budget_gib = 4.0;  // frames; 0 runs until the window is closed

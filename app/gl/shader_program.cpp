@@ -41,25 +41,32 @@ Shader compile(GLenum type, const std::string& file) {
   return shader;
 }
 
-}  // namespace
-
-Program build_program(const std::string& vertex, const std::string& fragment) {
-  const Shader vs = compile(GL_VERTEX_SHADER, vertex);
-  const Shader fs = compile(GL_FRAGMENT_SHADER, fragment);
+Program link(std::initializer_list<const Shader*> shaders, const std::string& names) {
   Program program;
-  glAttachShader(program.name(), vs.name());
-  glAttachShader(program.name(), fs.name());
+  for (const Shader* shader : shaders) glAttachShader(program.name(), shader->name());
   glLinkProgram(program.name());
   GLint ok = 0;
   glGetProgramiv(program.name(), GL_LINK_STATUS, &ok);
   if (!ok) {
     char log[2048] = {};
     glGetProgramInfoLog(program.name(), sizeof log, nullptr, log);
-    throw RuntimeFailure("shaders " + vertex + " + " + fragment + " do not link: " + log);
+    throw RuntimeFailure("shaders " + names + " do not link: " + log);
   }
-  glDetachShader(program.name(), vs.name());
-  glDetachShader(program.name(), fs.name());
+  for (const Shader* shader : shaders) glDetachShader(program.name(), shader->name());
   return program;
+}
+
+}  // namespace
+
+Program build_program(const std::string& vertex, const std::string& fragment) {
+  const Shader vs = compile(GL_VERTEX_SHADER, vertex);
+  const Shader fs = compile(GL_FRAGMENT_SHADER, fragment);
+  return link({&vs, &fs}, vertex + " + " + fragment);
+}
+
+Program build_compute_program(const std::string& compute) {
+  const Shader cs = compile(GL_COMPUTE_SHADER, compute);
+  return link({&cs}, compute);
 }
 
 void set_uniform(const Program& program, const char* name, const glm::mat4& value) {
@@ -74,6 +81,12 @@ void set_uniform(const Program& program, const char* name, float value) {
 }
 void set_uniform(const Program& program, const char* name, int value) {
   glProgramUniform1i(program.name(), glGetUniformLocation(program.name(), name), value);
+}
+void set_uniform(const Program& program, const char* name, unsigned value) {
+  glProgramUniform1ui(program.name(), glGetUniformLocation(program.name(), name), value);
+}
+void set_uniform(const Program& program, const char* name, const glm::ivec2& value) {
+  glProgramUniform2i(program.name(), glGetUniformLocation(program.name(), name), value.x, value.y);
 }
 
 }  // namespace ecoview::gl

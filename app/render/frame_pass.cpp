@@ -14,7 +14,10 @@ const glm::vec3 sky_color(0.62f, 0.74f, 0.86f);  // sRGB
 }  // namespace
 
 FramePass::FramePass(int width, int height)
-    : width_(width), height_(height), program_(gl::build_program("frame.vert", "frame.frag")) {
+    : width_(width),
+      height_(height),
+      program_(gl::build_program("frame.vert", "frame.frag")),
+      point_program_(gl::build_program("fullscreen.vert", "point_shade.frag")) {
   glTextureStorage2D(color_.name(), 1, GL_RGBA8, width, height);
   glTextureStorage2D(visibility_.name(), 1, GL_R8, width, height);
   glTextureStorage2D(depth_.name(), 1, GL_R32F, width, height);
@@ -45,27 +48,47 @@ void FramePass::render(const GpuScene& scene, const shadow::Camera& camera, cons
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
 
-  const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
   glUseProgram(program_.name());
-  gl::set_uniform(program_, "view", camera.view());
-  gl::set_uniform(program_, "view_projection", camera.projection(aspect) * camera.view());
-  gl::set_uniform(program_, "camera_position", camera.position);
-  gl::set_uniform(program_, "light_type", static_cast<int>(light.type));
-  gl::set_uniform(program_, "light_position", light.position);
-  gl::set_uniform(program_, "light_direction", glm::normalize(light.direction));
-  gl::set_uniform(program_, "spot_cos_cone", std::cos(glm::radians(light.cone_deg)));
-  gl::set_uniform(program_, "shadows_enabled", shadow_map ? 1 : 0);
+  set_lighting(program_, camera, light, shadow_map);
+  scene.draw();
+}
+
+void FramePass::shade_points(const PointSplat& points, const shadow::Camera& camera, const shadow::Light& light,
+                             const std::optional<ShadowLookup>& shadow_map) const {
+  if (points.point_count() == 0) return;
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.name());
+  glViewport(0, 0, width_, height_);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glUseProgram(point_program_.name());
+  set_lighting(point_program_, camera, light, shadow_map);
+  points.bind_for(point_program_);
+  glBindVertexArray(empty_vertex_array_.name());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+}
+
+void FramePass::set_lighting(const gl::Program& program, const shadow::Camera& camera, const shadow::Light& light,
+                             const std::optional<ShadowLookup>& shadow_map) const {
+  const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+  gl::set_uniform(program, "view", camera.view());
+  gl::set_uniform(program, "view_projection", camera.projection(aspect) * camera.view());
+  gl::set_uniform(program, "camera_position", camera.position);
+  gl::set_uniform(program, "light_type", static_cast<int>(light.type));
+  gl::set_uniform(program, "light_position", light.position);
+  gl::set_uniform(program, "light_direction", glm::normalize(light.direction));
+  gl::set_uniform(program, "spot_cos_cone", std::cos(glm::radians(light.cone_deg)));
+  gl::set_uniform(program, "shadows_enabled", shadow_map ? 1 : 0);
   if (shadow_map) {
     const shadow::ShadowSetup& setup = shadow_map->setup;
-    gl::set_uniform(program_, "shadow_selection", static_cast<int>(setup.selection));
+    gl::set_uniform(program, "shadow_selection", static_cast<int>(setup.selection));
     for (std::size_t i = 0; i < setup.views.size(); ++i) {
       const std::string name = "shadow_matrices[" + std::to_string(i) + "]";
-      gl::set_uniform(program_, name.c_str(), setup.views[i].view_projection());
+      gl::set_uniform(program, name.c_str(), setup.views[i].view_projection());
     }
-    gl::set_uniform(program_, "shadow_size", static_cast<float>(shadow_map->size));
+    gl::set_uniform(program, "shadow_size", static_cast<float>(shadow_map->size));
     glBindTextureUnit(0, shadow_map->depth_texture);
   }
-  scene.draw();
 }
 
 template <class Sample>

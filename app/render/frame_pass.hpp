@@ -2,6 +2,7 @@
 #include "app/gl/gl_objects.hpp"
 #include "app/render/gpu_scene.hpp"
 #include "app/render/image.hpp"
+#include "app/render/point_splat.hpp"
 #include "shadow/camera.hpp"
 #include "shadow/light.hpp"
 #include "shadow/shadow_setup.hpp"
@@ -25,6 +26,10 @@ class FramePass {
   };
   void render(const GpuScene& scene, const shadow::Camera& camera, const shadow::Light& light,
               const std::optional<ShadowLookup>& shadow_map) const;
+  // Shades the nearest splatted point of each pixel into the frame, depth-tested against the
+  // polygons render() drew.
+  void shade_points(const PointSplat& points, const shadow::Camera& camera, const shadow::Light& light,
+                    const std::optional<ShadowLookup>& shadow_map) const;
 
   Image8 read_color() const;
   Image8 read_visibility() const;
@@ -39,6 +44,8 @@ class FramePass {
  private:
   template <class Sample>
   Image<Sample> read(GLenum attachment, int channels, GLenum format, GLenum type) const;
+  void set_lighting(const gl::Program& program, const shadow::Camera& camera, const shadow::Light& light,
+                    const std::optional<ShadowLookup>& shadow_map) const;
 
   int width_, height_;
   gl::Texture color_{GL_TEXTURE_2D};
@@ -47,6 +54,8 @@ class FramePass {
   gl::Texture depth_buffer_{GL_TEXTURE_2D};
   gl::Framebuffer framebuffer_;
   gl::Program program_;
+  gl::Program point_program_;
+  gl::VertexArray empty_vertex_array_;  // for the fullscreen triangle, which has no attributes
 };
 
 }  // namespace ecoview

@@ -1,5 +1,7 @@
 #include "app/render/gpu_scene.hpp"
 
+#include <algorithm>
+
 namespace ecoview {
 namespace {
 
@@ -55,6 +57,7 @@ GpuScene::GpuScene(const Scene& scene) {
     upload(g.instances, instances, GL_DYNAMIC_STORAGE_BIT);
     g.index_count = mesh.index_count;
     g.instance_count = static_cast<GLsizei>(instances.size());
+    g.capacity = instances.size();
     triangles_ += static_cast<std::size_t>(mesh.index_count / 3) * instances.size();
 
     const GLuint vao = g.vertex_array.name();
@@ -72,13 +75,16 @@ GpuScene::GpuScene(const Scene& scene) {
 }
 
 void GpuScene::update(std::size_t group, const pointgen::InstanceTable& table) {
+  Group& g = groups_[group];
   const std::vector<Instance> instances = instances_of(table);
-  glNamedBufferSubData(groups_[group].instances.name(), 0, static_cast<GLsizeiptr>(instances.size() * sizeof(Instance)),
+  g.instance_count = static_cast<GLsizei>(std::min(instances.size(), g.capacity));
+  glNamedBufferSubData(g.instances.name(), 0, static_cast<GLsizeiptr>(static_cast<std::size_t>(g.instance_count) * sizeof(Instance)),
                        instances.data());
 }
 
 void GpuScene::draw() const {
   for (const Group& group : groups_) {
+    if (group.instance_count == 0) continue;
     glBindVertexArray(group.vertex_array.name());
     glDrawElementsInstanced(GL_TRIANGLES, group.index_count, GL_UNSIGNED_INT, nullptr, group.instance_count);
   }

@@ -13,7 +13,8 @@ class GpuScene {
  public:
   explicit GpuScene(const Scene& scene);
   void draw() const;
-  // Replaces the instances of a group with `table`, which has as many.
+  // Replaces the instances of a group with `table`, which has at most as many as the scene's
+  // group: posed moving objects, or the subset a pass draws as polygons.
   void update(std::size_t group, const pointgen::InstanceTable& table);
   std::size_t triangles_per_draw() const { return triangles_; }
 
@@ -27,7 +28,8 @@ class GpuScene {
     gl::VertexArray vertex_array;
     gl::Buffer instances;
     GLsizei index_count = 0;
-    GLsizei instance_count = 0;
+    GLsizei instance_count = 0;  // drawn
+    std::size_t capacity = 0;
   };
   std::vector<Mesh> meshes_;
   std::vector<Group> groups_;

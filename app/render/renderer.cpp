@@ -3,7 +3,15 @@
 #include "app/errors.hpp"
 #include "shadow/uniform_map.hpp"
 
+#include <cmath>
+
 namespace ecoview {
+namespace {
+
+// Window-depth offset of point splats in shadow maps, against self-shadowing of point surfaces.
+constexpr float shadow_point_bias = 2e-5f;
+
+}  // namespace
 
 ShadowMethod parse_shadow_method(const std::string& name) {
   if (name == "uniform") return ShadowMethod::uniform;
@@ -15,23 +23,86 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
     : scene_(scene),
       settings_(settings),
       scene_bounds_(scene.bounds()),
+      tables_(scene.groups),
       gpu_scene_(scene),
+      samples_(scene, settings.points_per_triangle),
       shadow_pass_(settings.shadow_size),
-      frame_pass_(settings.width, settings.height) {}
+      frame_pass_(settings.width, settings.height),
+      frame_points_({settings.width, settings.height}) {}
+
+pointgen::SamplerView Renderer::sampler_view(const shadow::Camera& camera, std::vector<glm::mat4> views) const {
+  const float aspect = static_cast<float>(settings_.width) / static_cast<float>(settings_.height);
+  const float tan_half = std::tan(glm::radians(camera.fov_y_deg) / 2.0f);
+  pointgen::SamplerView view;
+  view.views = std::move(views);
+  view.eye = camera.position;
+  view.forward = camera.forward();
+  view.edge_cos = 1.0f / std::sqrt(1.0f + tan_half * tan_half * (1.0f + aspect * aspect));
+  view.density = {0.5f * static_cast<float>(settings_.height) / tan_half, settings_.k};
+  view.points_per_triangle = settings_.points_per_triangle;
+  return view;
+}
+
+void Renderer::upload_polygons(const pointgen::SampledFrame& selection) {
+  for (std::size_t g = 0; g < tables_.size(); ++g) {
+    if (!scene_.point_meshes[tables_[g].mesh]) continue;
+    const pointgen::InstanceTable& all = tables_[g];
+    pointgen::InstanceTable drawn{all.mesh, {}, {}, {}};
+    for (std::uint32_t i : selection.polygons[g]) drawn.add(all.transforms[i], all.tints[i], all.seeds[i]);
+    gpu_scene_.update(g, drawn);
+  }
+}
+
+void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Light& light) {
+  const float aspect = static_cast<float>(settings_.width) / static_cast<float>(settings_.height);
+  setup_ = shadow::focused_uniform_map(camera, aspect, light, scene_bounds_, settings_.shadow_size);
+  if (!settings_.points) {
+    shadow_pass_.render(gpu_scene_, setup_);
+    return;
+  }
+  std::vector<glm::mat4> views;
+  for (const shadow::ShadowView& v : setup_.views) views.push_back(v.view_projection());
+  const pointgen::SampledFrame selection = pointgen::sample_view(sampler_view(camera, views), tables_, samples_.meshes());
+  upload_polygons(selection);
+  shadow_pass_.render(gpu_scene_, setup_);
+  if (!shadow_points_) shadow_points_ = std::make_unique<PointSplat>(glm::ivec2(settings_.shadow_size));
+  shadow_points_->upload(selection.points, tables_, samples_);
+  for (std::size_t layer = 0; layer < views.size(); ++layer) {
+    shadow_points_->splat(views[layer], settings_.shadow_splat_size, shadow_point_bias, false);
+    shadow_pass_.add_points(*shadow_points_, static_cast<int>(layer));
+  }
+}
 
 void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, double t) {
   for (const Animation& animation : scene_.animations) {
-    const std::vector<pointgen::InstanceTable> tables = animation.set.pose(t, animation.first_mesh);
-    for (std::size_t i = 0; i < tables.size(); ++i) gpu_scene_.update(animation.first_group + i, tables[i]);
+    std::vector<pointgen::InstanceTable> posed = animation.set.pose(t, animation.first_mesh);
+    for (std::size_t i = 0; i < posed.size(); ++i) {
+      const std::size_t group = animation.first_group + i;
+      tables_[group] = std::move(posed[i]);
+      if (!scene_.point_meshes[tables_[group].mesh]) gpu_scene_.update(group, tables_[group]);
+    }
   }
   std::optional<FramePass::ShadowLookup> lookup;
   if (settings_.method == ShadowMethod::uniform) {
-    const float aspect = static_cast<float>(settings_.width) / static_cast<float>(settings_.height);
-    setup_ = shadow::focused_uniform_map(camera, aspect, light, scene_bounds_, settings_.shadow_size);
-    shadow_pass_.render(gpu_scene_, setup_);
+    render_shadow_map(camera, light);
     lookup.emplace(FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size()});
   }
+  stats_ = {};
+  if (!settings_.points) {
+    frame_pass_.render(gpu_scene_, camera, light, lookup);
+    stats_.triangles = scene_.triangle_count();
+    return;
+  }
+  const float aspect = static_cast<float>(settings_.width) / static_cast<float>(settings_.height);
+  const glm::mat4 view_projection = camera.projection(aspect) * camera.view();
+  const pointgen::SampledFrame selection = pointgen::sample_view(sampler_view(camera, {view_projection}), tables_, samples_.meshes());
+  upload_polygons(selection);
   frame_pass_.render(gpu_scene_, camera, light, lookup);
+  frame_points_.upload(selection.points, tables_, samples_);
+  frame_points_.splat(view_projection, settings_.splat_size, 0.0f, true);
+  frame_pass_.shade_points(frame_points_, camera, light, lookup);
+  stats_.points = selection.point_count;
+  stats_.triangles = selection.triangle_count;
 }
 
 }  // namespace ecoview

@@ -1,8 +1,12 @@
 #pragma once
 #include "app/render/frame_pass.hpp"
 #include "app/render/gpu_scene.hpp"
+#include "app/render/point_samples.hpp"
+#include "app/render/point_splat.hpp"
 #include "app/render/shadow_pass.hpp"
+#include "pointgen/sampling/view_sampler.hpp"
 
+#include <memory>
 #include <string>
 
 namespace ecoview {
@@ -17,25 +21,47 @@ struct RenderSettings {
   int height = 720;
   int shadow_size = 2048;
   ShadowMethod method = ShadowMethod::uniform;
+  bool points = true;       // far plants, people and animals as point splats; false: all polygons
+  float k = 1.5f;           // points per pixel of projected surface (docs/point_density.md)
+  int splat_size = 1;       // pixels per side of one point's splat in the frame
+  int shadow_splat_size = 2;  // texels per side in the shadow map
+  float points_per_triangle = 4.0f;  // a point costs 1/this of a triangle (the point-or-polygon choice)
 };
 
-// One frame of a scene: the shadow pass for the chosen method, then the frame pass. Needs a
-// current GL context.
+// What a frame drew.
+struct FrameStats {
+  std::size_t points = 0;
+  std::size_t triangles = 0;
+};
+
+// One frame of a scene: the shadow pass for the chosen method, then the frame pass; with points
+// on, both passes draw far instances of point meshes as splats. Needs a current GL context.
 class Renderer {
  public:
   Renderer(const Scene& scene, const RenderSettings& settings);
   // The frame at time t (seconds): moving objects are posed for t first.
   void render(const shadow::Camera& camera, const shadow::Light& light, double t = 0.0);
   const FramePass& frame() const { return frame_pass_; }
+  const FrameStats& stats() const { return stats_; }
 
  private:
+  pointgen::SamplerView sampler_view(const shadow::Camera& camera, std::vector<glm::mat4> views) const;
+  // Loads the GPU instance buffers of point meshes with the instances `selection` draws as polygons.
+  void upload_polygons(const pointgen::SampledFrame& selection);
+  void render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
+
   const Scene& scene_;
   RenderSettings settings_;
   shadow::Box scene_bounds_;
+  std::vector<pointgen::InstanceTable> tables_;  // the scene's groups, moving ones posed for this frame
   GpuScene gpu_scene_;
+  PointSamples samples_;
   ShadowPass shadow_pass_;
-  shadow::ShadowSetup setup_;  // of the last frame
   FramePass frame_pass_;
+  PointSplat frame_points_;
+  std::unique_ptr<PointSplat> shadow_points_;  // made with the first shadow map that needs it
+  shadow::ShadowSetup setup_;  // of the last frame
+  FrameStats stats_;
 };
 
 }  // namespace ecoview

@@ -12,7 +12,10 @@ constexpr float offset_units = 4.0f;
 
 }  // namespace
 
-ShadowPass::ShadowPass(int size) : size_(size), program_(gl::build_program("shadow_depth.vert", "shadow_depth.frag")) {
+ShadowPass::ShadowPass(int size)
+    : size_(size),
+      program_(gl::build_program("shadow_depth.vert", "shadow_depth.frag")),
+      point_program_(gl::build_program("fullscreen.vert", "point_shadow.frag")) {
   allocate(1);
 }
 
@@ -54,6 +57,25 @@ void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup)
     scene.draw();
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+}  // namespace ecoview
+
+namespace ecoview {
+
+void ShadowPass::add_points(const PointSplat& points, int layer) const {
+  if (points.point_count() == 0) return;
+  const GLuint fb = framebuffer_.name();
+  glNamedFramebufferTextureLayer(fb, GL_DEPTH_ATTACHMENT, depth_.name(), 0, layer);
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  glViewport(0, 0, size_, size_);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glUseProgram(point_program_.name());
+  points.bind_for(point_program_);
+  glBindVertexArray(empty_vertex_array_.name());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
 }
 
 }  // namespace ecoview

@@ -1,6 +1,7 @@
 #pragma once
 #include "app/gl/gl_objects.hpp"
 #include "app/render/gpu_scene.hpp"
+#include "app/render/point_splat.hpp"
 #include "shadow/shadow_setup.hpp"
 
 namespace ecoview {
@@ -12,6 +13,9 @@ class ShadowPass {
  public:
   explicit ShadowPass(int size);
   void render(const GpuScene& scene, const shadow::ShadowSetup& setup);
+  // Adds splatted point depths (a PointSplat of size x size) to one layer, depth-tested against
+  // what render() drew there.
+  void add_points(const PointSplat& points, int layer) const;
   GLuint depth_texture() const { return depth_.name(); }
   int size() const { return size_; }
 
@@ -23,6 +27,8 @@ class ShadowPass {
   gl::Texture depth_{GL_TEXTURE_2D_ARRAY};
   gl::Framebuffer framebuffer_;
   gl::Program program_;
+  gl::Program point_program_;
+  gl::VertexArray empty_vertex_array_;
 };
 
 }  // namespace ecoview

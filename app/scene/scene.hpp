@@ -25,6 +25,9 @@ struct Scene {
   shadow::Camera camera;
   std::vector<shadow::Light> lights;
   std::vector<pointgen::TriangleMesh> meshes;
+  // Meshes whose far instances are drawn as point samples (plants, people, animals); the others
+  // (ground, buildings, vehicles, primitives) are always polygons.
+  std::vector<bool> point_meshes;
   std::vector<pointgen::InstanceTable> groups;  // each drawn with one instanced call; moving ones posed at t = 0
   std::vector<Animation> animations;
 

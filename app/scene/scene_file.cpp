@@ -16,6 +16,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cstdio>
+#include <algorithm>
 #include <map>
 
 namespace ecoview {
@@ -124,6 +125,7 @@ class SceneBuilder {
     const glm::vec3 color = object.has("color") ? srgb_to_linear(object["color"].color()) : glm::vec3(1.0f);
     scene_.meshes.push_back(pointgen::build_plant(species, pointgen::derive_seed(seed_, seed)));
     const std::size_t mesh = scene_.meshes.size() - 1;
+    mark_point_meshes(mesh, mesh + 1);
     for (const JsonField& p : object["positions"].items(1)) {
       add_instance(mesh, glm::scale(glm::translate(glm::mat4(1.0f), p.vec3()), glm::vec3(scale)), color);
     }
@@ -135,6 +137,7 @@ class SceneBuilder {
     pointgen::Ecosystem eco = pointgen::grow_ecosystem(spec);
     const std::size_t first = scene_.meshes.size();
     for (pointgen::TriangleMesh& mesh : eco.meshes) scene_.meshes.push_back(std::move(mesh));
+    mark_point_meshes(first + 1, scene_.meshes.size());  // the plants; the terrain (first) stays polygons
     const float base = object.has("center") ? object["center"].vec3().y : 0.0f;
     for (pointgen::InstanceTable& table : eco.tables) {
       if (table.size() == 0) continue;
@@ -160,6 +163,11 @@ class SceneBuilder {
   void add_moving_set(pointgen::MovingSet set) {
     const std::size_t first_mesh = scene_.meshes.size();
     for (pointgen::TriangleMesh& mesh : set.part_meshes()) scene_.meshes.push_back(std::move(mesh));
+    std::size_t mesh = first_mesh;
+    for (const pointgen::Body& body : set.bodies) {
+      if (body.as_points) mark_point_meshes(mesh, mesh + body.parts.size());
+      mesh += body.parts.size();
+    }
     const std::size_t first_group = scene_.groups.size();
     for (pointgen::InstanceTable& table : set.pose(0.0, first_mesh)) scene_.groups.push_back(std::move(table));
     scene_.animations.push_back({std::move(set), first_group, first_mesh});
@@ -167,6 +175,12 @@ class SceneBuilder {
 
   // A mover's part records (table rows and GPU instances), about.
   static constexpr double bytes_per_mover = 10 * (84 + 128);
+
+  void mark_point_meshes(std::size_t begin, std::size_t end) {
+    scene_.point_meshes.resize(scene_.meshes.size(), false);
+    std::fill(scene_.point_meshes.begin() + static_cast<std::ptrdiff_t>(begin),
+              scene_.point_meshes.begin() + static_cast<std::ptrdiff_t>(end), true);
+  }
 
   void reserve_memory(const JsonField& object, double bytes) {
     reserved_bytes_ += bytes;
@@ -242,6 +256,7 @@ Scene load_scene(const InputSource& source, const LoadLimits& limits) {
   const auto seed = root.has("seed") ? static_cast<std::uint64_t>(root["seed"].integer(0, 2147483647)) : 1u;
   SceneBuilder builder(scene, source, seed, limits);
   for (const JsonField& object : root["objects"].items(1)) builder.add_object(object);
+  scene.point_meshes.resize(scene.meshes.size(), false);
   return scene;
 }
 

@@ -27,7 +27,7 @@ BodyPart part(const std::function<void(MeshBuilder&)>& build, int color_slot, Pa
 }  // namespace
 
 Body make_person() {
-  Body body{"person", {}, 1.4f, 1.0f};
+  Body body{"person", {}, 1.4f, 1.0f, true};
   for (float side : {-1.0f, 1.0f}) {
     const glm::vec3 hip(0.1f * side, 0.92f, 0.0f);
     body.parts.push_back(part([&](MeshBuilder& b) { b.tube(hip, {0.1f * side, 0.04f, 0.0f}, 0.075f, 0.06f, 6, white, true); },
@@ -44,7 +44,7 @@ Body make_person() {
 }
 
 Body make_cow() {
-  Body body{"cow", {}, 1.6f, 1.6f};
+  Body body{"cow", {}, 1.6f, 1.6f, true};
   body.parts.push_back(part([](MeshBuilder& b) {
     b.ellipsoid(placed({0.0f, 1.0f, 0.0f}, {0.36f, 0.4f, 0.9f}), white, 10, 6);
     b.ellipsoid(placed({0.0f, 1.12f, 1.05f}, {0.17f, 0.2f, 0.32f}), white, 8, 5);

@@ -29,6 +29,7 @@ struct Body {
   std::vector<BodyPart> parts;
   float stride = 1.5f;
   float radius = 1.0f;  // of a sphere around the origin holding every pose, for bounds
+  bool as_points = false;  // living bodies become point samples when far; vehicles stay polygons
 };
 
 Body make_person();

@@ -24,7 +24,8 @@ std::array<glm::vec4, 6> frustum_planes(const glm::mat4& m) {
 
 SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTable>& tables,
                          const std::vector<SampledMesh>& meshes) {
-  const std::array<glm::vec4, 6> planes = frustum_planes(view.view_projection);
+  std::vector<std::array<glm::vec4, 6>> frusta;
+  for (const glm::mat4& m : view.views) frusta.push_back(frustum_planes(m));
   SampledFrame frame;
   frame.polygons.resize(tables.size());
   for (std::size_t t = 0; t < tables.size(); ++t) {
@@ -35,11 +36,12 @@ SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTabl
       const glm::vec3 center(m[3]);
       const float scale = std::cbrt(std::abs(glm::determinant(glm::mat3(m))));
       const float radius = mesh.radius * scale;
-      bool visible = true;
-      for (const glm::vec4& p : planes) visible = visible && glm::dot(glm::vec3(p), center) + p.w >= -radius;
+      const bool visible = std::any_of(frusta.begin(), frusta.end(), [&](const std::array<glm::vec4, 6>& planes) {
+        return std::all_of(planes.begin(), planes.end(), [&](const glm::vec4& p) { return glm::dot(glm::vec3(p), center) + p.w >= -radius; });
+      });
       if (!visible) continue;
       const float distance = std::max(glm::distance(view.eye, center) - radius, 1e-3f);
-      const float depth = std::max(glm::dot(center - view.eye, view.forward) - radius, 1e-3f);
+      const float depth = std::max(glm::dot(center - view.eye, view.forward) - radius, distance * view.edge_cos);
       const float needed = points_needed(view.density, mesh.area * scale * scale, std::min(depth, distance), distance);
       const float polygon_equivalent = view.points_per_triangle * static_cast<float>(mesh.triangles);
       const float ratio = needed / polygon_equivalent;

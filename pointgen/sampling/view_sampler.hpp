@@ -14,11 +14,16 @@ struct SampledMesh {
   std::size_t samples = 0;      // length of its surface-sample list
 };
 
-// The view: world → clip, the eye, and the density.
+// The view: what to cull against, the eye, and the density.
 struct SamplerView {
-  glm::mat4 view_projection{1.0f};
+  // World → clip matrices: an instance is kept when it is inside any of them (the camera's for a
+  // frame; a shadow map's views for its pass).
+  std::vector<glm::mat4> views{glm::mat4(1.0f)};
   glm::vec3 eye{0.0f};
   glm::vec3 forward{0.0f, 0.0f, -1.0f};
+  // Counts use the view depth, but at least distance × edge_cos (the cosine of the angle from the
+  // view axis to the image corner), so casters outside the camera's view get sensible counts.
+  float edge_cos = 0.5f;
   PointDensity density;
   // A point costs about 1 / points_per_triangle of a triangle: an instance needing more points
   // than points_per_triangle × its triangles is cheaper as polygons.

@@ -1,0 +1,53 @@
+#include "app/render/point_samples.hpp"
+
+#include "pointgen/random.hpp"
+#include "pointgen/sampling/surface_samples.hpp"
+
+#include <cmath>
+
+namespace ecoview {
+namespace {
+
+// Longest sample list of one mesh; an instance needing more is drawn as polygons.
+constexpr std::size_t max_samples = 1u << 17;
+
+void upload(const gl::Buffer& buffer, const std::vector<glm::vec4>& data) {
+  glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(std::max<std::size_t>(data.size(), 1) * sizeof(glm::vec4)),
+                       data.empty() ? nullptr : data.data(), 0);
+}
+
+}  // namespace
+
+PointSamples::PointSamples(const Scene& scene, float points_per_triangle) {
+  std::vector<glm::vec4> positions, normals, colors;
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+    const pointgen::TriangleMesh& mesh = scene.meshes[m];
+    const pointgen::Bounds b = mesh.bounds();
+    pointgen::SampledMesh info;
+    info.area = pointgen::surface_area(mesh);
+    info.radius = b.empty() ? 0.0f : glm::max(glm::length(b.min), glm::length(b.max));
+    info.triangles = mesh.triangle_count();
+    first_.push_back(static_cast<std::uint32_t>(positions.size()));
+    if (scene.point_meshes[m]) {
+      // Enough for the top of the band in which an instance is drawn both ways.
+      info.samples = std::min(max_samples, static_cast<std::size_t>(std::ceil(1.3f * points_per_triangle * static_cast<float>(info.triangles))));
+      for (const pointgen::SurfaceSample& s : pointgen::sample_surface(mesh, info.samples, pointgen::derive_seed(0x5a3, m))) {
+        positions.emplace_back(s.position, 1.0f);
+        normals.emplace_back(s.normal, 0.0f);
+        colors.emplace_back(s.color, 1.0f);
+      }
+    }
+    meshes_.push_back(info);
+  }
+  upload(positions_, positions);
+  upload(normals_, normals);
+  upload(colors_, colors);
+}
+
+void PointSamples::bind(GLuint positions, GLuint normals, GLuint colors) const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, positions, positions_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, normals, normals_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, colors, colors_.name());
+}
+
+}  // namespace ecoview

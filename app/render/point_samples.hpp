@@ -1,0 +1,27 @@
+#pragma once
+#include "app/gl/gl_objects.hpp"
+#include "app/scene/scene.hpp"
+#include "pointgen/sampling/view_sampler.hpp"
+
+#include <vector>
+
+namespace ecoview {
+
+// The surface samples of every point mesh in GL buffers (positions, normals, colours as vec4
+// arrays, one list after another), and what the view sampler needs to know of each mesh. A list
+// is as long as the most points an instance takes before polygons are cheaper.
+class PointSamples {
+ public:
+  PointSamples(const Scene& scene, float points_per_triangle);
+
+  const std::vector<pointgen::SampledMesh>& meshes() const { return meshes_; }
+  std::uint32_t first_sample(std::size_t mesh) const { return first_[mesh]; }
+  void bind(GLuint positions, GLuint normals, GLuint colors) const;  // shader storage binding points
+
+ private:
+  std::vector<pointgen::SampledMesh> meshes_;
+  std::vector<std::uint32_t> first_;
+  gl::Buffer positions_, normals_, colors_;
+};
+
+}  // namespace ecoview

@@ -1,0 +1,92 @@
+#include "app/render/point_splat.hpp"
+
+#include "app/gl/shader_program.hpp"
+
+namespace ecoview {
+namespace {
+
+struct GpuInstance {
+  glm::mat4 model;
+  glm::vec4 tint;
+};
+
+constexpr GLuint draws_binding = 1, instances_binding = 2, positions_binding = 3, normals_binding = 4,
+                 colors_binding = 5, depths_binding = 6, winners_binding = 7;
+constexpr GLuint points_per_group = 64 * 16;  // local size x points per thread (point_walk.glsl)
+
+// Replaces a buffer's content, growing its storage when it is too small.
+template <class T>
+void fill(gl::Buffer& buffer, std::size_t& capacity, const std::vector<T>& data) {
+  if (data.size() > capacity) {
+    buffer = gl::Buffer();
+    capacity = std::max<std::size_t>(data.size() * 3 / 2, 64);
+    glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(capacity * sizeof(T)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  }
+  if (!data.empty()) glNamedBufferSubData(buffer.name(), 0, static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data());
+}
+
+void clear(const gl::Buffer& buffer) {
+  const GLuint all_ones = 0xFFFFFFFFu;
+  glClearNamedBufferData(buffer.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &all_ones);
+}
+
+}  // namespace
+
+PointSplat::PointSplat(glm::ivec2 size)
+    : size_(size),
+      depth_program_(gl::build_compute_program("point_depth.comp")),
+      resolve_program_(gl::build_compute_program("point_resolve.comp")) {
+  const auto pixels = static_cast<GLsizeiptr>(size.x) * size.y * static_cast<GLsizeiptr>(sizeof(GLuint));
+  glNamedBufferStorage(depths_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(winners_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std::vector<pointgen::InstanceTable>& tables,
+                        const PointSamples& samples) {
+  std::vector<glm::uvec4> gpu_draws;
+  std::vector<GpuInstance> instances;
+  gpu_draws.reserve(draws.size());
+  instances.reserve(draws.size());
+  std::uint32_t first_point = 0;
+  for (const pointgen::PointDraw& d : draws) {
+    const pointgen::InstanceTable& table = tables[d.table];
+    gpu_draws.emplace_back(first_point, d.count, samples.first_sample(table.mesh), static_cast<std::uint32_t>(instances.size()));
+    instances.push_back({table.transforms[d.instance], glm::vec4(table.tints[d.instance], 1.0f)});
+    first_point += d.count;
+  }
+  fill(draws_, draws_capacity_, gpu_draws);
+  fill(instances_, instances_capacity_, instances);
+  total_points_ = first_point;
+  draw_count_ = draws.size();
+  samples_ = &samples;
+}
+
+void PointSplat::bind_for(const gl::Program& program) const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draws_binding, draws_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, instances_binding, instances_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, depths_binding, depths_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, winners_binding, winners_.name());
+  if (samples_ != nullptr) samples_->bind(positions_binding, normals_binding, colors_binding);
+  gl::set_uniform(program, "draw_count", static_cast<unsigned>(draw_count_));
+  gl::set_uniform(program, "target_size", size_);
+}
+
+void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float depth_bias, bool find_points) {
+  clear(depths_);
+  if (find_points) clear(winners_);
+  if (total_points_ == 0) return;
+  const auto groups = static_cast<GLuint>((total_points_ + points_per_group - 1) / points_per_group);
+  for (const gl::Program* program : {&depth_program_, &resolve_program_}) {
+    if (program == &resolve_program_ && !find_points) break;
+    bind_for(*program);
+    gl::set_uniform(*program, "view_projection", view_projection);
+    gl::set_uniform(*program, "total_points", static_cast<unsigned>(total_points_));
+    gl::set_uniform(*program, "splat_size", splat_size);
+    gl::set_uniform(*program, "depth_bias", depth_bias);
+    glUseProgram(program->name());
+    glDispatchCompute(groups, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+}
+
+}  // namespace ecoview

@@ -1,0 +1,37 @@
+#pragma once
+#include "app/gl/gl_objects.hpp"
+#include "app/render/point_samples.hpp"
+
+#include <vector>
+
+namespace ecoview {
+
+// Point splatting with compute shaders into a target of width x height pixels: the frame's draws
+// go to GL buffers; pass 1 keeps each pixel's nearest depth (atomicMin), pass 2 the nearest point
+// (for shading). 32-bit atomics only, so it runs on llvmpipe as on any GL 4.5 driver.
+class PointSplat {
+ public:
+  explicit PointSplat(glm::ivec2 size);
+
+  // The points to draw: the first `count` samples of each drawn instance.
+  void upload(const std::vector<pointgen::PointDraw>& draws, const std::vector<pointgen::InstanceTable>& tables,
+              const PointSamples& samples);
+  // Pass 1 (and 2 when `find_points`), with splats of splat_size x splat_size pixels.
+  void splat(const glm::mat4& view_projection, int splat_size, float depth_bias, bool find_points);
+  // Binds the buffers and sets the draw count and target size a shading program reads.
+  void bind_for(const gl::Program& program) const;
+
+  std::size_t point_count() const { return total_points_; }
+  glm::ivec2 size() const { return size_; }
+
+ private:
+  glm::ivec2 size_;
+  std::size_t total_points_ = 0;
+  std::size_t draw_count_ = 0;
+  gl::Buffer draws_, instances_, depths_, winners_;
+  std::size_t draws_capacity_ = 0, instances_capacity_ = 0;
+  gl::Program depth_program_, resolve_program_;
+  const PointSamples* samples_ = nullptr;
+};
+
+}  // namespace ecoview
