@@ -116,15 +116,15 @@ TEST(ViewSampler, CullsWhatIsOutOfViewAndCountsTheRest) {
   const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, 40}, {0, 0, -40}, {100, 0, -40}})}, {mesh});
   ASSERT_EQ(f.points.size(), 1u) << "the instances behind and beside the view are culled";
   EXPECT_EQ(f.points[0].instance, 1u);
-  // n = k rho^2 A d / (2 z^3) with z, d at the sphere's near side: 39.5 m.
-  EXPECT_EQ(f.points[0].count, static_cast<std::uint32_t>(std::ceil(2.0f * 256.0f * 256.0f * 2.0f / (2.0f * 39.5f * 39.5f))));
+  // n = k rho^2 A d / (2 z^3) with z = d = 40 m at the instance's centre.
+  EXPECT_EQ(f.points[0].count, static_cast<std::uint32_t>(std::ceil(2.0f * 256.0f * 256.0f * 2.0f / (2.0f * 40.0f * 40.0f))));
   EXPECT_TRUE(f.polygons[0].empty());
 }
 
 TEST(ViewSampler, NearInstancesArePolygonsAndTheBandBetweenDrawsBoth) {
   const SampledMesh mesh{2.0f, 0.5f, 1000, 5000};
-  // Points needed = 131072 / z^2: 4,000 (break-even) at z = 5.7 m.
-  const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, -3.5f}, {0, 0, -6.2f}, {0, 0, -9.5f}})}, {mesh});
+  // Points needed = 131072 / z^2: 4,000 (break-even) at z = 5.7 m; the band is 5.1 to 6.4 m.
+  const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, -3.5f}, {0, 0, -5.8f}, {0, 0, -9.5f}})}, {mesh});
   ASSERT_EQ(f.polygons[0], (std::vector<std::uint32_t>{0, 1}));
   ASSERT_EQ(f.points.size(), 2u);
   EXPECT_EQ(f.points[0].instance, 1u) << "in the band the instance is drawn both ways";

@@ -40,8 +40,9 @@ SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTabl
         return std::all_of(planes.begin(), planes.end(), [&](const glm::vec4& p) { return glm::dot(glm::vec3(p), center) + p.w >= -radius; });
       });
       if (!visible) continue;
-      const float distance = std::max(glm::distance(view.eye, center) - radius, 1e-3f);
-      const float depth = std::max(glm::dot(center - view.eye, view.forward) - radius, distance * view.edge_cos);
+      // Distances to the centre: the count is right on average over the object (docs/point_density.md).
+      const float distance = std::max(glm::distance(view.eye, center), std::max(0.5f * radius, 1e-3f));
+      const float depth = std::max(glm::dot(center - view.eye, view.forward), distance * view.edge_cos);
       const float needed = points_needed(view.density, mesh.area * scale * scale, std::min(depth, distance), distance);
       const float polygon_equivalent = view.points_per_triangle * static_cast<float>(mesh.triangles);
       const float ratio = needed / polygon_equivalent;
