@@ -1,4 +1,5 @@
 // ecoview: a viewer and benchmark for large outdoor scenes with shadows.
+#include "app/bench/density_command.hpp"
 #include "app/capture/capture_command.hpp"
 #include "app/cli/view_command.hpp"
 #include "app/errors.hpp"
@@ -14,8 +15,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   CaptureOptions capture;
   ViewOptions view;
+  DensityOptions density;
   CLI::App* capture_command = add_capture_command(app, capture);
   CLI::App* view_command = add_view_command(app, view);
+  CLI::App* density_command = add_density_command(app, density);
 
   try {
     app.parse(argc, argv);
@@ -31,6 +34,7 @@ int main(int argc, char** argv) {
   try {
     if (capture_command->parsed()) return run_capture(capture);
     if (view_command->parsed()) return run_view(view);
+    if (density_command->parsed()) return run_density(density);
   } catch (const InputError& e) {
     std::cerr << "ecoview: " << e.what() << "\n";
     return 2;

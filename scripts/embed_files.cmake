@@ -1,6 +1,7 @@
-# Writes OUTPUT_DIR/embedded_files.{hpp,cpp}: every file under ROOT/shaders and ROOT/data as a byte
+# Writes OUTPUT_DIR/embedded_files.{hpp,cpp}: every file under ROOT/shaders, ROOT/data and
+# ROOT/scripts/plots as a byte
 # array, keyed by its path from ROOT. Run with cmake -P at build time.
-file(GLOB_RECURSE files RELATIVE ${ROOT} ${ROOT}/shaders/* ${ROOT}/data/*)
+file(GLOB_RECURSE files RELATIVE ${ROOT} ${ROOT}/shaders/* ${ROOT}/data/* ${ROOT}/scripts/plots/*)
 list(SORT files)
 set(arrays "")
 set(table "")

@@ -1,7 +1,10 @@
 // `ecoview capture` as a user runs it: outputs, determinism, resume, and bad input.
 #include "test_support.hpp"
 
+#include <nlohmann/json.hpp>
 #include <stb/stb_image.h>
+
+#include <cmath>
 
 #include <gtest/gtest.h>
 
@@ -120,6 +123,29 @@ TEST(Capture, CrowdAndTrafficMoveTheSameWayInEveryProcess) {
     EXPECT_EQ(read_bytes(a / "color_00060.png"), read_bytes(b / "color_00060.png")) << scene;
     EXPECT_NE(read_bytes(a / "color_00030.png"), read_bytes(a / "color_00060.png")) << scene << ": nothing moved in 1 s";
   }
+}
+
+TEST(Density, QuickRunWritesResultsChartsAndReport) {
+  const TempDir dir;
+  const CommandResult r = run_ecoview({"density", "--quick", "--scene", "square", "--size", "320x180", "--out", dir.path().string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* file : {"results.json", "results.csv", "chart_quality.png", "chart_scale.png", "chart_thirds.png",
+                           "report.html", "images/polygons.png", "images/points.png", "images/difference.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+  }
+  const nlohmann::json results = nlohmann::json::parse(read_bytes(dir / "results.json"));
+  EXPECT_EQ(results["machine"]["cores"].get<int>() > 0, true);
+  ASSERT_GE(results["runs"].size(), 6u);
+  for (const auto& run : results["runs"]) {
+    ASSERT_TRUE(run.contains("params") && run.contains("figures"));
+    for (const auto& figure : run["figures"].items()) {
+      EXPECT_TRUE(figure.value().is_number() && std::isfinite(figure.value().get<double>())) << figure.key();
+    }
+  }
+  // A still camera renders the same frame twice.
+  const auto& temporal = results["runs"].back();
+  EXPECT_EQ(temporal["params"]["sweep"], "temporal");
+  EXPECT_EQ(temporal["figures"]["still_changed"].get<double>(), 0.0);
 }
 
 TEST(Capture, RendersARealGltfFile) {

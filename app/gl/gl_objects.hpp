@@ -54,11 +54,17 @@ struct ShaderKind {
   static void destroy(GLuint n) { glDeleteShader(n); }
 };
 
+struct QueryKind {
+  static GLuint create(GLenum target) { GLuint n = 0; glCreateQueries(target, 1, &n); return n; }
+  static void destroy(GLuint n) { glDeleteQueries(1, &n); }
+};
+
 using Buffer = Object<BufferKind>;
 using VertexArray = Object<VertexArrayKind>;
 using Texture = Object<TextureKind>;
 using Framebuffer = Object<FramebufferKind>;
 using Program = Object<ProgramKind>;
 using Shader = Object<ShaderKind>;
+using Query = Object<QueryKind>;
 
 }  // namespace ecoview::gl

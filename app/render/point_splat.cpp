@@ -2,6 +2,8 @@
 
 #include "app/gl/shader_program.hpp"
 
+#include <algorithm>
+
 namespace ecoview {
 namespace {
 
@@ -25,9 +27,8 @@ void fill(gl::Buffer& buffer, std::size_t& capacity, const std::vector<T>& data)
   if (!data.empty()) glNamedBufferSubData(buffer.name(), 0, static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data());
 }
 
-void clear(const gl::Buffer& buffer) {
-  const GLuint all_ones = 0xFFFFFFFFu;
-  glClearNamedBufferData(buffer.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &all_ones);
+void clear(const gl::Buffer& buffer, GLuint value) {
+  glClearNamedBufferData(buffer.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
 }
 
 }  // namespace
@@ -71,22 +72,39 @@ void PointSplat::bind_for(const gl::Program& program) const {
   gl::set_uniform(program, "target_size", size_);
 }
 
+void PointSplat::dispatch(const gl::Program& program, const glm::mat4& view_projection, int splat_size,
+                          float depth_bias) const {
+  bind_for(program);
+  gl::set_uniform(program, "view_projection", view_projection);
+  gl::set_uniform(program, "total_points", static_cast<unsigned>(total_points_));
+  gl::set_uniform(program, "splat_size", splat_size);
+  gl::set_uniform(program, "depth_bias", depth_bias);
+  glUseProgram(program.name());
+  glDispatchCompute(static_cast<GLuint>((total_points_ + points_per_group - 1) / points_per_group), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
 void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float depth_bias, bool find_points) {
-  clear(depths_);
-  if (find_points) clear(winners_);
+  clear(depths_, 0xFFFFFFFFu);
+  if (find_points) clear(winners_, 0xFFFFFFFFu);
   if (total_points_ == 0) return;
-  const auto groups = static_cast<GLuint>((total_points_ + points_per_group - 1) / points_per_group);
-  for (const gl::Program* program : {&depth_program_, &resolve_program_}) {
-    if (program == &resolve_program_ && !find_points) break;
-    bind_for(*program);
-    gl::set_uniform(*program, "view_projection", view_projection);
-    gl::set_uniform(*program, "total_points", static_cast<unsigned>(total_points_));
-    gl::set_uniform(*program, "splat_size", splat_size);
-    gl::set_uniform(*program, "depth_bias", depth_bias);
-    glUseProgram(program->name());
-    glDispatchCompute(groups, 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  dispatch(depth_program_, view_projection, splat_size, depth_bias);
+  if (find_points) dispatch(resolve_program_, view_projection, splat_size, depth_bias);
+}
+
+Image<std::uint32_t> PointSplat::count_points(const glm::mat4& view_projection) {
+  if (!count_program_) count_program_ = std::make_unique<gl::Program>(gl::build_compute_program("point_count.comp"));
+  clear(winners_, 0u);
+  if (total_points_ > 0) dispatch(*count_program_, view_projection, 1, 0.0f);
+  const std::size_t row = static_cast<std::size_t>(size_.x);
+  std::vector<std::uint32_t> bottom_up(row * static_cast<std::size_t>(size_.y));
+  glGetNamedBufferSubData(winners_.name(), 0, static_cast<GLsizeiptr>(bottom_up.size() * sizeof(std::uint32_t)), bottom_up.data());
+  Image<std::uint32_t> counts{size_.x, size_.y, 1, std::vector<std::uint32_t>(bottom_up.size())};
+  for (int y = 0; y < size_.y; ++y) {
+    std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(size_.y - 1 - y)), row,
+                counts.samples.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)));
   }
+  return counts;
 }
 
 }  // namespace ecoview

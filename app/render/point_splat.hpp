@@ -1,7 +1,9 @@
 #pragma once
 #include "app/gl/gl_objects.hpp"
+#include "app/render/image.hpp"
 #include "app/render/point_samples.hpp"
 
+#include <memory>
 #include <vector>
 
 namespace ecoview {
@@ -18,6 +20,9 @@ class PointSplat {
               const PointSamples& samples);
   // Pass 1 (and 2 when `find_points`), with splats of splat_size x splat_size pixels.
   void splat(const glm::mat4& view_projection, int splat_size, float depth_bias, bool find_points);
+  // Points per pixel, each counted once where its centre lands, rows from the top: for the density
+  // figures. Overwrites the nearest-point buffer, so call it after the frame is shaded.
+  Image<std::uint32_t> count_points(const glm::mat4& view_projection);
   // Binds the buffers and sets the draw count and target size a shading program reads.
   void bind_for(const gl::Program& program) const;
 
@@ -30,7 +35,10 @@ class PointSplat {
   std::size_t draw_count_ = 0;
   gl::Buffer draws_, instances_, depths_, winners_;
   std::size_t draws_capacity_ = 0, instances_capacity_ = 0;
+  void dispatch(const gl::Program& program, const glm::mat4& view_projection, int splat_size, float depth_bias) const;
+
   gl::Program depth_program_, resolve_program_;
+  std::unique_ptr<gl::Program> count_program_;  // made when first counting
   const PointSamples* samples_ = nullptr;
 };
 

@@ -3,6 +3,7 @@
 #include "app/errors.hpp"
 #include "shadow/uniform_map.hpp"
 
+#include <chrono>
 #include <cmath>
 
 namespace ecoview {
@@ -28,7 +29,30 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       samples_(scene, settings.points_per_triangle),
       shadow_pass_(settings.shadow_size),
       frame_pass_(settings.width, settings.height),
-      frame_points_({settings.width, settings.height}) {}
+      frame_points_({settings.width, settings.height}) {
+  if (settings.point_meshes_only) {
+    for (std::size_t g = 0; g < tables_.size(); ++g) {
+      if (!scene.point_meshes[tables_[g].mesh]) tables_[g] = {tables_[g].mesh, {}, {}, {}};
+      gpu_scene_.update(g, tables_[g]);
+    }
+  }
+}
+
+namespace {
+
+double elapsed_ms(const gl::Query& query) {
+  GLuint64 nanoseconds = 0;
+  glGetQueryObjectui64v(query.name(), GL_QUERY_RESULT, &nanoseconds);
+  return static_cast<double>(nanoseconds) * 1e-6;
+}
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+Image<std::uint32_t> Renderer::count_points() { return frame_points_.count_points(view_projection_); }
 
 pointgen::SamplerView Renderer::sampler_view(const shadow::Camera& camera, std::vector<glm::mat4> views) const {
   const float aspect = static_cast<float>(settings_.width) / static_cast<float>(settings_.height);
@@ -53,6 +77,21 @@ void Renderer::upload_polygons(const pointgen::SampledFrame& selection) {
   }
 }
 
+pointgen::SampledFrame Renderer::measured(const pointgen::SampledFrame& selection) const {
+  pointgen::SampledFrame out;
+  out.polygons.resize(selection.polygons.size());
+  if (settings_.measure == RenderSettings::Measure::points_only) {
+    out.points = selection.points;
+    out.point_count = selection.point_count;
+    return out;
+  }
+  for (const pointgen::PointDraw& d : selection.points) {
+    out.polygons[d.table].push_back(d.instance);
+    out.triangle_count += scene_.meshes[tables_[d.table].mesh].triangle_count();
+  }
+  return out;
+}
+
 void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Light& light) {
   const float aspect = static_cast<float>(settings_.width) / static_cast<float>(settings_.height);
   setup_ = shadow::focused_uniform_map(camera, aspect, light, scene_bounds_, settings_.shadow_size);
@@ -62,7 +101,9 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
   }
   std::vector<glm::mat4> views;
   for (const shadow::ShadowView& v : setup_.views) views.push_back(v.view_projection());
+  const auto start = std::chrono::steady_clock::now();
   const pointgen::SampledFrame selection = pointgen::sample_view(sampler_view(camera, views), tables_, samples_.meshes());
+  stats_.sample_ms += ms_since(start);
   upload_polygons(selection);
   shadow_pass_.render(gpu_scene_, setup_);
   if (!shadow_points_) shadow_points_ = std::make_unique<PointSplat>(glm::ivec2(settings_.shadow_size));
@@ -78,31 +119,47 @@ void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, 
     std::vector<pointgen::InstanceTable> posed = animation.set.pose(t, animation.first_mesh);
     for (std::size_t i = 0; i < posed.size(); ++i) {
       const std::size_t group = animation.first_group + i;
+      if (settings_.point_meshes_only && !scene_.point_meshes[posed[i].mesh]) continue;
       tables_[group] = std::move(posed[i]);
       if (!scene_.point_meshes[tables_[group].mesh]) gpu_scene_.update(group, tables_[group]);
     }
   }
+  stats_ = {};
   std::optional<FramePass::ShadowLookup> lookup;
   if (settings_.method == ShadowMethod::uniform) {
+    glBeginQuery(GL_TIME_ELAPSED, shadow_timer_.name());
     render_shadow_map(camera, light);
+    glEndQuery(GL_TIME_ELAPSED);
+    stats_.shadow_pass_ms = elapsed_ms(shadow_timer_);
     lookup.emplace(FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size()});
   }
-  stats_ = {};
+  const float aspect = static_cast<float>(settings_.width) / static_cast<float>(settings_.height);
+  view_projection_ = camera.projection(aspect) * camera.view();
   if (!settings_.points) {
+    glBeginQuery(GL_TIME_ELAPSED, frame_timer_.name());
     frame_pass_.render(gpu_scene_, camera, light, lookup);
-    stats_.triangles = scene_.triangle_count();
+    glEndQuery(GL_TIME_ELAPSED);
+    stats_.frame_pass_ms = elapsed_ms(frame_timer_);
+    for (const pointgen::InstanceTable& table : tables_) stats_.triangles += scene_.meshes[table.mesh].triangle_count() * table.size();
     return;
   }
-  const float aspect = static_cast<float>(settings_.width) / static_cast<float>(settings_.height);
-  const glm::mat4 view_projection = camera.projection(aspect) * camera.view();
-  const pointgen::SampledFrame selection = pointgen::sample_view(sampler_view(camera, {view_projection}), tables_, samples_.meshes());
+  const auto start = std::chrono::steady_clock::now();
+  pointgen::SampledFrame selection = pointgen::sample_view(sampler_view(camera, {view_projection_}), tables_, samples_.meshes());
+  stats_.sample_ms += ms_since(start);
+  if (settings_.measure != RenderSettings::Measure::off) selection = measured(selection);
   upload_polygons(selection);
+  glBeginQuery(GL_TIME_ELAPSED, frame_timer_.name());
   frame_pass_.render(gpu_scene_, camera, light, lookup);
   frame_points_.upload(selection.points, tables_, samples_);
-  frame_points_.splat(view_projection, settings_.splat_size, 0.0f, true);
+  frame_points_.splat(view_projection_, settings_.splat_size, 0.0f, true);
   frame_pass_.shade_points(frame_points_, camera, light, lookup);
+  glEndQuery(GL_TIME_ELAPSED);
+  stats_.frame_pass_ms = elapsed_ms(frame_timer_);
   stats_.points = selection.point_count;
   stats_.triangles = selection.triangle_count;
+  for (const pointgen::InstanceTable& table : tables_) {
+    if (!scene_.point_meshes[table.mesh]) stats_.triangles += scene_.meshes[table.mesh].triangle_count() * table.size();
+  }
 }
 
 }  // namespace ecoview

@@ -26,12 +26,19 @@ struct RenderSettings {
   int splat_size = 1;       // pixels per side of one point's splat in the frame
   int shadow_splat_size = 2;  // texels per side in the shadow map
   float points_per_triangle = 4.0f;  // a point costs 1/this of a triangle (the point-or-polygon choice)
+  bool point_meshes_only = false;    // draw nothing else (for the density figures)
+  // For the density figures: draw the instances the sampler makes points as points only (no
+  // polygons at all), or the same instances as polygons (their reference).
+  enum class Measure { off, points_only, their_polygons } measure = Measure::off;
 };
 
-// What a frame drew.
+// What a frame drew, and how long its parts took.
 struct FrameStats {
-  std::size_t points = 0;
-  std::size_t triangles = 0;
+  std::size_t points = 0;     // in the frame pass
+  std::size_t triangles = 0;  // in the frame pass
+  double sample_ms = 0.0;     // CPU: choosing points or polygons, for both passes
+  double shadow_pass_ms = 0.0;  // GPU (timer query)
+  double frame_pass_ms = 0.0;   // GPU (timer query): polygons, point splats and their shading
 };
 
 // One frame of a scene: the shadow pass for the chosen method, then the frame pass; with points
@@ -43,12 +50,16 @@ class Renderer {
   void render(const shadow::Camera& camera, const shadow::Light& light, double t = 0.0);
   const FramePass& frame() const { return frame_pass_; }
   const FrameStats& stats() const { return stats_; }
+  // Points per pixel of the last frame (see PointSplat::count_points).
+  Image<std::uint32_t> count_points();
 
  private:
   pointgen::SamplerView sampler_view(const shadow::Camera& camera, std::vector<glm::mat4> views) const;
   // Loads the GPU instance buffers of point meshes with the instances `selection` draws as polygons.
   void upload_polygons(const pointgen::SampledFrame& selection);
   void render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
+  // The selection as RenderSettings::measure asks.
+  pointgen::SampledFrame measured(const pointgen::SampledFrame& selection) const;
 
   const Scene& scene_;
   RenderSettings settings_;
@@ -61,7 +72,9 @@ class Renderer {
   PointSplat frame_points_;
   std::unique_ptr<PointSplat> shadow_points_;  // made with the first shadow map that needs it
   shadow::ShadowSetup setup_;  // of the last frame
+  glm::mat4 view_projection_{1.0f};  // of the last frame
   FrameStats stats_;
+  gl::Query shadow_timer_{GL_TIME_ELAPSED}, frame_timer_{GL_TIME_ELAPSED};
 };
 
 }  // namespace ecoview

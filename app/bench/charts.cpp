@@ -1,0 +1,69 @@
+#include "app/bench/charts.hpp"
+
+#include "app/errors.hpp"
+#include "app/file_io.hpp"
+#include "app/resources.hpp"
+
+#include <cstdlib>
+#include <sstream>
+
+namespace ecoview {
+namespace {
+
+std::string shell_quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::string cell(const nlohmann::json& v) {
+  if (v.is_number_float()) {
+    std::ostringstream s;
+    s.precision(4);
+    s << v.get<double>();
+    return s.str();
+  }
+  return v.is_string() ? v.get<std::string>() : v.dump();
+}
+
+std::string run_table(const BenchResults& results) {
+  std::ostringstream html;
+  html << "<table><tr><th>params</th><th>figures</th></tr>\n";
+  for (const BenchRun& run : results.runs) {
+    html << "<tr><td>";
+    for (const auto& p : run.params.items()) html << p.key() << "=" << cell(p.value()) << " ";
+    html << "</td><td>";
+    for (const auto& f : run.figures.items()) html << f.key() << "=" << cell(f.value()) << " ";
+    html << "</td></tr>\n";
+  }
+  return html.str() + "</table>\n";
+}
+
+}  // namespace
+
+void write_charts(const std::filesystem::path& folder, const BenchResults& results) {
+  const auto script = resources::find("scripts/plots/density_charts.py");
+  const std::filesystem::path script_file = folder / "density_charts.py";
+  write_file_atomically(script_file, *script);
+  const std::string command = "/usr/bin/python3 " + shell_quote(script_file.string()) + " " +
+                              shell_quote((folder / "results.json").string()) + " " + shell_quote(folder.string());
+  const int status = std::system(command.c_str());
+  std::filesystem::remove(script_file);
+  if (status != 0) {
+    throw RuntimeFailure("charts: /usr/bin/python3 with matplotlib failed (install python3-matplotlib); results.json "
+                         "and results.csv are written in " + folder.string());
+  }
+  std::ostringstream html;
+  html << "<!doctype html><html><head><meta charset=\"utf-8\"><title>ecoview density</title><style>"
+          "body{font-family:sans-serif;margin:2em}td,th{border:1px solid #ccc;padding:3px;font-size:12px}"
+          "table{border-collapse:collapse}img{max-width:100%}</style></head><body>\n"
+       << "<h1>ecoview density</h1><p>" << results.machine.dump() << "</p>\n"
+       << "<h2>Charts</h2><img src=\"chart_quality.png\"><img src=\"chart_scale.png\"><img src=\"chart_thirds.png\">\n"
+       << "<h2>Images (k = 1.5, 1-pixel splats)</h2><table><tr><th>polygons</th><th>points</th><th>difference × 4</th></tr>"
+       << "<tr><td><img src=\"images/polygons.png\"></td><td><img src=\"images/points.png\"></td>"
+       << "<td><img src=\"images/difference.png\"></td></tr></table>\n"
+       << "<h2>Runs</h2>\n" << run_table(results) << "</body></html>\n";
+  write_file_atomically(folder / "report.html", html.str());
+}
+
+}  // namespace ecoview

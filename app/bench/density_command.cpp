@@ -1,0 +1,232 @@
+#include "app/bench/density_command.hpp"
+
+#include "app/bench/charts.hpp"
+#include "app/bench/density_figures.hpp"
+#include "app/bench/frame_timing.hpp"
+#include "app/bench/results.hpp"
+#include "app/capture/png.hpp"
+#include "app/cli/progress.hpp"
+#include "app/errors.hpp"
+#include "app/file_io.hpp"
+#include "app/gl/context.hpp"
+#include "app/scene/scene_file.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace ecoview {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Plan {
+  std::vector<double> ks;
+  std::vector<int> splats;
+  std::vector<int> instance_counts;
+  int warmup, frames, polygon_frames;
+};
+
+Plan plan_for(bool quick) {
+  if (quick) return {{1.5}, {1}, {300, 3000}, 1, 3, 1};
+  return {{0.75, 1.5, 3.0}, {1, 2}, {1000, 10000, 100000}, 3, 20, 3};
+}
+
+// A flat stand of trees and bushes, `count` plants on 250 x 250 m, seen from its edge.
+std::string stand_scene(int count) {
+  std::ostringstream s;
+  s << R"({"camera": {"position": [0, 12, 150], "target": [0, 4, 20], "fov_y_deg": 50, "near": 0.5, "far": 600},
+          "lights": [{"type": "directional", "direction": [0.5, -0.7, -0.3]}],
+          "objects": [{"type": "ecosystem", "seed": 11, "size": [250, 250], "terrain": {"relief": 0.5, "resolution": 16},
+                       "plants": [)";
+  const char* species[] = {"oak", "birch", "spruce", "hazel", "juniper"};
+  for (int i = 0; i < 5; ++i) s << (i ? ", " : "") << R"({"species": ")" << species[i] << R"(", "count": )" << count / 5 << "}";
+  s << "]}]}";
+  return s.str();
+}
+
+RenderedFrame grab(Renderer& renderer) { return {renderer.frame().read_color(), renderer.frame().read_depth()}; }
+
+Image8 difference(const Image8& a, const Image8& b) {
+  Image8 d{a.width, a.height, 3, std::vector<std::uint8_t>(a.samples.size())};
+  for (std::size_t i = 0; i < a.samples.size(); ++i) {
+    d.samples[i] = static_cast<std::uint8_t>(std::min(255, 4 * std::abs(static_cast<int>(a.samples[i]) - b.samples[i])));
+  }
+  return d;
+}
+
+double changed_fraction(const Image8& a, const Image8& b) {
+  std::size_t changed = 0;
+  for (std::size_t i = 0; i < a.samples.size(); i += 3) {
+    changed += a.samples[i] != b.samples[i] || a.samples[i + 1] != b.samples[i + 1] || a.samples[i + 2] != b.samples[i + 2];
+  }
+  return static_cast<double>(changed) / static_cast<double>(a.samples.size() / 3);
+}
+
+class DensityBench {
+ public:
+  DensityBench(const DensityOptions& o, const Plan& plan) : o_(o), plan_(plan), out_(o.out) {
+    const glm::ivec2 size = parse_size(o.size);
+    base_.width = size.x;
+    base_.height = size.y;
+  }
+
+  // Quality against time: the scene's point-rendered objects, points against their polygons.
+  void quality(const Scene& scene, const std::string& scene_name, Progress& progress) {
+    RenderSettings settings = base_;
+    settings.method = ShadowMethod::none;  // the sampler's quality alone; shadows are bench's
+    settings.point_meshes_only = true;
+    for (double k : plan_.ks) {
+      for (int splat : plan_.splats) {
+        settings.k = static_cast<float>(k);
+        settings.splat_size = splat;
+        settings.measure = RenderSettings::Measure::their_polygons;
+        Renderer reference(scene, settings);
+        reference.render(scene.camera, scene.lights[0]);
+        const RenderedFrame polygons = grab(reference);
+        settings.measure = RenderSettings::Measure::points_only;
+        Renderer points(scene, settings);
+        const FrameTiming timing = time_frames(points, scene.camera, scene.lights[0], 0.0, plan_.warmup, plan_.frames);
+        const RenderedFrame splats = grab(points);
+        const DensityFigures f = density_figures(polygons, splats, points.count_points());
+        BenchRun run;
+        run.params = {{"sweep", "quality"}, {"scene", scene_name}, {"k", k}, {"splat", splat}, {"geometry", "points"},
+                      {"width", settings.width}, {"height", settings.height}, {"frames", timing.frames}};
+        run.figures = {{"holes", f.holes}, {"psnr", f.psnr}, {"pts_per_px", f.pts_per_px}, {"pts_per_px_cv", f.pts_per_px_cv},
+                       {"pts_per_px_near", f.pts_per_px_near}, {"pts_per_px_middle", f.pts_per_px_middle},
+                       {"pts_per_px_far", f.pts_per_px_far}, {"points", points.stats().points},
+                       {"triangles", points.stats().triangles}, {"frame_ms", timing.frame_ms}, {"sample_ms", timing.sample_ms},
+                       {"frame_pass_ms", timing.frame_pass_ms},
+                       {"sampler_mpts", timing.sample_ms > 0 ? 1e-3 * static_cast<double>(points.stats().points) / timing.sample_ms : 0.0}};
+        results_.runs.push_back(run);
+        if (k == 1.5 && splat == 1) save_images(polygons.color, splats.color);
+        progress.step();
+      }
+    }
+  }
+
+  // Speed: the whole scene, shadows on, with points and with polygons.
+  void speed(const Scene& scene, const std::string& scene_name, Progress& progress) {
+    for (const bool points : {true, false}) {
+      RenderSettings settings = base_;
+      settings.points = points;
+      Renderer renderer(scene, settings);
+      const int frames = points ? plan_.frames : plan_.polygon_frames;
+      const FrameTiming timing = time_frames(renderer, scene.camera, scene.lights[0], 0.0, points ? plan_.warmup : 1, frames);
+      add_timing_run("speed", scene_name, points, 0, timing, renderer.stats());
+      progress.step();
+    }
+  }
+
+  // Scale: the same area with more and more plants.
+  void scale(Progress& progress) {
+    for (int count : plan_.instance_counts) {
+      const Scene scene = load_scene({"stand", stand_scene(count), [](const std::string&) { return std::nullopt; }},
+                                     {o_.memory_budget_gib * 1024.0 * 1024.0 * 1024.0});
+      for (const bool points : {true, false}) {
+        RenderSettings settings = base_;
+        settings.points = points;
+        Renderer renderer(scene, settings);
+        const int frames = points ? plan_.frames : plan_.polygon_frames;
+        const FrameTiming timing = time_frames(renderer, scene.camera, scene.lights[0], 0.0, points ? plan_.warmup : 1, frames);
+        add_timing_run("scale", "stand", points, count, timing, renderer.stats());
+        progress.step();
+      }
+    }
+  }
+
+  // Temporal noise: a still camera twice, and a camera moving slowly along the scene's view.
+  void temporal(const Scene& scene, const std::string& scene_name, Progress& progress) {
+    Renderer renderer(scene, base_);
+    renderer.render(scene.camera, scene.lights[0]);
+    const Image8 first = renderer.frame().read_color();
+    renderer.render(scene.camera, scene.lights[0]);
+    const Image8 again = renderer.frame().read_color();
+    shadow::Camera moved = scene.camera;
+    const glm::vec3 step = 0.05f * moved.forward();  // 5 cm, a slow walk at 30 frames per second
+    moved.position += step;
+    moved.target += step;
+    renderer.render(moved, scene.lights[0]);
+    const Image8 next = renderer.frame().read_color();
+    BenchRun run;
+    run.params = {{"sweep", "temporal"}, {"scene", scene_name}, {"k", base_.k}, {"splat", base_.splat_size}};
+    run.figures = {{"still_changed", changed_fraction(first, again)}, {"moving_changed", changed_fraction(first, next)}};
+    results_.runs.push_back(run);
+    progress.step();
+  }
+
+  void finish(const std::string& renderer_name) {
+    results_.machine = machine_info(renderer_name, o_.backend);
+    write_results(out_, results_);
+    write_charts(out_, results_);
+  }
+
+ private:
+  void add_timing_run(const char* sweep, const std::string& scene_name, bool points, int count, const FrameTiming& t,
+                      const FrameStats& stats) {
+    BenchRun run;
+    run.params = {{"sweep", sweep}, {"scene", scene_name}, {"geometry", points ? "points" : "polygons"}, {"k", base_.k},
+                  {"splat", base_.splat_size}, {"width", base_.width}, {"height", base_.height}, {"frames", t.frames}};
+    if (count > 0) run.params["instances"] = count;
+    run.figures = {{"frame_ms", t.frame_ms}, {"sample_ms", t.sample_ms}, {"shadow_pass_ms", t.shadow_pass_ms},
+                   {"frame_pass_ms", t.frame_pass_ms}, {"points", stats.points}, {"triangles", stats.triangles}};
+    results_.runs.push_back(run);
+  }
+
+  void save_images(const Image8& polygons, const Image8& points) {
+    fs::create_directories(out_ / "images");
+    write_file_atomically(out_ / "images" / "polygons.png", encode_png(polygons));
+    write_file_atomically(out_ / "images" / "points.png", encode_png(points));
+    write_file_atomically(out_ / "images" / "difference.png", encode_png(difference(polygons, points)));
+  }
+
+  const DensityOptions& o_;
+  Plan plan_;
+  fs::path out_;
+  RenderSettings base_;
+  BenchResults results_;
+};
+
+}  // namespace
+
+CLI::App* add_density_command(CLI::App& app, DensityOptions& o) {
+  CLI::App* cmd = app.add_subcommand("density", "The point-density benchmark: quality against time over k and splat "
+                                                "size, points and time against instance count, temporal noise; writes "
+                                                "results.json, results.csv, charts and report.html");
+  cmd->add_option("--scene", o.scene, "Scene for the quality, speed and temporal runs (default: the default scene)");
+  cmd->add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--backend", o.backend, "GL context: egl or osmesa")->capture_default_str();
+  cmd->add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes needing more memory than this, in GiB")
+      ->capture_default_str();
+  cmd->add_flag("--quick", o.quick, "A few short runs, to check that everything works");
+  cmd->add_option("--out", o.out, "Output folder (created if missing)")->required();
+  return cmd;
+}
+
+int run_density(const DensityOptions& o) {
+  parse_size(o.size);
+  if (o.backend != "egl" && o.backend != "osmesa") {
+    throw InputError("--backend: unknown backend '" + o.backend + "' (available: egl, osmesa)");
+  }
+  const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
+  const std::string scene_name = o.scene.empty() ? default_scene_name : o.scene;
+  std::error_code ec;
+  fs::create_directories(o.out, ec);
+  if (ec || !fs::is_directory(o.out)) throw RuntimeFailure("--out: cannot create folder " + o.out);
+
+  const Plan plan = plan_for(o.quick);
+  const std::unique_ptr<GlContext> context = create_headless_context(o.backend);
+  DensityBench bench(o, plan);
+  Progress progress("density: run", plan.ks.size() * plan.splats.size() + 2 + 2 * plan.instance_counts.size() + 1);
+  bench.quality(scene, scene_name, progress);
+  bench.speed(scene, scene_name, progress);
+  bench.scale(progress);
+  bench.temporal(scene, scene_name, progress);
+  progress.finish();
+  bench.finish(context->description());
+  std::cout << "density: wrote results.json, results.csv, charts and report.html to " << o.out << "\n";
+  return 0;
+}
+
+}  // namespace ecoview
