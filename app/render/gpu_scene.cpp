@@ -58,7 +58,6 @@ GpuScene::GpuScene(const Scene& scene) {
     g.index_count = mesh.index_count;
     g.instance_count = static_cast<GLsizei>(instances.size());
     g.capacity = instances.size();
-    triangles_ += static_cast<std::size_t>(mesh.index_count / 3) * instances.size();
 
     const GLuint vao = g.vertex_array.name();
     glVertexArrayVertexBuffer(vao, 0, mesh.vertices.name(), 0, sizeof(Vertex));

@@ -16,7 +16,6 @@ class GpuScene {
   // Replaces the instances of a group with `table`, which has at most as many as the scene's
   // group: posed moving objects, or the subset a pass draws as polygons.
   void update(std::size_t group, const pointgen::InstanceTable& table);
-  std::size_t triangles_per_draw() const { return triangles_; }
 
  private:
   struct Mesh {
@@ -33,7 +32,6 @@ class GpuScene {
   };
   std::vector<Mesh> meshes_;
   std::vector<Group> groups_;
-  std::size_t triangles_ = 0;
 };
 
 }  // namespace ecoview

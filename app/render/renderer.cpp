@@ -12,6 +12,16 @@ namespace {
 // Window-depth offset of point splats in shadow maps, against self-shadowing of point surfaces.
 constexpr float shadow_point_bias = 2e-5f;
 
+double elapsed_ms(const gl::Query& query) {
+  GLuint64 nanoseconds = 0;
+  glGetQueryObjectui64v(query.name(), GL_QUERY_RESULT, &nanoseconds);
+  return static_cast<double>(nanoseconds) * 1e-6;
+}
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
 }  // namespace
 
 ShadowMethod parse_shadow_method(const std::string& name) {
@@ -37,20 +47,6 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
     }
   }
 }
-
-namespace {
-
-double elapsed_ms(const gl::Query& query) {
-  GLuint64 nanoseconds = 0;
-  glGetQueryObjectui64v(query.name(), GL_QUERY_RESULT, &nanoseconds);
-  return static_cast<double>(nanoseconds) * 1e-6;
-}
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 Image<std::uint32_t> Renderer::count_points() { return frame_points_.count_points(view_projection_); }
 
