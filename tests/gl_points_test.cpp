@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <sstream>
 
 namespace ecoview {
@@ -39,23 +40,31 @@ Coverage compare(const Image<float>& polygon_depth, const Image<float>& point_de
   return c;
 }
 
-TEST(PointRendering, PointsCoverWhatPolygonsCoverAtTheDefaultDensity) {
-  const auto context = create_headless_context("egl");
-  const Scene scene = load_scene({"grove.json", grove(), [](const std::string&) { return std::nullopt; }});
-  RenderSettings settings;
-  settings.width = 480;
-  settings.height = 270;
-  settings.points = false;
-  Renderer polygons(scene, settings);
-  polygons.render(scene.camera, scene.lights[0]);
-  settings.points = true;
-  Renderer points(scene, settings);
-  points.render(scene.camera, scene.lights[0]);
-  ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+// The grove rendered at the default density as polygons and as points.
+class PointRendering : public testing::Test {
+ protected:
+  void SetUp() override {
+    RenderSettings settings;
+    settings.width = 480;
+    settings.height = 270;
+    settings.points = false;
+    polygons = std::make_unique<Renderer>(scene, settings);
+    polygons->render(scene.camera, scene.lights[0]);
+    settings.points = true;
+    points = std::make_unique<Renderer>(scene, settings);
+    points->render(scene.camera, scene.lights[0]);
+    ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  }
 
-  EXPECT_GT(points.stats().points, 10000u) << "the far trees should be points";
-  EXPECT_LT(points.stats().triangles, polygons.stats().triangles / 2);
-  const Coverage c = compare(polygons.frame().read_depth(), points.frame().read_depth());
+  std::unique_ptr<GlContext> context = create_headless_context("egl");
+  Scene scene = load_scene({"grove.json", grove(), [](const std::string&) { return std::nullopt; }});
+  std::unique_ptr<Renderer> polygons, points;
+};
+
+TEST_F(PointRendering, PointsCoverWhatPolygonsCoverAtTheDefaultDensity) {
+  EXPECT_GT(points->stats().points, 10000u) << "the far trees should be points";
+  EXPECT_LT(points->stats().triangles, polygons->stats().triangles / 2);
+  const Coverage c = compare(polygons->frame().read_depth(), points->frame().read_depth());
   ASSERT_GT(c.polygons, 20000u);
   const double holes = 1.0 - static_cast<double>(c.both) / static_cast<double>(c.polygons);
   const double outside = static_cast<double>(c.points - c.both) / static_cast<double>(c.polygons);
@@ -66,19 +75,8 @@ TEST(PointRendering, PointsCoverWhatPolygonsCoverAtTheDefaultDensity) {
   EXPECT_LT(outside, 0.08) << "points must lie on the surfaces";
 }
 
-TEST(PointRendering, PointDepthsMatchPolygonDepths) {
-  const auto context = create_headless_context("egl");
-  const Scene scene = load_scene({"grove.json", grove(), [](const std::string&) { return std::nullopt; }});
-  RenderSettings settings;
-  settings.width = 480;
-  settings.height = 270;
-  settings.points = false;
-  Renderer polygons(scene, settings);
-  polygons.render(scene.camera, scene.lights[0]);
-  settings.points = true;
-  Renderer points(scene, settings);
-  points.render(scene.camera, scene.lights[0]);
-  const Image<float> a = polygons.frame().read_depth(), b = points.frame().read_depth();
+TEST_F(PointRendering, PointDepthsMatchPolygonDepths) {
+  const Image<float> a = polygons->frame().read_depth(), b = points->frame().read_depth();
   // Where both cover a pixel, the nearest point lies on one of the surfaces seen there: mostly the
   // front one (within a tree's depth of it).
   std::size_t both = 0, close = 0;

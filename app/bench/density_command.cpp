@@ -108,15 +108,7 @@ class DensityBench {
 
   // Speed: the whole scene, shadows on, with points and with polygons.
   void speed(const Scene& scene, const std::string& scene_name, Progress& progress) {
-    for (const bool points : {true, false}) {
-      RenderSettings settings = base_;
-      settings.points = points;
-      Renderer renderer(scene, settings);
-      const int frames = points ? plan_.frames : plan_.polygon_frames;
-      const FrameTiming timing = time_frames(renderer, scene.camera, scene.lights[0], 0.0, points ? plan_.warmup : 1, frames);
-      add_timing_run("speed", scene_name, points, 0, timing, renderer.stats());
-      progress.step();
-    }
+    time_both_ways("speed", scene, scene_name, 0, progress);
   }
 
   // Scale: the same area with more and more plants.
@@ -124,15 +116,7 @@ class DensityBench {
     for (int count : plan_.instance_counts) {
       const Scene scene = load_scene({"stand", stand_scene(count), [](const std::string&) { return std::nullopt; }},
                                      {o_.memory_budget_gib * 1024.0 * 1024.0 * 1024.0});
-      for (const bool points : {true, false}) {
-        RenderSettings settings = base_;
-        settings.points = points;
-        Renderer renderer(scene, settings);
-        const int frames = points ? plan_.frames : plan_.polygon_frames;
-        const FrameTiming timing = time_frames(renderer, scene.camera, scene.lights[0], 0.0, points ? plan_.warmup : 1, frames);
-        add_timing_run("scale", "stand", points, count, timing, renderer.stats());
-        progress.step();
-      }
+      time_both_ways("scale", scene, "stand", count, progress);
     }
   }
 
@@ -163,6 +147,19 @@ class DensityBench {
   }
 
  private:
+  // Times the whole scene with points and with polygons (polygon frames are slow: fewer of them).
+  void time_both_ways(const char* sweep, const Scene& scene, const std::string& scene_name, int count, Progress& progress) {
+    for (const bool points : {true, false}) {
+      RenderSettings settings = base_;
+      settings.points = points;
+      Renderer renderer(scene, settings);
+      const FrameTiming timing = time_frames(renderer, scene.camera, scene.lights[0], 0.0, points ? plan_.warmup : 1,
+                                             points ? plan_.frames : plan_.polygon_frames);
+      add_timing_run(sweep, scene_name, points, count, timing, renderer.stats());
+      progress.step();
+    }
+  }
+
   void add_timing_run(const char* sweep, const std::string& scene_name, bool points, int count, const FrameTiming& t,
                       const FrameStats& stats) {
     BenchRun run;

@@ -93,19 +93,12 @@ void FramePass::set_lighting(const gl::Program& program, const shadow::Camera& c
 
 template <class Sample>
 Image<Sample> FramePass::read(GLenum attachment, int channels, GLenum format, GLenum type) const {
-  Image<Sample> image{width_, height_, channels, {}};
-  const std::size_t row = static_cast<std::size_t>(width_) * static_cast<std::size_t>(channels);
-  std::vector<Sample> bottom_up(row * static_cast<std::size_t>(height_));
+  std::vector<Sample> bottom_up(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * static_cast<std::size_t>(channels));
   glNamedFramebufferReadBuffer(framebuffer_.name(), attachment);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.name());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width_, height_, format, type, bottom_up.data());
-  image.samples.resize(bottom_up.size());
-  for (int y = 0; y < height_; ++y) {  // GL rows go up from the bottom; images go down from the top
-    std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(height_ - 1 - y)),
-                row, image.samples.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)));
-  }
-  return image;
+  return from_bottom_up(width_, height_, channels, bottom_up);
 }
 
 Image8 FramePass::read_color() const { return read<std::uint8_t>(GL_COLOR_ATTACHMENT0, 3, GL_RGB, GL_UNSIGNED_BYTE); }

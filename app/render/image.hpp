@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -17,6 +18,18 @@ struct Image {
                        static_cast<std::size_t>(channels) + static_cast<std::size_t>(channel)];
   }
 };
+
+// An image from rows that go up from the bottom, as OpenGL returns them.
+template <class Sample>
+Image<Sample> from_bottom_up(int width, int height, int channels, const std::vector<Sample>& bottom_up) {
+  Image<Sample> image{width, height, channels, std::vector<Sample>(bottom_up.size())};
+  const std::size_t row = static_cast<std::size_t>(width) * static_cast<std::size_t>(channels);
+  for (std::size_t y = 0; y < static_cast<std::size_t>(height); ++y) {
+    std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>(row * (static_cast<std::size_t>(height) - 1 - y)), row,
+                image.samples.begin() + static_cast<std::ptrdiff_t>(row * y));
+  }
+  return image;
+}
 
 using Image8 = Image<std::uint8_t>;
 using Image16 = Image<std::uint16_t>;

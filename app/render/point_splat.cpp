@@ -96,15 +96,9 @@ Image<std::uint32_t> PointSplat::count_points(const glm::mat4& view_projection) 
   if (!count_program_) count_program_ = std::make_unique<gl::Program>(gl::build_compute_program("point_count.comp"));
   clear(winners_, 0u);
   if (total_points_ > 0) dispatch(*count_program_, view_projection, 1, 0.0f);
-  const std::size_t row = static_cast<std::size_t>(size_.x);
-  std::vector<std::uint32_t> bottom_up(row * static_cast<std::size_t>(size_.y));
+  std::vector<std::uint32_t> bottom_up(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));
   glGetNamedBufferSubData(winners_.name(), 0, static_cast<GLsizeiptr>(bottom_up.size() * sizeof(std::uint32_t)), bottom_up.data());
-  Image<std::uint32_t> counts{size_.x, size_.y, 1, std::vector<std::uint32_t>(bottom_up.size())};
-  for (int y = 0; y < size_.y; ++y) {
-    std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(size_.y - 1 - y)), row,
-                counts.samples.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)));
-  }
-  return counts;
+  return from_bottom_up(size_.x, size_.y, 1, bottom_up);
 }
 
 }  // namespace ecoview
