@@ -11,6 +11,7 @@
 
 #include <cstring>
 #include <filesystem>
+#include <set>
 
 namespace pointgen {
 namespace {
@@ -121,11 +122,11 @@ class AccessorReader {
     const auto& data = model_.buffers[static_cast<std::size_t>(view.buffer)].data;
     const std::size_t stride = stride_override ? stride_override : element_size;
     if (stride < element_size) fail(std::string(what) + " data: stride smaller than an element");
-    const std::size_t needed = count == 0 ? 0 : offset + stride * (count - 1) + element_size;
-    if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset ||
-        needed > view.byteLength) {
-      fail(std::string(what) + " data: accessor reads past the end of its buffer");
-    }
+    // Every term is checked against what is left, so no sum of numbers from the file can wrap.
+    const bool view_fits = view.byteOffset <= data.size() && view.byteLength <= data.size() - view.byteOffset;
+    const bool elements_fit = count == 0 || (offset <= view.byteLength && element_size <= view.byteLength - offset &&
+                                             (count - 1) <= (view.byteLength - offset - element_size) / stride);
+    if (!view_fits || !elements_fit) fail(std::string(what) + " data: accessor reads past the end of its buffer");
     return data.data() + view.byteOffset + offset;
   }
 
@@ -273,11 +274,15 @@ class MeshBuilder {
   MeshBuilder(const tinygltf::Model& model, const std::string& path)
       : model_(model), reader_(model, path) {}
 
-  void add_node(int index, const glm::mat4& parent, int depth) {
+  // glTF nodes form trees: a node reached twice (a cycle, or a child listed by two parents, which
+  // could multiply the geometry exponentially) is refused, and so is a hierarchy deep enough to
+  // exhaust the stack.
+  void add_node(int index, const glm::mat4& parent, int depth = 0) {
     if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size()) {
       reader_.fail("node " + std::to_string(index) + " does not exist");
     }
-    if (depth > 64) reader_.fail("node hierarchy is cyclic or deeper than 64 levels");
+    if (depth > 256) reader_.fail("node hierarchy is deeper than 256 levels");
+    if (!visited_.insert(index).second) reader_.fail("node " + std::to_string(index) + " is reached twice (nodes must form trees)");
     const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
     const glm::mat4 world = parent * node_matrix(node);
     if (node.mesh >= 0) add_mesh(node.mesh, world);
@@ -351,6 +356,7 @@ class MeshBuilder {
   const tinygltf::Model& model_;
   AccessorReader reader_;
   TriangleMesh mesh_;
+  std::set<int> visited_;
 };
 
 }  // namespace
@@ -380,7 +386,7 @@ TriangleMesh load_gltf(const std::string& path, const std::string& bytes, const 
   if (!model.scenes.empty()) {
     const std::size_t scene = model.defaultScene >= 0 ? static_cast<std::size_t>(model.defaultScene) : 0;
     if (scene >= model.scenes.size()) throw FileError(path, "default scene does not exist");
-    for (int node : model.scenes[scene].nodes) builder.add_node(node, glm::mat4(1.0f), 0);
+    for (int node : model.scenes[scene].nodes) builder.add_node(node, glm::mat4(1.0f));
   } else {  // no scenes: every node that is nobody's child is a root
     std::vector<bool> is_child(model.nodes.size(), false);
     for (const tinygltf::Node& node : model.nodes) {
@@ -389,7 +395,7 @@ TriangleMesh load_gltf(const std::string& path, const std::string& bytes, const 
       }
     }
     for (std::size_t i = 0; i < model.nodes.size(); ++i) {
-      if (!is_child[i]) builder.add_node(static_cast<int>(i), glm::mat4(1.0f), 0);
+      if (!is_child[i]) builder.add_node(static_cast<int>(i), glm::mat4(1.0f));
     }
   }
   return builder.take();

@@ -143,8 +143,6 @@ void MeshBuilder::polygon(const std::vector<glm::vec3>& corners, const glm::vec3
   for (std::size_t i = 2; i < v.size(); ++i) impl_->triangle(v[0], v[i - 1], v[i]);
 }
 
-std::size_t MeshBuilder::triangle_count() const { return impl_->mesh.n_faces(); }
-
 TriangleMesh MeshBuilder::build() const {
   Impl::Mesh mesh = impl_->mesh;
   mesh.update_normals();

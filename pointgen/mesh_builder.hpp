@@ -36,7 +36,6 @@ class MeshBuilder {
   // A triangle or quad with its own (flat) vertices, counter-clockwise seen from its front.
   void polygon(const std::vector<glm::vec3>& corners, const glm::vec3& color);
 
-  std::size_t triangle_count() const;
   TriangleMesh build() const;
 
  private:

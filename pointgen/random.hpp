@@ -4,8 +4,10 @@
 #include <cstdint>
 
 // The project's one random-number scheme: a seed per scene, a seed per instance derived by
-// hashing (scene seed, instance id), and a small generator whose numbers are the same on every
-// platform and compiler (unlike std:: distributions), so a frame renders to the same bytes anywhere.
+// hashing (scene seed, instance id), and a small generator whose integers and uniforms are the
+// same on every platform and compiler (unlike std:: distributions). Geometry built from them also
+// goes through std::sin, std::exp and the like, whose last bits may differ between C libraries:
+// the same frame gives the same bytes on the same platform.
 namespace pointgen {
 
 // SplitMix64's finalizer: a strong 64-bit mix.
@@ -33,6 +35,8 @@ class Random {
   // Uniform in [0, 1), from the top 24 bits so every value is exact in a float.
   float uniform() { return static_cast<float>(next() >> 40) * (1.0f / 16777216.0f); }
   float uniform(float lo, float hi) { return lo + (hi - lo) * uniform(); }
+  // Uniform in [0, 1) with 53 random bits, for picks among millions of items.
+  double uniform_double() { return static_cast<double>(next() >> 11) * 0x1p-53; }
   // Uniform integer in [0, n).
   std::uint32_t below(std::uint32_t n) { return static_cast<std::uint32_t>((next() >> 32) * n >> 32); }
   // A direction in the unit disc, and around a mean with a relative spread.
@@ -42,7 +46,6 @@ class Random {
       if (glm::dot(p, p) <= 1.0f) return p;
     }
   }
-  float around(float mean, float spread) { return mean * (1.0f + spread * uniform(-1.0f, 1.0f)); }
 
  private:
   std::uint64_t state_;

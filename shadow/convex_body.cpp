@@ -37,6 +37,13 @@ ConvexBody::Polygon loop_in_plane(std::vector<glm::vec3> points, const glm::vec3
   return points;
 }
 
+// Where the edge a-b crosses the plane, computed from the same end whichever face walks the edge,
+// so neighbouring faces get the very same point.
+glm::vec3 crossing(const glm::vec3& a, const glm::vec3& b, float da, float db) {
+  const bool a_first = a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
+  return a_first ? a + (b - a) * (da / (da - db)) : b + (a - b) * (db / (db - da));
+}
+
 glm::vec3 centroid_of(const std::vector<glm::vec3>& points) {
   glm::vec3 sum(0.0f);
   for (const glm::vec3& p : points) sum += p;
@@ -79,14 +86,14 @@ void ConvexBody::clip(const Plane& plane) {
       if (da <= eps) kept.push_back(a);
       if (std::abs(da) <= eps) add_distinct(cut, a, eps);
       if ((da < -eps && db > eps) || (da > eps && db < -eps)) {
-        const glm::vec3 x = a + (b - a) * (da / (da - db));
+        const glm::vec3 x = crossing(a, b, da, db);
         kept.push_back(x);
         add_distinct(cut, x, eps);
       }
     }
     std::vector<glm::vec3> distinct;
     for (const glm::vec3& p : kept) add_distinct(distinct, p, eps);
-    if (distinct.size() >= 3) kept_faces.push_back(std::move(kept));
+    if (distinct.size() >= 3) kept_faces.push_back(std::move(distinct));
   }
   if (cut.size() >= 3 && !kept_faces.empty()) kept_faces.push_back(loop_in_plane(cut, plane.normal));
   faces_ = std::move(kept_faces);
@@ -108,9 +115,13 @@ ConvexBody ConvexBody::transformed(const glm::mat4& transform) const {
 }
 
 std::vector<glm::vec3> ConvexBody::vertices() const {
+  float scale = 1.0f;
+  for (const Polygon& face : faces_) {
+    for (const glm::vec3& p : face) scale = std::max({scale, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  }
   std::vector<glm::vec3> points;
   for (const Polygon& face : faces_) {
-    for (const glm::vec3& p : face) add_distinct(points, p, 0.0f);
+    for (const glm::vec3& p : face) add_distinct(points, p, 1e-6f * scale);
   }
   return points;
 }
@@ -119,13 +130,15 @@ std::vector<Plane> ConvexBody::face_planes() const {
   const glm::vec3 inside = centroid_of(vertices());
   std::vector<Plane> planes;
   for (const Polygon& face : faces_) {
+    float face_size = 0.0f;
+    for (const glm::vec3& p : face) face_size = std::max(face_size, glm::distance(p, face[0]));
     glm::vec3 normal(0.0f);  // Newell's method: robust for slightly non-planar loops
     for (std::size_t i = 0; i < face.size(); ++i) {
       const glm::vec3& a = face[i];
       const glm::vec3& b = face[(i + 1) % face.size()];
       normal += glm::vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
     }
-    if (glm::length(normal) == 0.0f) continue;
+    if (glm::length(normal) <= 1e-6f * face_size * face_size) continue;  // a sliver: no reliable plane
     const glm::vec3 center = centroid_of(face);
     if (glm::dot(normal, inside - center) > 0.0f) normal = -normal;
     planes.push_back(Plane::through(center, normal));

@@ -56,9 +56,7 @@ Truth plane_truth(const FloatingBox& s, const glm::vec3& p) {
   return t >= 0.0f && t < reach ? Truth::shadowed : Truth::lit;
 }
 
-float uniform(std::mt19937& rng, float lo, float hi) {
-  return std::uniform_real_distribution<float>(lo, hi)(rng);
-}
+float uniform(pointgen::Random& rng, float lo, float hi) { return rng.uniform(lo, hi); }
 
 }  // namespace
 
@@ -86,7 +84,7 @@ std::string FloatingBox::scene_json() const {
   return s.str();
 }
 
-FloatingBox random_floating_box(std::mt19937& rng, shadow::LightType type) {
+FloatingBox random_floating_box(pointgen::Random& rng, shadow::LightType type) {
   FloatingBox s;
   const glm::vec3 size(uniform(rng, 0.5f, 3.0f), uniform(rng, 0.3f, 2.0f), uniform(rng, 0.5f, 3.0f));
   const glm::vec3 center(uniform(rng, -3.0f, 3.0f), uniform(rng, 0.6f, 3.0f) + 0.5f * size.y, uniform(rng, -3.0f, 3.0f));

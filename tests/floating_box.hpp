@@ -1,9 +1,9 @@
 #pragma once
 #include "app/render/image.hpp"
+#include "pointgen/random.hpp"
 #include "shadow/camera.hpp"
 #include "shadow/light.hpp"
 
-#include <random>
 #include <string>
 
 // A box floating over a ground plane under one light, and the shadow the plane must show, computed
@@ -20,7 +20,7 @@ struct FloatingBox {
 };
 
 // A random configuration whose shadow falls on the plane in view.
-FloatingBox random_floating_box(std::mt19937& rng, shadow::LightType type);
+FloatingBox random_floating_box(pointgen::Random& rng, shadow::LightType type);
 
 // Plane pixels away from shadow and silhouette edges, by their geometric truth.
 struct TruthComparison {

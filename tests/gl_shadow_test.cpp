@@ -35,7 +35,7 @@ TEST_P(FloatingBoxShadow, ShadowAovMatchesGeometryAwayFromEdges) {
   const auto& [backend, type] = GetParam();
   if (backend == "osmesa" && !osmesa_available()) GTEST_SKIP() << "this build has no OSMesa backend";
   const auto context = create_headless_context(backend);
-  std::mt19937 rng(static_cast<unsigned>(env_int("ECOVIEW_TRUTH_SEED", 1) * 10 + static_cast<int>(type)));
+  pointgen::Random rng(static_cast<std::uint64_t>(env_int("ECOVIEW_TRUTH_SEED", 1) * 10 + static_cast<int>(type)));
   const int cases = env_int("ECOVIEW_TRUTH_CASES", 3);
   for (int i = 0; i < cases; ++i) {
     const FloatingBox s = random_floating_box(rng, type);

@@ -66,4 +66,34 @@ TEST(MeshFile, UnknownFormatAndMissingFileAreNamed) {
   }
 }
 
+// A one-triangle glTF with its buffer in tri.bin; `accessor_offset` and `nodes` vary per test.
+std::string triangle_gltf(const std::string& accessor_offset, const std::string& nodes, const std::string& scene_nodes) {
+  return R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "tri.bin", "byteLength": 36}],
+    "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    "accessors": [{"bufferView": 0, "byteOffset": )" + accessor_offset + R"(, "componentType": 5126, "count": 3, "type": "VEC3"}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+    "nodes": )" + nodes + R"(, "scenes": [{"nodes": )" + scene_nodes + R"(}], "scene": 0})";
+}
+
+pointgen::TriangleMesh load_gltf_text(const std::string& gltf) {
+  const float corners[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const std::string bin(reinterpret_cast<const char*>(corners), sizeof corners);
+  return pointgen::load_mesh_file("t.gltf", [&](const std::string& path) -> std::optional<std::string> {
+    if (path == "t.gltf") return gltf;
+    if (path == "tri.bin") return bin;
+    return std::nullopt;
+  });
+}
+
+TEST(GltfFile, ATriangleLoadsAndHostileOffsetsAndNodeGraphsAreRefused) {
+  EXPECT_EQ(load_gltf_text(triangle_gltf("0", R"([{"mesh": 0}])", "[0]")).triangle_count(), 1u);
+  // An offset that wraps around when added to the others.
+  EXPECT_THROW(load_gltf_text(triangle_gltf("18446744073709551612", R"([{"mesh": 0}])", "[0]")), pointgen::FileError);
+  EXPECT_THROW(load_gltf_text(triangle_gltf("4", R"([{"mesh": 0}])", "[0]")), pointgen::FileError);
+  // A child listed twice (exponential growth when nested) and a cycle.
+  EXPECT_THROW(load_gltf_text(triangle_gltf("0", R"([{"children": [1, 1]}, {"mesh": 0}])", "[0]")), pointgen::FileError);
+  EXPECT_THROW(load_gltf_text(triangle_gltf("0", R"([{"mesh": 0, "children": [1]}, {"children": [0]}])", "[0]")),
+               pointgen::FileError);
+}
+
 }  // namespace

@@ -108,12 +108,14 @@ TEST(PoissonDisk, KeepsItsMinimumDistanceAndLeavesNoGaps) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     for (std::size_t j = i + 1; j < points.size(); ++j) ASSERT_GE(glm::distance(points[i], points[j]), r);
   }
-  // Filled: every spot of the rectangle is within 2r of a point (else one more would fit).
-  for (float x = 0.5f; x < 40.0f; x += 1.0f) {
-    for (float y = 0.5f; y < 30.0f; y += 1.0f) {
+  // Filled: a spot farther than r from every point would take one more, so a complete sampling has
+  // none; Bridson's method tries a fixed number of candidates, which leaves small gaps (measured
+  // up to 1.3 r), never big ones.
+  for (float x = 0.25f; x < 40.0f; x += 0.5f) {
+    for (float y = 0.25f; y < 30.0f; y += 0.5f) {
       float nearest = 1e9f;
       for (const glm::vec2& p : points) nearest = std::min(nearest, glm::distance(p, {x, y}));
-      EXPECT_LE(nearest, 2.0f * r) << x << ", " << y;
+      EXPECT_LE(nearest, 1.5f * r) << x << ", " << y;
     }
   }
 }
@@ -155,7 +157,10 @@ TEST(Ecosystem, EachLayerKeepsItsMinimumDistanceAndTreesKeepOutOfClearings) {
       for (const glm::mat4& m : by_species.at(r.species.name)) points.emplace_back(m[3].x, m[3].z);
     }
     const float radius = eco.layer_radius[static_cast<std::size_t>(layer)];
-    ASSERT_GT(radius, 0.0f);
+    // The radius the layer starts from fits its plants; it may shrink a little to make room for
+    // the clearing, not collapse.
+    const float full = std::sqrt(spec.terrain.size.x * spec.terrain.size.y / (1.6f * static_cast<float>(points.size())));
+    ASSERT_GT(radius, 0.6f * full);
     for (std::size_t i = 0; i < points.size(); ++i) {
       for (std::size_t j = i + 1; j < points.size(); ++j) ASSERT_GE(glm::distance(points[i], points[j]), radius * 0.999f);
       if (layer < 2) EXPECT_GE(glm::distance(points[i], glm::vec2(0.0f)), 15.0f) << "a tree or bush in the clearing";

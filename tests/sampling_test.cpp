@@ -112,7 +112,7 @@ InstanceTable table_at(const std::vector<glm::vec3>& positions) {
 }
 
 TEST(ViewSampler, CullsWhatIsOutOfViewAndCountsTheRest) {
-  const SampledMesh mesh{2.0f, 0.5f, 1000, 5000};  // 2 m² in 1,000 triangles: break-even at 4,000 points
+  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000};  // 2 m² in 1,000 triangles: break-even at 4,000 points
   const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, 40}, {0, 0, -40}, {100, 0, -40}})}, {mesh});
   ASSERT_EQ(f.points.size(), 1u) << "the instances behind and beside the view are culled";
   EXPECT_EQ(f.points[0].instance, 1u);
@@ -122,7 +122,7 @@ TEST(ViewSampler, CullsWhatIsOutOfViewAndCountsTheRest) {
 }
 
 TEST(ViewSampler, NearInstancesArePolygonsAndTheBandBetweenDrawsBoth) {
-  const SampledMesh mesh{2.0f, 0.5f, 1000, 5000};
+  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000};
   // Points needed = 131072 / z^2: 4,000 (break-even) at z = 5.7 m; the band is 5.1 to 6.4 m.
   const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, -3.5f}, {0, 0, -5.8f}, {0, 0, -9.5f}})}, {mesh});
   ASSERT_EQ(f.polygons[0], (std::vector<std::uint32_t>{0, 1}));

@@ -38,8 +38,6 @@ class FramePass {
   // Copies the colour to the default framebuffer (a window), scaled to fit.
   void present(int width, int height) const;
 
-  int width() const { return width_; }
-  int height() const { return height_; }
 
  private:
   template <class Sample>

@@ -25,7 +25,10 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle) {
     const pointgen::Bounds b = mesh.bounds();
     pointgen::SampledMesh info;
     info.area = pointgen::surface_area(mesh);
-    info.radius = b.empty() ? 0.0f : glm::max(glm::length(b.min), glm::length(b.max));
+    if (!b.empty()) {
+      info.center = 0.5f * (b.min + b.max);
+      info.radius = 0.5f * glm::length(b.max - b.min);
+    }
     info.triangles = mesh.triangle_count();
     first_.push_back(static_cast<std::uint32_t>(positions.size()));
     if (scene.point_meshes[m]) {

@@ -27,7 +27,6 @@ class PointSplat {
   void bind_for(const gl::Program& program) const;
 
   std::size_t point_count() const { return total_points_; }
-  glm::ivec2 size() const { return size_; }
 
  private:
   glm::ivec2 size_;

@@ -20,7 +20,6 @@ class JsonField {
   JsonField(const nlohmann::json& value, std::string file, std::string path = "");
 
   [[noreturn]] void fail(const std::string& problem) const;
-  const std::string& path() const { return path_; }
 
   // Objects.
   bool has(const char* key) const;

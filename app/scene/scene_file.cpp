@@ -134,7 +134,7 @@ class SceneBuilder {
   void add_ecosystem(const JsonField& object) {
     const pointgen::EcosystemSpec spec = read_ecosystem(object);
     reserve_memory(object, static_cast<double>(pointgen::estimated_bytes(spec)));
-    pointgen::Ecosystem eco = pointgen::grow_ecosystem(spec);
+    pointgen::Ecosystem eco = grow(object, spec);
     const std::size_t first = scene_.meshes.size();
     for (pointgen::TriangleMesh& mesh : eco.meshes) scene_.meshes.push_back(std::move(mesh));
     mark_point_meshes(first + 1, scene_.meshes.size());  // the plants; the terrain (first) stays polygons
@@ -156,6 +156,14 @@ class SceneBuilder {
                                                            : pointgen::Rect{center - 20.0f, center + 20.0f};
         add_moving_set(pointgen::make_herd(count, eco.terrain, pasture, base, pointgen::derive_seed(spec.seed, 0xc0)));
       }
+    }
+  }
+
+  static pointgen::Ecosystem grow(const JsonField& object, const pointgen::EcosystemSpec& spec) {
+    try {
+      return pointgen::grow_ecosystem(spec);
+    } catch (const std::invalid_argument& e) {
+      object["clearings"].fail(e.what());
     }
   }
 

@@ -28,7 +28,7 @@ struct Body {
   std::string name;
   std::vector<BodyPart> parts;
   float stride = 1.5f;
-  float radius = 1.0f;  // of a sphere around the origin holding every pose, for bounds
+  float radius = 1.0f;  // of a sphere around the origin holding every pose (computed from the parts)
   bool as_points = false;  // living bodies become point samples when far; vehicles stay polygons
 };
 

@@ -28,12 +28,16 @@ const std::initializer_list<glm::vec3> paints = {{0.65f, 0.02f, 0.02f}, {0.02f, 
                                                  {0.03f, 0.03f, 0.03f}, {0.75f, 0.55f, 0.02f}, {0.05f, 0.30f, 0.10f},
                                                  {0.40f, 0.42f, 0.45f}};
 
-glm::mat4 part_motion(const BodyPart& part, float distance, float stride) {
+// `travelled` is the distance since t = 0, not wrapped round the loop, so walk cycles and wheels
+// turn on smoothly where the loop closes.
+glm::mat4 part_motion(const BodyPart& part, double travelled, float stride) {
   float angle = 0.0f;
   if (part.motion == PartMotion::swing) {
-    angle = part.amplitude * std::sin(glm::two_pi<float>() * distance / stride + part.phase);
+    const auto cycle = static_cast<float>(std::fmod(travelled, static_cast<double>(stride)) / stride);
+    angle = part.amplitude * std::sin(glm::two_pi<float>() * cycle + part.phase);
   } else if (part.motion == PartMotion::spin) {
-    angle = part.amplitude * distance;
+    const double turn = glm::two_pi<double>() / static_cast<double>(part.amplitude);  // metres per revolution
+    angle = static_cast<float>(static_cast<double>(part.amplitude) * std::fmod(travelled, turn));
   } else {
     return glm::mat4(1.0f);
   }
@@ -50,14 +54,6 @@ std::vector<TriangleMesh> MovingSet::part_meshes() const {
   return meshes;
 }
 
-std::vector<std::string> MovingSet::part_names() const {
-  std::vector<std::string> names;
-  for (const Body& body : bodies) {
-    for (std::size_t p = 0; p < body.parts.size(); ++p) names.push_back(body.name + " part " + std::to_string(p + 1));
-  }
-  return names;
-}
-
 std::vector<InstanceTable> MovingSet::pose(double t, std::size_t first_mesh) const {
   std::vector<std::size_t> first_table;
   std::vector<InstanceTable> tables;
@@ -69,7 +65,8 @@ std::vector<InstanceTable> MovingSet::pose(double t, std::size_t first_mesh) con
     const Body& body = bodies[m.body];
     const LoopPath& path = paths[m.path];
     // Distance is taken in double, then wrapped, so long captures keep their precision.
-    const auto distance = static_cast<float>(std::fmod(m.offset + static_cast<double>(m.speed) * t, path.length()));
+    const double travelled = static_cast<double>(m.speed) * t;
+    const auto distance = static_cast<float>(std::fmod(m.offset + travelled, path.length()));
     glm::vec3 position = path.position(distance);
     if (ground) position.y += ground->height(position.x, position.z);
     const glm::vec3 heading = path.heading(distance, 1.5f * body.radius);
@@ -78,7 +75,7 @@ std::vector<InstanceTable> MovingSet::pose(double t, std::size_t first_mesh) con
                                         glm::vec3(m.scale));
     for (std::size_t p = 0; p < body.parts.size(); ++p) {
       const BodyPart& part = body.parts[p];
-      tables[first_table[m.body] + p].add(placed * part_motion(part, distance, body.stride),
+      tables[first_table[m.body] + p].add(placed * part_motion(part, travelled, body.stride),
                                           m.colors[static_cast<std::size_t>(part.color_slot)], derive_seed(m.seed, p));
     }
   }

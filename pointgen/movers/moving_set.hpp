@@ -32,7 +32,6 @@ struct MovingSet {
 
   // The part meshes, body by body, part by part: the order of the tables pose() returns.
   std::vector<TriangleMesh> part_meshes() const;
-  std::vector<std::string> part_names() const;
   // One table per part mesh with every mover of that body posed at time t (seconds); mesh
   // indices count from `first_mesh`.
   std::vector<InstanceTable> pose(double t, std::size_t first_mesh) const;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace pointgen {
 namespace {
@@ -51,12 +52,13 @@ bool in_clearing(const glm::vec2& p, const std::vector<glm::vec3>& clearings) {
 std::vector<glm::vec2> layer_points(const glm::vec2& min, const glm::vec2& size, int count,
                                     const std::vector<glm::vec3>& clearings, Random& rng, float& radius) {
   radius = std::sqrt(size.x * size.y / (1.6f * static_cast<float>(count)));
-  for (;;) {
+  for (int attempt = 0; attempt < 12; ++attempt) {  // the radius may shrink to a third
     std::vector<glm::vec2> points = poisson_disk(min, min + size, radius, rng);
     const auto free = std::count_if(points.begin(), points.end(), [&](const glm::vec2& p) { return !in_clearing(p, clearings); });
     if (free >= count) return points;
     radius *= 0.9f;
   }
+  throw std::invalid_argument("the clearings leave too little room for " + std::to_string(count) + " plants");
 }
 
 // Picks `count` of the points not yet taken, each with probability growing with its density
@@ -132,6 +134,7 @@ Ecosystem grow_ecosystem(const EcosystemSpec& spec) {
   }
 
   const glm::vec2 min = spec.terrain.center - 0.5f * spec.terrain.size;
+  const std::uint64_t instance_seeds = derive_seed(spec.seed, 0x1257a9ce);  // apart from the layers' seeds
   std::uint64_t instance_id = 1;  // 0 is the terrain
   for (int layer = 0; layer < layer_count; ++layer) {
     int total = 0;
@@ -149,7 +152,7 @@ Ecosystem grow_ecosystem(const EcosystemSpec& spec) {
       if (placement_layer(r.species.kind) != layer || r.count == 0) continue;
       const DensityMap density(min, spec.terrain.size, r.count, rng);
       for (std::size_t i : pick(points, taken, density, r.count, rng)) {
-        const std::uint64_t seed = derive_seed(spec.seed, instance_id++);
+        const std::uint64_t seed = derive_seed(instance_seeds, instance_id++);
         Random own(seed);
         const glm::vec2 p = points[i];
         const glm::mat4 transform =

@@ -32,6 +32,7 @@ struct Ecosystem {
   std::vector<float> layer_radius;    // the minimum distance kept in each layer (trees, bushes, ground)
 };
 
+// Throws std::invalid_argument when the clearings leave no room for the plants asked for.
 Ecosystem grow_ecosystem(const EcosystemSpec& spec);
 
 // Memory the ecosystem will take in this process, in bytes, known before growing it.

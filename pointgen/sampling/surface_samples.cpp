@@ -34,7 +34,7 @@ std::vector<SurfaceSample> sample_surface(const TriangleMesh& mesh, std::size_t 
   samples.reserve(count);
   Random rng(seed);
   for (std::size_t i = 0; i < count; ++i) {
-    const double pick = static_cast<double>(rng.uniform()) * total;
+    const double pick = rng.uniform_double() * total;
     const auto it = std::upper_bound(cumulative.begin(), cumulative.end(), pick);
     const std::size_t t = 3 * static_cast<std::size_t>(std::min<std::ptrdiff_t>(it - cumulative.begin(),
                                                                                static_cast<std::ptrdiff_t>(cumulative.size()) - 1));

@@ -33,7 +33,7 @@ SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTabl
     const SampledMesh& mesh = meshes[table.mesh];
     for (std::size_t i = 0; i < table.size(); ++i) {
       const glm::mat4& m = table.transforms[i];
-      const glm::vec3 center(m[3]);
+      const glm::vec3 center(m * glm::vec4(mesh.center, 1.0f));
       const float scale = std::cbrt(std::abs(glm::determinant(glm::mat3(m))));
       const float radius = mesh.radius * scale;
       const bool visible = std::any_of(frusta.begin(), frusta.end(), [&](const std::array<glm::vec4, 6>& planes) {
@@ -43,7 +43,7 @@ SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTabl
       // Distances to the centre: the count is right on average over the object (docs/point_density.md).
       const float distance = std::max(glm::distance(view.eye, center), std::max(0.5f * radius, 1e-3f));
       const float depth = std::max(glm::dot(center - view.eye, view.forward), distance * view.edge_cos);
-      const float needed = points_needed(view.density, mesh.area * scale * scale, std::min(depth, distance), distance);
+      const float needed = points_needed(view.density, mesh.area * scale * scale, depth, distance);
       const float polygon_equivalent = view.points_per_triangle * static_cast<float>(mesh.triangles);
       const float ratio = needed / polygon_equivalent;
       const bool as_polygons = ratio > band_low || needed > static_cast<float>(mesh.samples);

@@ -9,7 +9,8 @@ namespace pointgen {
 // What the sampler knows of a mesh whose instances may be drawn as points.
 struct SampledMesh {
   float area = 0.0f;            // surface area, square metres
-  float radius = 0.0f;          // of a sphere around the origin holding the mesh
+  glm::vec3 center{0.0f};       // of its bounds, in the mesh's frame
+  float radius = 0.0f;          // of a sphere around `center` holding the mesh
   std::size_t triangles = 0;
   std::size_t samples = 0;      // length of its surface-sample list
 };
