@@ -5,13 +5,14 @@ layout(local_size_x = 64) in;
 
 uniform mat4 view_projection;
 uniform uint total_points;
+uniform uint first_thread;  // dispatches are split to stay within the work-group count limit
 uniform int splat_size;
 uniform float depth_bias;  // added to window depth (shadow maps)
 
 const uint points_per_thread = 16u;
 
 void main() {
-  uint first = gl_GlobalInvocationID.x * points_per_thread;
+  uint first = (first_thread + gl_GlobalInvocationID.x) * points_per_thread;
   if (first >= total_points) return;
   uint draw = draw_of(first);
   uint last = min(first + points_per_thread, total_points);

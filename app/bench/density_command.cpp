@@ -203,14 +203,10 @@ CLI::App* add_density_command(CLI::App& app, DensityOptions& o) {
 
 int run_density(const DensityOptions& o) {
   parse_size(o.size);
-  if (o.backend != "egl" && o.backend != "osmesa") {
-    throw InputError("--backend: unknown backend '" + o.backend + "' (available: egl, osmesa)");
-  }
+  check_backend(o.backend);
   const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
   const std::string scene_name = o.scene.empty() ? default_scene_name : o.scene;
-  std::error_code ec;
-  fs::create_directories(o.out, ec);
-  if (ec || !fs::is_directory(o.out)) throw RuntimeFailure("--out: cannot create folder " + o.out);
+  make_out_folder(o.out);
 
   const Plan plan = plan_for(o.quick);
   const std::unique_ptr<GlContext> context = create_headless_context(o.backend);

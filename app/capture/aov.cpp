@@ -22,6 +22,7 @@ std::vector<Aov> parse_aov_list(const std::string& list) {
   std::vector<Aov> aovs;
   std::stringstream stream(list);
   std::string name;
+  if (!list.empty() && list.back() == ',') throw InputError("--aov: empty name in '" + list + "'");
   while (std::getline(stream, name, ',')) {
     const Aov all[] = {Aov::color, Aov::shadow, Aov::depth};
     const auto* found = std::find_if(std::begin(all), std::end(all), [&](Aov a) { return aov_name(a) == name; });

@@ -30,7 +30,12 @@ fs::path frame_file(const fs::path& out, Aov aov, int frame) {
 
 FrameRange default_frames(const std::optional<CameraPath>& path, double fps) {
   if (!path) return {0, 1};
-  return {0, static_cast<int>(std::floor(path->duration() * fps + 1e-9)) + 1};  // every t in [0, duration]
+  const double frames = std::floor(path->duration() * fps + 1e-9) + 1.0;  // every t in [0, duration]
+  if (frames > max_frame_count) {
+    throw InputError("--fps: the path at this rate has " + std::to_string(static_cast<long long>(frames)) +
+                     " frames, more than " + std::to_string(max_frame_count) + "; lower --fps or give --frames");
+  }
+  return {0, static_cast<int>(frames)};
 }
 
 }  // namespace
@@ -63,11 +68,9 @@ int run_capture(const CaptureOptions& o) {
   const RenderSettings settings = render_settings(o.render);
   const double fps = check_fps(o.fps);
   const std::vector<Aov> aovs = parse_aov_list(o.aov);
-  if (o.backend != "egl" && o.backend != "osmesa") {
-    throw InputError("--backend: unknown backend '" + o.backend + "' (available: egl, osmesa)");
-  }
-  const std::optional<FrameRange> asked_frames =
-      o.frames.empty() ? std::nullopt : std::optional<FrameRange>(parse_frames(o.frames));
+  check_backend(o.backend);
+  const bool frames_asked = !o.frames.empty();
+  const FrameRange asked_frames = frames_asked ? parse_frames(o.frames) : FrameRange{};
   const auto load_start = std::chrono::steady_clock::now();
   const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
   std::cout << describe_scene(scene, std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count())
@@ -75,14 +78,10 @@ int run_capture(const CaptureOptions& o) {
   const shadow::Light& light = select_light(scene, o.light);
   std::optional<CameraPath> path;
   if (!o.path.empty()) path = CameraPath::load(open_input(o.path, "paths"));
-  const FrameRange frames = asked_frames ? *asked_frames : default_frames(path, fps);
+  const FrameRange frames = frames_asked ? asked_frames : default_frames(path, fps);
 
+  make_out_folder(o.out);
   const fs::path out(o.out);
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec || !fs::is_directory(out)) {
-    throw RuntimeFailure("--out: cannot create folder " + o.out + " (" + ec.message() + ")");
-  }
   std::vector<int> todo;
   for (int frame = frames.begin; frame < frames.end; ++frame) {
     bool done = !o.force;

@@ -4,6 +4,7 @@
 #include "app/scene/scene_file.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <regex>
 
 namespace ecoview {
@@ -28,6 +29,9 @@ FrameRange parse_frames(const std::string& text) {
   const FrameRange range{std::stoi(m[1]), std::stoi(m[2])};
   if (range.end <= range.begin) {
     throw InputError("--frames: B must be greater than A (frames A to B-1), got '" + text + "'");
+  }
+  if (range.end > max_frame_count) {
+    throw InputError("--frames: frames are numbered below " + std::to_string(max_frame_count) + " (5 digits), got '" + text + "'");
   }
   return range;
 }
@@ -73,6 +77,24 @@ double check_fps(double fps) {
     throw InputError("--fps: must be a number above 0 and at most 10000");
   }
   return fps;
+}
+
+const std::string& check_backend(const std::string& backend) {
+  if (backend != "egl" && backend != "osmesa") {
+    throw InputError("--backend: unknown backend '" + backend + "' (available: egl, osmesa)");
+  }
+  return backend;
+}
+
+void make_out_folder(const std::string& out) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (out.empty()) throw InputError("--out: empty folder name");
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw InputError("--out: " + out + " exists and is not a folder");
+  fs::create_directories(out, ec);
+  if (ec || !fs::is_directory(out)) {
+    throw RuntimeFailure("--out: cannot create folder " + out + " (" + ec.message() + "); check permissions and free space");
+  }
 }
 
 Scene load_scene_option(const std::string& scene, double memory_budget_gib) {

@@ -18,7 +18,9 @@ struct FrameRange {
   int begin = 0;
   int end = 1;  // one past the last frame
 };
-FrameRange parse_frames(const std::string& text);  // "A:B", frames A … B-1
+// Frame numbers are written with 5 digits.
+constexpr int max_frame_count = 100000;
+FrameRange parse_frames(const std::string& text);  // "A:B", frames A … B-1, B at most max_frame_count
 
 int check_shadow_size(int size);
 
@@ -36,6 +38,13 @@ void add_render_options(CLI::App& command, RenderOptions& options);
 // Validated settings; throws InputError naming the option.
 RenderSettings render_settings(const RenderOptions& options);
 double check_fps(double fps);
+
+// Checks a --backend name (egl or osmesa) before any work is done.
+const std::string& check_backend(const std::string& backend);
+
+// Makes the --out folder; throws InputError when it names a file or nothing, RuntimeFailure when
+// it cannot be made.
+void make_out_folder(const std::string& out);
 
 // The scene named by --scene (a file or a shipped scene; the default scene when empty), refused
 // when it would need more than `memory_budget_gib` (--memory-budget).

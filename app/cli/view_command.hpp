@@ -11,8 +11,8 @@ struct ViewOptions {
   std::string scene;
   RenderOptions render;
   int light = 0;
-  int exit_after = 0;
-  double memory_budget_gib = 4.0;  // frames; 0 runs until the window is closed
+  int exit_after = 0;  // frames; 0 runs until the window is closed
+  double memory_budget_gib = 4.0;
 };
 
 // Registers `ecoview view` on `app`.

@@ -1,7 +1,9 @@
 #pragma once
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <utility>
+#include <vector>
 
 // Owners of GL object names: created in the constructor, deleted in the destructor, movable,
 // not copyable. They need a current context with the GL functions loaded.
@@ -60,6 +62,14 @@ struct QueryKind {
 };
 
 using Buffer = Object<BufferKind>;
+
+// Immutable storage for `buffer` holding `data`; an empty vector still gets a few bytes, as GL
+// refuses storage of size 0.
+template <class T>
+void store(const Buffer& buffer, const std::vector<T>& data, GLbitfield flags = 0) {
+  glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(std::max<std::size_t>(data.size(), 1) * sizeof(T)),
+                       data.empty() ? nullptr : data.data(), flags);
+}
 using VertexArray = Object<VertexArrayKind>;
 using Texture = Object<TextureKind>;
 using Framebuffer = Object<FramebufferKind>;

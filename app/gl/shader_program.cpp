@@ -13,7 +13,8 @@ namespace {
 // The embedded source of shaders/<file> with each line `#include "other"` replaced by that file.
 std::string source_of(const std::string& file, int depth = 0) {
   const auto text = resources::find("shaders/" + file);
-  if (!text || depth > 8) throw RuntimeFailure("shader shaders/" + file + " is not embedded in this binary");
+  if (depth > 8) throw RuntimeFailure("shader shaders/" + file + ": includes nest deeper than 8");
+  if (!text) throw RuntimeFailure("shader shaders/" + file + " is not embedded in this binary");
   std::istringstream lines{std::string(*text)};
   std::string out, line;
   while (std::getline(lines, line)) {

@@ -1,5 +1,6 @@
 #include "app/render/frame_pass.hpp"
 
+#include "app/errors.hpp"
 #include "app/gl/shader_program.hpp"
 
 #include <algorithm>
@@ -29,6 +30,9 @@ FramePass::FramePass(int width, int height)
   glNamedFramebufferTexture(fb, GL_DEPTH_ATTACHMENT, depth_buffer_.name(), 0);
   const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
   glNamedFramebufferDrawBuffers(fb, 3, buffers);
+  if (glCheckNamedFramebufferStatus(fb, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    throw RuntimeFailure("the frame's render targets are not supported by this driver; try another --backend");
+  }
 }
 
 void FramePass::render(const GpuScene& scene, const shadow::Camera& camera, const shadow::Light& light,

@@ -15,11 +15,6 @@ struct Instance {
   glm::vec4 color;
 };
 
-template <class T>
-void upload(const gl::Buffer& buffer, const std::vector<T>& data, GLbitfield flags = 0) {
-  glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data(), flags);
-}
-
 std::vector<Instance> instances_of(const pointgen::InstanceTable& table) {
   std::vector<Instance> instances;
   instances.reserve(table.size());
@@ -46,15 +41,15 @@ GpuScene::GpuScene(const Scene& scene) {
       vertices.push_back({mesh.positions[i], mesh.normals[i], mesh.colors[i]});
     }
     Mesh& m = meshes_.emplace_back();
-    upload(m.vertices, vertices);
-    upload(m.indices, mesh.indices);
+    gl::store(m.vertices, vertices);
+    gl::store(m.indices, mesh.indices);
     m.index_count = static_cast<GLsizei>(mesh.indices.size());
   }
   for (const pointgen::InstanceTable& group : scene.groups) {
     const std::vector<Instance> instances = instances_of(group);
     const Mesh& mesh = meshes_[group.mesh];
     Group& g = groups_.emplace_back();
-    upload(g.instances, instances, GL_DYNAMIC_STORAGE_BIT);
+    gl::store(g.instances, instances, GL_DYNAMIC_STORAGE_BIT);
     g.index_count = mesh.index_count;
     g.instance_count = static_cast<GLsizei>(instances.size());
     g.capacity = instances.size();

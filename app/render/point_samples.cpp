@@ -11,11 +11,6 @@ namespace {
 // Longest sample list of one mesh; an instance needing more is drawn as polygons.
 constexpr std::size_t max_samples = 1u << 17;
 
-void upload(const gl::Buffer& buffer, const std::vector<glm::vec4>& data) {
-  glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(std::max<std::size_t>(data.size(), 1) * sizeof(glm::vec4)),
-                       data.empty() ? nullptr : data.data(), 0);
-}
-
 }  // namespace
 
 PointSamples::PointSamples(const Scene& scene, float points_per_triangle) {
@@ -42,9 +37,9 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle) {
     }
     meshes_.push_back(info);
   }
-  upload(positions_, positions);
-  upload(normals_, normals);
-  upload(colors_, colors);
+  gl::store(positions_, positions);
+  gl::store(normals_, normals);
+  gl::store(colors_, colors);
 }
 
 void PointSamples::bind(GLuint positions, GLuint normals, GLuint colors) const {

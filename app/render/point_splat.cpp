@@ -1,5 +1,6 @@
 #include "app/render/point_splat.hpp"
 
+#include "app/errors.hpp"
 #include "app/gl/shader_program.hpp"
 
 #include <algorithm>
@@ -14,7 +15,10 @@ struct GpuInstance {
 
 constexpr GLuint draws_binding = 1, instances_binding = 2, positions_binding = 3, normals_binding = 4,
                  colors_binding = 5, depths_binding = 6, winners_binding = 7;
-constexpr GLuint points_per_group = 64 * 16;  // local size x points per thread (point_walk.glsl)
+constexpr GLuint threads_per_group = 64, points_per_thread = 16;  // point_walk.glsl
+constexpr GLuint max_groups_per_dispatch = 65535;                   // GL's guaranteed minimum
+// Point indices are 32-bit in the shaders (and the last one marks "no point").
+constexpr std::uint64_t max_points = 0xFFFFFFFEu;
 
 // Replaces a buffer's content, growing its storage when it is too small.
 template <class T>
@@ -48,10 +52,14 @@ void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std
   std::vector<GpuInstance> instances;
   gpu_draws.reserve(draws.size());
   instances.reserve(draws.size());
-  std::uint32_t first_point = 0;
+  std::uint64_t first_point = 0;
   for (const pointgen::PointDraw& d : draws) {
     const pointgen::InstanceTable& table = tables[d.table];
-    gpu_draws.emplace_back(first_point, d.count, samples.first_sample(table.mesh), static_cast<std::uint32_t>(instances.size()));
+    if (first_point + d.count > max_points) {
+      throw RuntimeFailure("a frame needs more than " + std::to_string(max_points) + " points; lower --k or the frame size");
+    }
+    gpu_draws.emplace_back(static_cast<std::uint32_t>(first_point), d.count, samples.first_sample(table.mesh),
+                           static_cast<std::uint32_t>(instances.size()));
     instances.push_back({table.transforms[d.instance], glm::vec4(table.tints[d.instance], 1.0f)});
     first_point += d.count;
   }
@@ -80,7 +88,12 @@ void PointSplat::dispatch(const gl::Program& program, const glm::mat4& view_proj
   gl::set_uniform(program, "splat_size", splat_size);
   gl::set_uniform(program, "depth_bias", depth_bias);
   glUseProgram(program.name());
-  glDispatchCompute(static_cast<GLuint>((total_points_ + points_per_group - 1) / points_per_group), 1, 1);
+  const std::size_t threads = (total_points_ + points_per_thread - 1) / points_per_thread;
+  const std::size_t groups = (threads + threads_per_group - 1) / threads_per_group;
+  for (std::size_t first = 0; first < groups; first += max_groups_per_dispatch) {
+    gl::set_uniform(program, "first_thread", static_cast<unsigned>(first * threads_per_group));
+    glDispatchCompute(static_cast<GLuint>(std::min<std::size_t>(max_groups_per_dispatch, groups - first)), 1, 1);
+  }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 

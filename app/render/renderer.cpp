@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 namespace ecoview {
 namespace {
@@ -30,9 +31,29 @@ ShadowMethod parse_shadow_method(const std::string& name) {
   throw InputError("--method: '" + name + "' is not available in this build (available: uniform, none)");
 }
 
+// The settings, checked against what this driver can allocate before anything is.
+static RenderSettings within_limits(const RenderSettings& s) {
+  GLint max_texture = 0;
+  GLint64 max_storage_block = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_storage_block);
+  auto bytes = [](int w, int h) { return 4 * static_cast<GLint64>(w) * h; };  // one uint per pixel (PointSplat)
+  if (std::max(s.width, s.height) > max_texture || (s.points && bytes(s.width, s.height) > max_storage_block)) {
+    throw InputError("--size: " + std::to_string(s.width) + "x" + std::to_string(s.height) + " is more than this driver "
+                     "renders (textures up to " + std::to_string(max_texture) + ", point buffers up to " +
+                     std::to_string(max_storage_block >> 20) + " MiB); use a smaller size");
+  }
+  if (s.shadow_size > max_texture || (s.points && bytes(s.shadow_size, s.shadow_size) > max_storage_block)) {
+    throw InputError("--shadow-size: " + std::to_string(s.shadow_size) + " is more than this driver renders (textures up to " +
+                     std::to_string(max_texture) + ", point buffers up to " + std::to_string(max_storage_block >> 20) +
+                     " MiB); use a smaller map");
+  }
+  return s;
+}
+
 Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
     : scene_(scene),
-      settings_(settings),
+      settings_(within_limits(settings)),
       scene_bounds_(scene.bounds()),
       tables_(scene.groups),
       gpu_scene_(scene),
@@ -50,14 +71,15 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
 
 Image<std::uint32_t> Renderer::count_points() { return frame_points_.count_points(view_projection_); }
 
+float Renderer::aspect() const { return static_cast<float>(settings_.width) / static_cast<float>(settings_.height); }
+
 pointgen::SamplerView Renderer::sampler_view(const shadow::Camera& camera, std::vector<glm::mat4> views) const {
-  const float aspect = static_cast<float>(settings_.width) / static_cast<float>(settings_.height);
   const float tan_half = std::tan(glm::radians(camera.fov_y_deg) / 2.0f);
   pointgen::SamplerView view;
   view.views = std::move(views);
   view.eye = camera.position;
   view.forward = camera.forward();
-  view.edge_cos = 1.0f / std::sqrt(1.0f + tan_half * tan_half * (1.0f + aspect * aspect));
+  view.edge_cos = 1.0f / std::sqrt(1.0f + tan_half * tan_half * (1.0f + aspect() * aspect()));
   view.density = {0.5f * static_cast<float>(settings_.height) / tan_half, settings_.k};
   view.points_per_triangle = settings_.points_per_triangle;
   return view;
@@ -88,73 +110,80 @@ pointgen::SampledFrame Renderer::measured(const pointgen::SampledFrame& selectio
   return out;
 }
 
+// The shadow map for this frame; with points on, far instances of point meshes are splatted into
+// it. Timed from the first GL draw to the last.
 void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Light& light) {
-  const float aspect = static_cast<float>(settings_.width) / static_cast<float>(settings_.height);
-  setup_ = shadow::focused_uniform_map(camera, aspect, light, scene_bounds_, settings_.shadow_size);
-  if (!settings_.points) {
-    shadow_pass_.render(gpu_scene_, setup_);
-    return;
-  }
+  setup_ = shadow::focused_uniform_map(camera, aspect(), light, scene_bounds_, settings_.shadow_size);
   std::vector<glm::mat4> views;
   for (const shadow::ShadowView& v : setup_.views) views.push_back(v.view_projection());
-  const auto start = std::chrono::steady_clock::now();
-  const pointgen::SampledFrame selection = pointgen::sample_view(sampler_view(camera, views), tables_, samples_.meshes());
-  stats_.sample_ms += ms_since(start);
-  upload_polygons(selection);
+  if (settings_.points) {
+    const auto start = std::chrono::steady_clock::now();
+    const pointgen::SampledFrame selection = pointgen::sample_view(sampler_view(camera, views), tables_, samples_.meshes());
+    stats_.sample_ms += ms_since(start);
+    upload_polygons(selection);
+    if (!shadow_points_) shadow_points_ = std::make_unique<PointSplat>(glm::ivec2(settings_.shadow_size));
+    shadow_points_->upload(selection.points, tables_, samples_);
+  }
+  glBeginQuery(GL_TIME_ELAPSED, shadow_timer_.name());
   shadow_pass_.render(gpu_scene_, setup_);
-  if (!shadow_points_) shadow_points_ = std::make_unique<PointSplat>(glm::ivec2(settings_.shadow_size));
-  shadow_points_->upload(selection.points, tables_, samples_);
-  for (std::size_t layer = 0; layer < views.size(); ++layer) {
+  for (std::size_t layer = 0; settings_.points && layer < views.size(); ++layer) {
     shadow_points_->splat(views[layer], settings_.shadow_splat_size, shadow_point_bias, false);
     shadow_pass_.add_points(*shadow_points_, static_cast<int>(layer));
   }
+  glEndQuery(GL_TIME_ELAPSED);
+  stats_.shadow_pass_ms = elapsed_ms(shadow_timer_);
 }
 
-void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, double t) {
+void Renderer::pose(double t) {
   for (const Animation& animation : scene_.animations) {
     std::vector<pointgen::InstanceTable> posed = animation.set.pose(t, animation.first_mesh);
     for (std::size_t i = 0; i < posed.size(); ++i) {
       const std::size_t group = animation.first_group + i;
       if (settings_.point_meshes_only && !scene_.point_meshes[posed[i].mesh]) continue;
       tables_[group] = std::move(posed[i]);
-      if (!scene_.point_meshes[tables_[group].mesh]) gpu_scene_.update(group, tables_[group]);
+      // Point meshes get their drawn subset per pass (upload_polygons); with points off, all of them.
+      if (!settings_.points || !scene_.point_meshes[tables_[group].mesh]) gpu_scene_.update(group, tables_[group]);
     }
   }
+}
+
+void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, double t) {
+  pose(t);
   stats_ = {};
+  view_projection_ = camera.projection(aspect()) * camera.view();
   std::optional<FramePass::ShadowLookup> lookup;
   if (settings_.method == ShadowMethod::uniform) {
-    glBeginQuery(GL_TIME_ELAPSED, shadow_timer_.name());
     render_shadow_map(camera, light);
-    glEndQuery(GL_TIME_ELAPSED);
-    stats_.shadow_pass_ms = elapsed_ms(shadow_timer_);
     lookup.emplace(FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size()});
   }
-  const float aspect = static_cast<float>(settings_.width) / static_cast<float>(settings_.height);
-  view_projection_ = camera.projection(aspect) * camera.view();
-  if (!settings_.points) {
-    glBeginQuery(GL_TIME_ELAPSED, frame_timer_.name());
-    frame_pass_.render(gpu_scene_, camera, light, lookup);
-    glEndQuery(GL_TIME_ELAPSED);
-    stats_.frame_pass_ms = elapsed_ms(frame_timer_);
-    for (const pointgen::InstanceTable& table : tables_) stats_.triangles += scene_.meshes[table.mesh].triangle_count() * table.size();
-    return;
+  pointgen::SampledFrame selection;
+  if (settings_.points) {
+    const auto start = std::chrono::steady_clock::now();
+    selection = pointgen::sample_view(sampler_view(camera, {view_projection_}), tables_, samples_.meshes());
+    stats_.sample_ms += ms_since(start);
+    if (settings_.measure != RenderSettings::Measure::off) selection = measured(selection);
+    upload_polygons(selection);
+    frame_points_.upload(selection.points, tables_, samples_);
   }
-  const auto start = std::chrono::steady_clock::now();
-  pointgen::SampledFrame selection = pointgen::sample_view(sampler_view(camera, {view_projection_}), tables_, samples_.meshes());
-  stats_.sample_ms += ms_since(start);
-  if (settings_.measure != RenderSettings::Measure::off) selection = measured(selection);
-  upload_polygons(selection);
   glBeginQuery(GL_TIME_ELAPSED, frame_timer_.name());
   frame_pass_.render(gpu_scene_, camera, light, lookup);
-  frame_points_.upload(selection.points, tables_, samples_);
-  frame_points_.splat(view_projection_, settings_.splat_size, 0.0f, true);
-  frame_pass_.shade_points(frame_points_, camera, light, lookup);
+  if (settings_.points) {
+    frame_points_.splat(view_projection_, settings_.splat_size, 0.0f, true);
+    frame_pass_.shade_points(frame_points_, camera, light, lookup);
+  }
   glEndQuery(GL_TIME_ELAPSED);
   stats_.frame_pass_ms = elapsed_ms(frame_timer_);
   stats_.points = selection.point_count;
-  stats_.triangles = selection.triangle_count;
   for (const pointgen::InstanceTable& table : tables_) {
-    if (!scene_.point_meshes[table.mesh]) stats_.triangles += scene_.meshes[table.mesh].triangle_count() * table.size();
+    const bool sampled = settings_.points && scene_.point_meshes[table.mesh];
+    if (!sampled) stats_.triangles += scene_.meshes[table.mesh].triangle_count() * table.size();
+  }
+  stats_.triangles += selection.triangle_count;
+  if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+    char code[16];
+    std::snprintf(code, sizeof code, "0x%04x", error);
+    throw RuntimeFailure(std::string("OpenGL error ") + code + " while rendering; try a smaller --size or --shadow-size, "
+                         "or another --backend");
   }
 }
 

@@ -54,6 +54,9 @@ class Renderer {
   Image<std::uint32_t> count_points();
 
  private:
+  float aspect() const;
+  // Moves the moving objects to time t.
+  void pose(double t);
   pointgen::SamplerView sampler_view(const shadow::Camera& camera, std::vector<glm::mat4> views) const;
   // Loads the GPU instance buffers of point meshes with the instances `selection` draws as polygons.
   void upload_polygons(const pointgen::SampledFrame& selection);

@@ -55,14 +55,16 @@ shadow::Camera CameraPath::at(double t, const shadow::Camera& base) const {
     const auto i = static_cast<std::size_t>(next - keys_.begin() - 1);
     camera.position = spline(keys_, i, t, [](const Key& k) { return k.position; });
     camera.target = spline(keys_, i, t, [](const Key& k) { return k.target; });
-    camera.up = glm::normalize(spline(keys_, i, t, [](const Key& k) { return k.up; }));
+    camera.up = spline(keys_, i, t, [](const Key& k) { return k.up; });
   }
   // Between valid keys a spline can pass through a degenerate frame; keep the camera valid.
   if (glm::length(camera.target - camera.position) < 1e-6f) camera.target = camera.position + base.forward();
   const glm::vec3 forward = glm::normalize(camera.target - camera.position);
-  if (glm::length(glm::cross(forward, camera.up)) < 1e-4f) {
+  // Between opposite up vectors the blend passes through zero: fall back to a valid one.
+  if (!(glm::length(glm::cross(forward, camera.up)) >= 1e-4f * glm::length(camera.up)) || glm::length(camera.up) < 1e-6f) {
     camera.up = std::abs(forward.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
   }
+  camera.up = glm::normalize(camera.up);
   return camera;
 }
 

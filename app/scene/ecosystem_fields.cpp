@@ -71,10 +71,11 @@ pointgen::PlantSpecies read_species(const JsonField& field, const std::vector<po
   return s;
 }
 
-pointgen::EcosystemSpec read_ecosystem(const JsonField& field) {
+pointgen::EcosystemSpec read_ecosystem(const JsonField& field, std::uint64_t scene_seed) {
   field.only_keys({"type", "seed", "center", "size", "terrain", "species", "plants", "clearings", "animals"});
   pointgen::EcosystemSpec spec;
-  if (auto f = field.optional("seed")) spec.seed = static_cast<std::uint64_t>(f->integer(0, 2147483647));
+  const int own_seed = field.has("seed") ? field["seed"].integer(0, 2147483647) : 0;
+  spec.seed = pointgen::derive_seed(scene_seed, static_cast<std::uint64_t>(own_seed) + 0xec0);
   const glm::vec3 center = field.has("center") ? field["center"].vec3() : glm::vec3(0.0f);
   const std::vector<double> size = field["size"].numbers(2, 1, 1e5);
   spec.terrain.center = {center.x, center.z};

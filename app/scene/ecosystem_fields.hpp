@@ -9,7 +9,8 @@ namespace ecoview {
 // catalogue species it starts from. `defined` holds species the scene file defined by name.
 pointgen::PlantSpecies read_species(const JsonField& field, const std::vector<pointgen::PlantSpecies>& defined);
 
-// {"seed", "center", "size", "terrain": {...}, "species": [...], "plants": [{"species", "count", "variants"}]}
-pointgen::EcosystemSpec read_ecosystem(const JsonField& field);
+// {"seed", "center", "size", "terrain": {...}, "species": [...], "plants": [{"species", "count", "variants"}]};
+// its seed is derived from the scene's and its own.
+pointgen::EcosystemSpec read_ecosystem(const JsonField& field, std::uint64_t scene_seed);
 
 }  // namespace ecoview

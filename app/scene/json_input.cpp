@@ -29,6 +29,22 @@ std::string position(const std::string& text, std::size_t byte) {
   return std::to_string(line) + ":" + std::to_string(column);
 }
 
+// The first place `needle` occurs in JSON text outside string literals.
+std::size_t find_outside_strings(const std::string& text, const std::string& needle) {
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (in_string) {
+      if (text[i] == '\\') ++i;
+      else if (text[i] == '"') in_string = false;
+    } else if (text[i] == '"') {
+      in_string = true;
+    } else if (text.compare(i, needle.size(), needle) == 0) {
+      return i;
+    }
+  }
+  return std::string::npos;
+}
+
 }  // namespace
 
 nlohmann::json parse_json(const std::string& text, const std::string& file) {
@@ -46,7 +62,7 @@ nlohmann::json parse_json(const std::string& text, const std::string& file) {
     const std::size_t close = reason.find('\'', open + 1);
     const std::size_t at = open == std::string::npos || close == std::string::npos
                                ? std::string::npos
-                               : text.find(reason.substr(open + 1, close - open - 1));
+                               : find_outside_strings(text, reason.substr(open + 1, close - open - 1));
     throw InputError(file + (at == std::string::npos ? "" : ":" + position(text, at)) +
                      ": invalid JSON: " + reason.substr(reason.find(']') + 2));
   }

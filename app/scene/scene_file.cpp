@@ -35,25 +35,28 @@ class SceneBuilder {
 
   void add_object(const JsonField& object) {
     const std::string type = object["type"].string();
-    const glm::vec3 color = object.has("color") ? srgb_to_linear(object["color"].color()) : default_color;
     if (type == "plane") {
       object.only_keys({"type", "center", "size", "color"});
+      const glm::vec3 color = color_of(object, default_color);
       const std::vector<double> size = object["size"].numbers(2, 1e-6, 2 * JsonField::max_coordinate);
       const glm::mat4 t = glm::scale(glm::translate(glm::mat4(1.0f), object["center"].vec3()),
                                      glm::vec3(size[0], 1.0, size[1]));
       add_instance(primitive("plane"), t, color);
     } else if (type == "box") {
       object.only_keys({"type", "min", "max", "color"});
+      const glm::vec3 color = color_of(object, default_color);
       const glm::vec3 min = object["min"].vec3();
       const glm::vec3 max = object["max"].vec3();
       if (glm::any(glm::greaterThanEqual(min, max))) object["max"].fail("must be greater than min in x, y and z");
       add_instance(primitive("box"), glm::scale(glm::translate(glm::mat4(1.0f), 0.5f * (min + max)), max - min), color);
     } else if (type == "sphere") {
       object.only_keys({"type", "center", "radius", "color"});
+      const glm::vec3 color = color_of(object, default_color);
       const float radius = object["radius"].number_f(1e-6, JsonField::max_coordinate);
       add_instance(primitive("sphere"), glm::scale(glm::translate(glm::mat4(1.0f), object["center"].vec3()), glm::vec3(radius)), color);
     } else if (type == "mesh") {
       object.only_keys({"type", "file", "transforms", "color"});
+      const glm::vec3 color = color_of(object, default_color);
       const std::size_t mesh = mesh_file(object["file"]);
       if (!object.has("transforms")) {
         add_instance(mesh, glm::mat4(1.0f), color);
@@ -84,6 +87,10 @@ class SceneBuilder {
   }
 
  private:
+  static glm::vec3 color_of(const JsonField& object, const glm::vec3& fallback) {
+    return object.has("color") ? srgb_to_linear(object["color"].color()) : fallback;
+  }
+
   std::size_t primitive(const std::string& kind) {
     const auto it = primitives_.find(kind);
     if (it != primitives_.end()) return it->second;
@@ -122,7 +129,7 @@ class SceneBuilder {
     const pointgen::PlantSpecies species = read_species(object["species"], {});
     const auto seed = object.has("seed") ? static_cast<std::uint64_t>(object["seed"].integer(0, 2147483647)) : 1u;
     const float scale = object.has("scale") ? object["scale"].number_f(1e-3, 1e3) : 1.0f;
-    const glm::vec3 color = object.has("color") ? srgb_to_linear(object["color"].color()) : glm::vec3(1.0f);
+    const glm::vec3 color = color_of(object, glm::vec3(1.0f));  // plants have their own colours; this tints them
     scene_.meshes.push_back(pointgen::build_plant(species, pointgen::derive_seed(seed_, seed)));
     const std::size_t mesh = scene_.meshes.size() - 1;
     mark_point_meshes(mesh, mesh + 1);
@@ -132,7 +139,7 @@ class SceneBuilder {
   }
 
   void add_ecosystem(const JsonField& object) {
-    const pointgen::EcosystemSpec spec = read_ecosystem(object);
+    const pointgen::EcosystemSpec spec = read_ecosystem(object, seed_);
     reserve_memory(object, static_cast<double>(pointgen::estimated_bytes(spec)));
     pointgen::Ecosystem eco = grow(object, spec);
     const std::size_t first = scene_.meshes.size();
@@ -146,6 +153,7 @@ class SceneBuilder {
       scene_.groups.push_back(std::move(table));
     }
     if (auto animals = object.optional("animals")) {
+      std::uint64_t herd = 0;
       for (const JsonField& item : animals->items()) {
         item.only_keys({"kind", "count", "pasture"});
         if (item["kind"].string() != "cow") item["kind"].fail("unknown animal (known: cow)");
@@ -154,7 +162,7 @@ class SceneBuilder {
         const glm::vec2 center = spec.terrain.center;
         const pointgen::Rect pasture = item.has("pasture") ? read_rect(item["pasture"])
                                                            : pointgen::Rect{center - 20.0f, center + 20.0f};
-        add_moving_set(pointgen::make_herd(count, eco.terrain, pasture, base, pointgen::derive_seed(spec.seed, 0xc0)));
+        add_moving_set(pointgen::make_herd(count, eco.terrain, pasture, base, pointgen::derive_seed(spec.seed, 0xc0 + herd++)));
       }
     }
   }
@@ -229,14 +237,16 @@ std::string singular(const std::string& folder) {
 
 InputSource open_input(const std::string& name_or_file, const std::string& folder) {
   std::error_code ec;
-  if (fs::exists(name_or_file, ec)) {
+  const std::string resource = "data/" + folder + "/" + name_or_file + ".json";
+  const bool is_shipped = resources::find(resource).has_value();
+  // A file wins over a shipped name, but a folder (such as a capture's output) does not.
+  if (fs::is_regular_file(name_or_file, ec) || (!is_shipped && fs::exists(name_or_file, ec))) {
     std::optional<std::string> text = read_file(name_or_file);
     if (!text) throw InputError(name_or_file + ": cannot be read (not a regular, readable file)");
     const fs::path base = fs::path(name_or_file).parent_path();
     return {name_or_file, std::move(*text),
             [base](const std::string& relative) { return read_file(base / relative); }};
   }
-  const std::string resource = "data/" + folder + "/" + name_or_file + ".json";
   if (const auto text = resources::find(resource)) {
     const fs::path base = "data/" + folder;
     return {resource, std::string(*text), [base](const std::string& relative) -> std::optional<std::string> {
