@@ -31,6 +31,19 @@ ShadowMethod parse_shadow_method(const std::string& name) {
   throw InputError("--method: '" + name + "' is not available in this build (available: uniform, none)");
 }
 
+pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSettings& settings, std::vector<glm::mat4> views) {
+  const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
+  const float tan_half = std::tan(glm::radians(camera.fov_y_deg) / 2.0f);
+  pointgen::SamplerView view;
+  view.views = std::move(views);
+  view.eye = camera.position;
+  view.forward = camera.forward();
+  view.edge_cos = 1.0f / std::sqrt(1.0f + tan_half * tan_half * (1.0f + aspect * aspect));
+  view.density = {0.5f * static_cast<float>(settings.height) / tan_half, settings.k};
+  view.points_per_triangle = settings.points_per_triangle;
+  return view;
+}
+
 // The settings, checked against what this driver can allocate before anything is.
 static RenderSettings within_limits(const RenderSettings& s) {
   GLint max_texture = 0;
@@ -73,17 +86,6 @@ Image<std::uint32_t> Renderer::count_points() { return frame_points_.count_point
 
 float Renderer::aspect() const { return static_cast<float>(settings_.width) / static_cast<float>(settings_.height); }
 
-pointgen::SamplerView Renderer::sampler_view(const shadow::Camera& camera, std::vector<glm::mat4> views) const {
-  const float tan_half = std::tan(glm::radians(camera.fov_y_deg) / 2.0f);
-  pointgen::SamplerView view;
-  view.views = std::move(views);
-  view.eye = camera.position;
-  view.forward = camera.forward();
-  view.edge_cos = 1.0f / std::sqrt(1.0f + tan_half * tan_half * (1.0f + aspect() * aspect()));
-  view.density = {0.5f * static_cast<float>(settings_.height) / tan_half, settings_.k};
-  view.points_per_triangle = settings_.points_per_triangle;
-  return view;
-}
 
 void Renderer::upload_polygons(const pointgen::SampledFrame& selection) {
   for (std::size_t g = 0; g < tables_.size(); ++g) {
@@ -118,7 +120,7 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
   for (const shadow::ShadowView& v : setup_.views) views.push_back(v.view_projection());
   if (settings_.points) {
     const auto start = std::chrono::steady_clock::now();
-    const pointgen::SampledFrame selection = pointgen::sample_view(sampler_view(camera, views), tables_, samples_.meshes());
+    const pointgen::SampledFrame selection = pointgen::sample_view(sampler_view(camera, settings_, views), tables_, samples_.meshes());
     stats_.sample_ms += ms_since(start);
     upload_polygons(selection);
     if (!shadow_points_) shadow_points_ = std::make_unique<PointSplat>(glm::ivec2(settings_.shadow_size));
@@ -159,7 +161,7 @@ void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, 
   pointgen::SampledFrame selection;
   if (settings_.points) {
     const auto start = std::chrono::steady_clock::now();
-    selection = pointgen::sample_view(sampler_view(camera, {view_projection_}), tables_, samples_.meshes());
+    selection = pointgen::sample_view(sampler_view(camera, settings_, {view_projection_}), tables_, samples_.meshes());
     stats_.sample_ms += ms_since(start);
     if (settings_.measure != RenderSettings::Measure::off) selection = measured(selection);
     upload_polygons(selection);

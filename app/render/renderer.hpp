@@ -41,6 +41,10 @@ struct FrameStats {
   double frame_pass_ms = 0.0;   // GPU (timer query): polygons, point splats and their shading
 };
 
+// What the view sampler needs for `camera` with these settings; `views` are the matrices to cull
+// against (the camera's for a frame, a shadow map's for its pass).
+pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSettings& settings, std::vector<glm::mat4> views);
+
 // One frame of a scene: the shadow pass for the chosen method, then the frame pass; with points
 // on, both passes draw far instances of point meshes as splats. Needs a current GL context.
 class Renderer {
@@ -57,7 +61,6 @@ class Renderer {
   float aspect() const;
   // Moves the moving objects to time t.
   void pose(double t);
-  pointgen::SamplerView sampler_view(const shadow::Camera& camera, std::vector<glm::mat4> views) const;
   // Loads the GPU instance buffers of point meshes with the instances `selection` draws as polygons.
   void upload_polygons(const pointgen::SampledFrame& selection);
   void render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
