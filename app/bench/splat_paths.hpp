@@ -1,0 +1,24 @@
+#pragma once
+#include "app/bench/results.hpp"
+#include "app/render/renderer.hpp"
+
+#include <string>
+#include <vector>
+
+namespace ecoview {
+
+// The candidate ways to splat one-pixel points, timed on the same points: the point-mesh instances
+// the sampler picks in the scene camera's view (all drawn as points, whatever the polygon choice),
+// into a settings.width x settings.height target, depth tested.
+//  - "gl_points": one glDrawArrays(GL_POINTS), each vertex finding its instance by binary search;
+//  - "indirect": glMultiDrawArraysIndirect(GL_POINTS), one command per instance;
+//  - "compute": PointSplat, nearest depth by atomicMin, then the nearest point per pixel.
+// Each run: params {sweep "paths", scene, path, width, height, frames}, figures {points, ms,
+// gpu_ms, mpts_per_s = points / ms}; medians of `frames` frames after `warmup`, target clear
+// included. `ms` is wall time from glFinish to glFinish around the draw alone: llvmpipe's
+// GL_TIME_ELAPSED (`gpu_ms`) misses the vertex work of small draws (0.09 ms against 16 ms of wall
+// time for 0.1 M points) and half the compute splat's time. Needs a current GL context.
+std::vector<BenchRun> measure_splat_paths(const Scene& scene, const std::string& scene_name, const RenderSettings& settings,
+                                          int warmup, int frames);
+
+}  // namespace ecoview
