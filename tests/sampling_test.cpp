@@ -1,5 +1,7 @@
 // Surface samples and the view-adaptive count, against facts computed here.
 #include "pointgen/primitives.hpp"
+#include "pointgen/random.hpp"
+#include "pointgen/sampling/coverage_grid.hpp"
 #include "pointgen/sampling/point_count.hpp"
 #include "pointgen/sampling/surface_samples.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
@@ -102,6 +104,7 @@ SamplerView test_view() {
   v.views = {glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f)};
   v.density = {256.0f, 2.0f};  // 512 pixels high
   v.points_per_triangle = 4.0f;
+  v.occlusion = false;  // counts of whole instances; the occlusion tests turn it on
   return v;
 }
 
@@ -116,8 +119,10 @@ TEST(ViewSampler, CullsWhatIsOutOfViewAndCountsTheRest) {
   const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, 40}, {0, 0, -40}, {100, 0, -40}})}, {mesh});
   ASSERT_EQ(f.points.size(), 1u) << "the instances behind and beside the view are culled";
   EXPECT_EQ(f.points[0].instance, 1u);
-  // n = k rho^2 A d / (2 z^3) with z = d = 40 m at the instance's centre.
-  EXPECT_EQ(f.points[0].count, static_cast<std::uint32_t>(std::ceil(2.0f * 256.0f * 256.0f * 2.0f / (2.0f * 40.0f * 40.0f))));
+  // n = k rho^2 A d / (2 z^3) with z = d = 40 m at the instance's centre, rounded either way.
+  const float n = 2.0f * 256.0f * 256.0f * 2.0f / (2.0f * 40.0f * 40.0f);
+  EXPECT_GE(f.points[0].count, static_cast<std::uint32_t>(std::floor(n)));
+  EXPECT_LE(f.points[0].count, static_cast<std::uint32_t>(std::ceil(n)));
   EXPECT_TRUE(f.polygons[0].empty());
 }
 
@@ -130,6 +135,64 @@ TEST(ViewSampler, NearInstancesArePolygonsAndTheBandBetweenDrawsBoth) {
   EXPECT_EQ(f.points[0].instance, 1u) << "in the band the instance is drawn both ways";
   EXPECT_EQ(f.points[1].instance, 2u);
   EXPECT_EQ(f.triangle_count, 2000u);
+}
+
+TEST(ViewSampler, CountsOfSmallInstancesAreRoundedWithoutBias) {
+  // 4,000 instances needing 0.3 points each: some get one point, most none, about 1,200 in all.
+  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000};
+  InstanceTable table;
+  for (int i = 0; i < 4000; ++i) table.add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -200.0f}), glm::vec3(1.0f), derive_seed(5, i));
+  SamplerView view = test_view();
+  view.density.k = 0.3f * 2.0f * 200.0f * 200.0f / (256.0f * 256.0f * 2.0f);
+  const SampledFrame f = sample_view(view, {table}, {mesh});
+  EXPECT_NEAR(static_cast<double>(f.point_count), 1200.0, 4.0 * std::sqrt(4000 * 0.3 * 0.7));
+}
+
+TEST(ViewSampler, InstancesHiddenBehindOthersGetNoPoints) {
+  // An opaque 4 m box 10 m ahead; behind it at 40 m one small ball straight back, one off to the side.
+  SampledMesh opaque{400.0f, glm::vec3(0.0f), 3.5f, 100000, 500000, glm::vec3(2.0f), 1000.0f};
+  SampledMesh small{0.3f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.3f), 0.2f};
+  std::vector<InstanceTable> tables = {table_at({{0, 0, -40}, {25, 0, -40}}), table_at({{0, 0, -10}})};
+  tables[1].mesh = 1;
+  SamplerView view = test_view();
+  view.coverage_tiles = {128, 128};
+  const auto count_of = [](const SampledFrame& f, std::uint32_t table, std::uint32_t instance) {
+    for (const PointDraw& d : f.points) {
+      if (d.table == table && d.instance == instance) return d.count;
+    }
+    return 0u;
+  };
+  const SampledFrame whole = sample_view(view, tables, {small, opaque});
+  view.occlusion = true;
+  const SampledFrame seen = sample_view(view, tables, {small, opaque});
+  EXPECT_GT(count_of(whole, 0, 0), 5u);  // about 12
+  EXPECT_EQ(count_of(seen, 0, 0), 0u) << "straight behind the box";
+  EXPECT_EQ(count_of(seen, 0, 1), count_of(whole, 0, 1)) << "beside it";
+  EXPECT_EQ(count_of(seen, 1, 0), count_of(whole, 1, 0)) << "the box itself is in front";
+  // Half as opaque: what it leaves visible is far above the fade-out, so counts stay whole.
+  opaque.silhouette = 0.5f * 16.0f * 0.5f;  // fills under half of its screen rectangle
+  const SampledFrame through = sample_view(view, tables, {small, opaque});
+  EXPECT_EQ(count_of(through, 0, 0), count_of(whole, 0, 0));
+}
+
+TEST(CoverageGrid, TilesKeepWhatIsLeftUncovered) {
+  CoverageGrid grid(glm::mat4(1.0f), {4, 4});  // tiles of 0.5 x 0.5 in NDC
+  grid.cover({{-1.0f, -1.0f}, {0.0f, 0.0f}}, 0.6f);
+  EXPECT_NEAR(grid.transmittance({{-1.0f, -1.0f}, {0.0f, 0.0f}}), 0.4f, 1e-6f);
+  EXPECT_NEAR(grid.transmittance({{0.0f, 0.0f}, {1.0f, 1.0f}}), 1.0f, 1e-6f);
+  EXPECT_NEAR(grid.transmittance({{-1.0f, -1.0f}, {1.0f, 1.0f}}), (0.4f + 3.0f) / 4.0f, 1e-6f);
+  // An opaque object over half of a tile leaves the tile half uncovered; a second one, a quarter.
+  grid.cover({{0.5f, 0.5f}, {0.75f, 1.0f}}, 1.0f);
+  EXPECT_NEAR(grid.transmittance({{0.5f, 0.5f}, {1.0f, 1.0f}}), 0.5f, 1e-6f);
+  grid.cover({{0.75f, 0.5f}, {1.0f, 1.0f}}, 1.0f);
+  EXPECT_NEAR(grid.transmittance({{0.5f, 0.5f}, {1.0f, 1.0f}}), 0.25f, 1e-6f);
+  // Off screen: nothing.
+  grid.cover({{2.0f, 2.0f}, {3.0f, 3.0f}}, 1.0f);
+  EXPECT_NEAR(grid.transmittance({{0.0f, 0.0f}, {0.5f, 0.5f}}), 1.0f, 1e-6f);
+  // A box behind the eye has no rectangle.
+  const CoverageGrid perspective(glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f), {4, 4});
+  EXPECT_FALSE(perspective.project({glm::vec3(-1, -1, 1), glm::vec3(1, -1, 1), glm::vec3(-1, 1, 1), glm::vec3(1, 1, 1),
+                                    glm::vec3(-1, -1, -3), glm::vec3(1, -1, -3), glm::vec3(-1, 1, -3), glm::vec3(1, 1, -3)}));
 }
 
 }  // namespace

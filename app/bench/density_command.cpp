@@ -4,6 +4,7 @@
 #include "app/bench/density_figures.hpp"
 #include "app/bench/frame_timing.hpp"
 #include "app/bench/results.hpp"
+#include "app/bench/splat_paths.hpp"
 #include "app/capture/png.hpp"
 #include "app/cli/progress.hpp"
 #include "app/errors.hpp"
@@ -140,6 +141,12 @@ class DensityBench {
     progress.step();
   }
 
+  // Splat paths: the same points as one GL_POINTS draw, indirect draws and compute splats.
+  void paths(const Scene& scene, const std::string& scene_name, Progress& progress) {
+    for (BenchRun& run : measure_splat_paths(scene, scene_name, base_, plan_.warmup, plan_.frames)) results_.runs.push_back(std::move(run));
+    progress.step();
+  }
+
   void finish(const std::string& renderer_name) {
     results_.machine = machine_info(renderer_name, o_.backend);
     write_results(out_, results_);
@@ -211,11 +218,12 @@ int run_density(const DensityOptions& o) {
   const Plan plan = plan_for(o.quick);
   const std::unique_ptr<GlContext> context = create_headless_context(o.backend);
   DensityBench bench(o, plan);
-  Progress progress("density: run", plan.ks.size() * plan.splats.size() + 2 + 2 * plan.instance_counts.size() + 1);
+  Progress progress("density: run", plan.ks.size() * plan.splats.size() + 2 + 2 * plan.instance_counts.size() + 2);
   bench.quality(scene, scene_name, progress);
   bench.speed(scene, scene_name, progress);
   bench.scale(progress);
   bench.temporal(scene, scene_name, progress);
+  bench.paths(scene, scene_name, progress);
   progress.finish();
   bench.finish(context->description());
   std::cout << "density: wrote results.json, results.csv, charts and report.html to " << o.out << "\n";

@@ -32,7 +32,7 @@ struct RenderOptions {
   std::string method = "uniform";
   std::string geometry = "points";
   double k = 1.5;
-  int splat = 1;
+  int splat = 2;
 };
 void add_render_options(CLI::App& command, RenderOptions& options);
 // Validated settings; throws InputError naming the option.

@@ -1,6 +1,7 @@
 #include "app/render/point_samples.hpp"
 
 #include "pointgen/random.hpp"
+#include "pointgen/sampling/silhouette.hpp"
 #include "pointgen/sampling/surface_samples.hpp"
 
 #include <cmath>
@@ -23,13 +24,16 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle) {
     if (!b.empty()) {
       info.center = 0.5f * (b.min + b.max);
       info.radius = 0.5f * glm::length(b.max - b.min);
+      info.half_size = 0.5f * (b.max - b.min);
     }
     info.triangles = mesh.triangle_count();
     first_.push_back(static_cast<std::uint32_t>(positions.size()));
     if (scene.point_meshes[m]) {
       // Enough for the top of the band in which an instance is drawn both ways.
       info.samples = std::min(max_samples, static_cast<std::size_t>(std::ceil(1.3f * points_per_triangle * static_cast<float>(info.triangles))));
-      for (const pointgen::SurfaceSample& s : pointgen::sample_surface(mesh, info.samples, pointgen::derive_seed(0x5a3, m))) {
+      const std::vector<pointgen::SurfaceSample> samples = pointgen::sample_surface(mesh, info.samples, pointgen::derive_seed(0x5a3, m));
+      info.silhouette = pointgen::mean_silhouette_area(samples, info.area, b);
+      for (const pointgen::SurfaceSample& s : samples) {
         positions.emplace_back(s.position, 1.0f);
         normals.emplace_back(s.normal, 0.0f);
         colors.emplace_back(s.color, 1.0f);

@@ -23,7 +23,7 @@ struct RenderSettings {
   ShadowMethod method = ShadowMethod::uniform;
   bool points = true;       // far plants, people and animals as point splats; false: all polygons
   float k = 1.5f;           // points per pixel of projected surface (docs/point_density.md)
-  int splat_size = 1;       // pixels per side of one point's splat in the frame
+  int splat_size = 2;       // pixels per side of one point's splat in the frame
   int shadow_splat_size = 2;  // texels per side in the shadow map
   float points_per_triangle = 4.0f;  // a point costs 1/this of a triangle (the point-or-polygon choice)
   bool point_meshes_only = false;    // draw nothing else (for the density figures)

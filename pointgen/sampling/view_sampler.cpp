@@ -1,8 +1,13 @@
 #include "pointgen/sampling/view_sampler.hpp"
 
+#include "pointgen/random.hpp"
+#include "pointgen/sampling/coverage_grid.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
+#include <tuple>
 
 namespace pointgen {
 namespace {
@@ -10,53 +15,118 @@ namespace {
 // The band around break-even, as ratios of needed points to the polygon-equivalent count, in which
 // an instance is drawn both as points and as polygons.
 constexpr float band_low = 0.8f, band_high = 1.25f;
+// Below this much of its screen rectangle left uncovered by nearer objects, an object's count
+// falls linearly to none.
+constexpr float full_count_transmittance = 0.03f;
+
+using Frustum = std::array<glm::vec4, 6>;
 
 // The six frustum planes of a view-projection matrix (Gribb-Hartmann), inside where dot >= 0.
-std::array<glm::vec4, 6> frustum_planes(const glm::mat4& m) {
+Frustum frustum_planes(const glm::mat4& m) {
   const glm::vec4 r0(m[0][0], m[1][0], m[2][0], m[3][0]), r1(m[0][1], m[1][1], m[2][1], m[3][1]),
       r2(m[0][2], m[1][2], m[2][2], m[3][2]), r3(m[0][3], m[1][3], m[2][3], m[3][3]);
-  std::array<glm::vec4, 6> planes = {r3 + r0, r3 - r0, r3 + r1, r3 - r1, r3 + r2, r3 - r2};
+  Frustum planes = {r3 + r0, r3 - r0, r3 + r1, r3 - r1, r3 + r2, r3 - r2};
   for (glm::vec4& p : planes) p /= glm::length(glm::vec3(p));
   return planes;
+}
+
+// An instance inside one of the views, with what the count needs of it.
+struct Candidate {
+  std::uint32_t table = 0, instance = 0;
+  glm::vec3 center{0.0f};
+  float radius = 0.0f;
+  float area = 0.0f;       // square metres
+  float order = 0.0f;      // depth in the first view: sorted front to back
+};
+
+std::vector<Candidate> visible_instances(const SamplerView& view, const std::vector<InstanceTable>& tables,
+                                         const std::vector<SampledMesh>& meshes) {
+  std::vector<Frustum> frusta;
+  for (const glm::mat4& m : view.views) frusta.push_back(frustum_planes(m));
+  std::vector<Candidate> visible;
+  for (std::size_t t = 0; t < tables.size(); ++t) {
+    const SampledMesh& mesh = meshes[tables[t].mesh];
+    for (std::size_t i = 0; i < tables[t].size(); ++i) {
+      const glm::mat4& m = tables[t].transforms[i];
+      const float scale = std::cbrt(std::abs(glm::determinant(glm::mat3(m))));
+      Candidate c{static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(i), glm::vec3(m * glm::vec4(mesh.center, 1.0f)),
+                  mesh.radius * scale, mesh.area * scale * scale};
+      const bool inside = std::any_of(frusta.begin(), frusta.end(), [&](const Frustum& planes) {
+        return std::all_of(planes.begin(), planes.end(), [&](const glm::vec4& p) { return glm::dot(glm::vec3(p), c.center) + p.w >= -c.radius; });
+      });
+      if (!inside) continue;
+      const glm::vec4 clip = view.views.front() * glm::vec4(c.center, 1.0f);
+      c.order = clip.w > 0.0f ? clip.z / clip.w : -INFINITY;  // centres behind the eye first
+      visible.push_back(c);
+    }
+  }
+  std::sort(visible.begin(), visible.end(), [](const Candidate& a, const Candidate& b) {
+    return std::tie(a.order, a.table, a.instance) < std::tie(b.order, b.table, b.instance);
+  });
+  return visible;
+}
+
+// The eight corners of a mesh's bounds box under an instance's transform.
+std::array<glm::vec3, 8> box_corners(const SampledMesh& mesh, const glm::mat4& transform) {
+  std::array<glm::vec3, 8> corners;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 sign((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f);
+    corners[i] = glm::vec3(transform * glm::vec4(mesh.center + sign * mesh.half_size, 1.0f));
+  }
+  return corners;
+}
+
+// The share of an object's points a view needs, and the grid updated with it. The object's
+// silhouette fills that much of its screen rectangle, hiding what lies behind there. Tiles count as
+// uniformly covered, which cannot see the exact gaps between objects, so an object keeps its full
+// count until nearly all of its rectangle is hidden and only then fades out.
+float visible_share(CoverageGrid& coverage, const SampledMesh& mesh, const glm::mat4& transform, const Candidate& c) {
+  if (!(mesh.silhouette > 0.0f && mesh.area > 0.0f)) return 1.0f;
+  const std::optional<CoverageGrid::Rect> rect = coverage.project(box_corners(mesh, transform));
+  if (!rect || !(rect->area() > 0.0f)) return 1.0f;
+  const float silhouette = mesh.silhouette * (c.area / mesh.area) * coverage.ndc_area_per_square_metre(c.center);
+  const float share = std::min(1.0f, coverage.transmittance(*rect) / full_count_transmittance);
+  coverage.cover(*rect, std::min(1.0f, silhouette / rect->area()));
+  return share;
+}
+
+// The instance's threshold in [0, 1) for rounding its count.
+float rounding(const InstanceTable& table, std::uint32_t instance) {
+  return Random(table.seeds.size() > instance ? table.seeds[instance] : instance).uniform();
 }
 
 }  // namespace
 
 SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTable>& tables,
                          const std::vector<SampledMesh>& meshes) {
-  std::vector<std::array<glm::vec4, 6>> frusta;
-  for (const glm::mat4& m : view.views) frusta.push_back(frustum_planes(m));
   SampledFrame frame;
   frame.polygons.resize(tables.size());
-  for (std::size_t t = 0; t < tables.size(); ++t) {
-    const InstanceTable& table = tables[t];
-    const SampledMesh& mesh = meshes[table.mesh];
-    for (std::size_t i = 0; i < table.size(); ++i) {
-      const glm::mat4& m = table.transforms[i];
-      const glm::vec3 center(m * glm::vec4(mesh.center, 1.0f));
-      const float scale = std::cbrt(std::abs(glm::determinant(glm::mat3(m))));
-      const float radius = mesh.radius * scale;
-      const bool visible = std::any_of(frusta.begin(), frusta.end(), [&](const std::array<glm::vec4, 6>& planes) {
-        return std::all_of(planes.begin(), planes.end(), [&](const glm::vec4& p) { return glm::dot(glm::vec3(p), center) + p.w >= -radius; });
-      });
-      if (!visible) continue;
-      // Distances to the centre: the count is right on average over the object (docs/point_density.md).
-      const float distance = std::max(glm::distance(view.eye, center), std::max(0.5f * radius, 1e-3f));
-      const float depth = std::max(glm::dot(center - view.eye, view.forward), distance * view.edge_cos);
-      const float needed = points_needed(view.density, mesh.area * scale * scale, depth, distance);
-      const float polygon_equivalent = view.points_per_triangle * static_cast<float>(mesh.triangles);
-      const float ratio = needed / polygon_equivalent;
-      const bool as_polygons = ratio > band_low || needed > static_cast<float>(mesh.samples);
-      const bool as_points = ratio < band_high && mesh.samples > 0;
-      if (as_points) {
-        const auto count = static_cast<std::uint32_t>(std::min(std::ceil(needed), static_cast<float>(mesh.samples)));
-        frame.points.push_back({static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(i), count});
-        frame.point_count += count;
-      }
-      if (as_polygons) {
-        frame.polygons[t].push_back(static_cast<std::uint32_t>(i));
-        frame.triangle_count += mesh.triangles;
-      }
+  // Occlusion needs one image to accumulate in; several views (cube maps) count every instance whole.
+  std::optional<CoverageGrid> coverage;
+  if (view.occlusion && view.views.size() == 1) coverage.emplace(view.views.front(), view.coverage_tiles);
+  for (const Candidate& c : visible_instances(view, tables, meshes)) {
+    const SampledMesh& mesh = meshes[tables[c.table].mesh];
+    // Distances to the centre: the count is right on average over the object (docs/point_density.md).
+    const float distance = std::max(glm::distance(view.eye, c.center), std::max(0.5f * c.radius, 1e-3f));
+    const float depth = std::max(glm::dot(c.center - view.eye, view.forward), distance * view.edge_cos);
+    float needed = points_needed(view.density, c.area, depth, distance);
+    // Only point meshes hide others: ground and buildings are large and far from their bounds.
+    if (coverage && mesh.samples > 0) needed *= visible_share(*coverage, mesh, tables[c.table].transforms[c.instance], c);
+    const float polygon_equivalent = view.points_per_triangle * static_cast<float>(mesh.triangles);
+    const float ratio = needed / polygon_equivalent;
+    const bool as_polygons = ratio > band_low || needed > static_cast<float>(mesh.samples);
+    const bool as_points = ratio < band_high && mesh.samples > 0;
+    // Rounded up or down at the instance's own fixed threshold: unbiased over many small instances,
+    // and steady from frame to frame.
+    const auto count = static_cast<std::uint32_t>(std::min(std::floor(needed + rounding(tables[c.table], c.instance)),
+                                                           static_cast<float>(mesh.samples)));
+    if (as_points && count > 0) {
+      frame.points.push_back({c.table, c.instance, count});
+      frame.point_count += count;
+    }
+    if (as_polygons) {
+      frame.polygons[c.table].push_back(c.instance);
+      frame.triangle_count += mesh.triangles;
     }
   }
   return frame;

@@ -13,6 +13,8 @@ struct SampledMesh {
   float radius = 0.0f;          // of a sphere around `center` holding the mesh
   std::size_t triangles = 0;
   std::size_t samples = 0;      // length of its surface-sample list
+  glm::vec3 half_size{0.0f};    // of its bounds box, around `center`
+  float silhouette = 0.0f;      // mean silhouette area, square metres (0: unknown, never occludes)
 };
 
 // The view: what to cull against, the eye, and the density.
@@ -29,6 +31,10 @@ struct SamplerView {
   // A point costs about 1 / points_per_triangle of a triangle: an instance needing more points
   // than points_per_triangle × its triangles is cheaper as polygons.
   float points_per_triangle = 4.0f;
+  // Count only the surface in front: each object's own front layer, and (with one view) what the
+  // objects before it leave uncovered (CoverageGrid).
+  bool occlusion = true;
+  glm::ivec2 coverage_tiles{64, 64};  // across and up the (first) view; a few pixels each
 };
 
 // One instance drawn as points: the first `count` samples of its mesh.
