@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <stb/stb_image.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -143,9 +144,10 @@ TEST(Density, QuickRunWritesResultsChartsAndReport) {
     }
   }
   // A still camera renders the same frame twice.
-  const auto& temporal = results["runs"].back();
-  EXPECT_EQ(temporal["params"]["sweep"], "temporal");
-  EXPECT_EQ(temporal["figures"]["still_changed"].get<double>(), 0.0);
+  const auto temporal = std::find_if(results["runs"].begin(), results["runs"].end(),
+                                     [](const nlohmann::json& run) { return run["params"]["sweep"] == "temporal"; });
+  ASSERT_NE(temporal, results["runs"].end());
+  EXPECT_EQ((*temporal)["figures"]["still_changed"].get<double>(), 0.0);
 }
 
 TEST(Capture, RendersARealGltfFile) {

@@ -155,7 +155,7 @@ TEST(ViewSampler, InstancesHiddenBehindOthersGetNoPoints) {
   std::vector<InstanceTable> tables = {table_at({{0, 0, -40}, {25, 0, -40}}), table_at({{0, 0, -10}})};
   tables[1].mesh = 1;
   SamplerView view = test_view();
-  view.coverage_tiles = {128, 128};
+  view.pixels = {512, 512};
   const auto count_of = [](const SampledFrame& f, std::uint32_t table, std::uint32_t instance) {
     for (const PointDraw& d : f.points) {
       if (d.table == table && d.instance == instance) return d.count;

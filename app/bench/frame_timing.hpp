@@ -1,7 +1,12 @@
 #pragma once
 #include "app/render/renderer.hpp"
 
+#include <vector>
+
 namespace ecoview {
+
+// The median of some timings (0 for none).
+double median(std::vector<double> v);
 
 // frame_ms and its parts as DESIGN.md defines them: medians over `frames` frames after `warmup`
 // frames, each frame finished with glFinish.

@@ -1,5 +1,6 @@
 #include "app/bench/splat_paths.hpp"
 
+#include "app/bench/frame_timing.hpp"
 #include "app/bench/point_raster.hpp"
 
 #include <algorithm>
@@ -8,12 +9,6 @@
 
 namespace ecoview {
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 struct PathTime {
   double ms = 0.0;      // wall clock from glFinish to glFinish around the draw alone

@@ -31,9 +31,6 @@ ShadowMethod parse_shadow_method(const std::string& name) {
   throw InputError("--method: '" + name + "' is not available in this build (available: uniform, none)");
 }
 
-// Pixels per side of the sampler's occlusion tiles.
-constexpr int coverage_tile_pixels = 4;
-
 pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSettings& settings, std::vector<glm::mat4> views) {
   const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
   const float tan_half = std::tan(glm::radians(camera.fov_y_deg) / 2.0f);
@@ -44,7 +41,7 @@ pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSet
   view.edge_cos = 1.0f / std::sqrt(1.0f + tan_half * tan_half * (1.0f + aspect * aspect));
   view.density = {0.5f * static_cast<float>(settings.height) / tan_half, settings.k};
   view.points_per_triangle = settings.points_per_triangle;
-  view.coverage_tiles = glm::ivec2(settings.width, settings.height) / coverage_tile_pixels;
+  view.pixels = glm::ivec2(settings.width, settings.height);
   return view;
 }
 
@@ -125,7 +122,8 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
   if (settings_.points) {
     const auto start = std::chrono::steady_clock::now();
     pointgen::SamplerView view = sampler_view(camera, settings_, views);
-    view.coverage_tiles = glm::ivec2(settings_.shadow_size / coverage_tile_pixels);
+    view.pixels = glm::ivec2(settings_.shadow_size);
+    view.cap_to_pixels = true;
     const pointgen::SampledFrame selection = pointgen::sample_view(view, tables_, samples_.meshes());
     stats_.sample_ms += ms_since(start);
     upload_polygons(selection);

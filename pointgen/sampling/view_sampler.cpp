@@ -18,6 +18,7 @@ constexpr float band_low = 0.8f, band_high = 1.25f;
 // Below this much of its screen rectangle left uncovered by nearer objects, an object's count
 // falls linearly to none.
 constexpr float full_count_transmittance = 0.03f;
+constexpr int tile_pixels = 4;  // per side of a coverage tile
 
 using Frustum = std::array<glm::vec4, 6>;
 
@@ -101,17 +102,22 @@ SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTabl
                          const std::vector<SampledMesh>& meshes) {
   SampledFrame frame;
   frame.polygons.resize(tables.size());
-  // Occlusion needs one image to accumulate in; several views (cube maps) count every instance whole.
+  // Occlusion and the cap need one image; several views (cube maps) count every instance whole.
   std::optional<CoverageGrid> coverage;
-  if (view.occlusion && view.views.size() == 1) coverage.emplace(view.views.front(), view.coverage_tiles);
+  if ((view.occlusion || view.cap_to_pixels) && view.views.size() == 1) coverage.emplace(view.views.front(), view.pixels / tile_pixels);
+  const float ndc_to_pixels = 0.25f * static_cast<float>(view.pixels.x) * static_cast<float>(view.pixels.y);
   for (const Candidate& c : visible_instances(view, tables, meshes)) {
     const SampledMesh& mesh = meshes[tables[c.table].mesh];
     // Distances to the centre: the count is right on average over the object (docs/point_density.md).
     const float distance = std::max(glm::distance(view.eye, c.center), std::max(0.5f * c.radius, 1e-3f));
     const float depth = std::max(glm::dot(c.center - view.eye, view.forward), distance * view.edge_cos);
     float needed = points_needed(view.density, c.area, depth, distance);
+    if (coverage && view.cap_to_pixels) {
+      // Randomly oriented two-sided surface projects to half its area (docs/point_density.md).
+      needed = std::min(needed, view.density.k * 0.5f * c.area * coverage->ndc_area_per_square_metre(c.center) * ndc_to_pixels);
+    }
     // Only point meshes hide others: ground and buildings are large and far from their bounds.
-    if (coverage && mesh.samples > 0) needed *= visible_share(*coverage, mesh, tables[c.table].transforms[c.instance], c);
+    if (coverage && view.occlusion && mesh.samples > 0) needed *= visible_share(*coverage, mesh, tables[c.table].transforms[c.instance], c);
     const float polygon_equivalent = view.points_per_triangle * static_cast<float>(mesh.triangles);
     const float ratio = needed / polygon_equivalent;
     const bool as_polygons = ratio > band_low || needed > static_cast<float>(mesh.samples);

@@ -34,7 +34,10 @@ struct SamplerView {
   // Count only the surface in front: each object's own front layer, and (with one view) what the
   // objects before it leave uncovered (CoverageGrid).
   bool occlusion = true;
-  glm::ivec2 coverage_tiles{64, 64};  // across and up the (first) view; a few pixels each
+  glm::ivec2 pixels{256, 256};  // the (first) view's image size; occlusion tiles are 4 pixels
+  // For a shadow map: counts follow the camera, but the map holds no more than k points per texel
+  // of a caster's projected surface, so no caster gets more (with one view).
+  bool cap_to_pixels = false;
 };
 
 // One instance drawn as points: the first `count` samples of its mesh.
