@@ -15,10 +15,11 @@ void main() {
   uint first = (first_thread + gl_GlobalInvocationID.x) * points_per_thread;
   if (first >= total_points) return;
   uint draw = draw_of(first);
+  uvec4 d = draws[draw];
   uint last = min(first + points_per_thread, total_points);
   for (uint p = first; p < last; ++p) {
-    while (p >= draws[draw].x + draws[draw].y) ++draw;
-    vec4 clip = view_projection * (instances[draws[draw].w].model * vec4(positions[sample_of(p, draw)].xyz, 1.0));
+    while (p >= d.x + d.y) d = draws[++draw];
+    vec4 clip = view_projection * (instances[d.w].model * vec4(positions[d.z + (p - d.x)].xyz, 1.0));
     if (clip.w <= 0.0) continue;
     vec3 ndc = clip.xyz / clip.w;
     if (any(greaterThan(abs(ndc), vec3(1.0)))) continue;

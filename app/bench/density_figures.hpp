@@ -23,6 +23,9 @@ struct RenderedFrame {
   Image<float> depth;  // linear view depth, negative where nothing is drawn
 };
 
+// Colour PSNR (dB) of an image against a reference over the pixels the reference covers.
+double psnr_over_covered(const RenderedFrame& reference, const Image8& image);
+
 DensityFigures density_figures(const RenderedFrame& polygons, const RenderedFrame& points,
                                const Image<std::uint32_t>& counts);
 
