@@ -1,6 +1,7 @@
 #include "app/bench/results.hpp"
 
 #include "app/file_io.hpp"
+#include "git_commit.hpp"
 
 #include <set>
 #include <sstream>

@@ -17,7 +17,7 @@ namespace {
 constexpr float band_low = 0.8f, band_high = 1.25f;
 // Below this much of its screen rectangle left uncovered by nearer objects, an object's count
 // falls linearly to none.
-constexpr float full_count_transmittance = 0.03f;
+constexpr float full_count_transmittance = 0.01f;
 constexpr int tile_pixels = 4;  // per side of a coverage tile
 
 using Frustum = std::array<glm::vec4, 6>;
