@@ -109,7 +109,10 @@ void ConvexBody::clip(std::span<const Plane> planes) {
 ConvexBody ConvexBody::transformed(const glm::mat4& transform) const {
   ConvexBody body = *this;
   for (Polygon& face : body.faces_) {
-    for (glm::vec3& p : face) p = glm::vec3(transform * glm::vec4(p, 1.0f));
+    for (glm::vec3& p : face) {
+      const glm::vec4 q = transform * glm::vec4(p, 1.0f);
+      p = glm::vec3(q) / q.w;
+    }
   }
   return body;
 }
@@ -126,8 +129,10 @@ std::vector<glm::vec3> ConvexBody::vertices() const {
   return points;
 }
 
+glm::vec3 ConvexBody::centroid() const { return centroid_of(vertices()); }
+
 std::vector<Plane> ConvexBody::face_planes() const {
-  const glm::vec3 inside = centroid_of(vertices());
+  const glm::vec3 inside = centroid();
   std::vector<Plane> planes;
   for (const Polygon& face : faces_) {
     float face_size = 0.0f;

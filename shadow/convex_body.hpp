@@ -23,13 +23,16 @@ class ConvexBody {
   void clip(const Plane& plane);
   void clip(std::span<const Plane> planes);
 
-  // The body with every vertex moved by `transform` (an affine map keeps it convex).
+  // The body with every vertex moved by `transform`: an affine map, or a projective one under
+  // which the whole body keeps w > 0 (the PSM's post-perspective space); both keep it convex.
   ConvexBody transformed(const glm::mat4& transform) const;
 
   bool empty() const { return faces_.empty(); }
   const std::vector<Polygon>& faces() const { return faces_; }
   // The distinct vertices.
   std::vector<glm::vec3> vertices() const;
+  // The mean of the distinct vertices: a point inside.
+  glm::vec3 centroid() const;
   // The plane of each face, oriented outwards.
   std::vector<Plane> face_planes() const;
 

@@ -6,7 +6,8 @@
 namespace shadow {
 
 // One shadow-map view: world → light space → light clip space. Points it must cover map into the
-// clip cube [-1, 1]^3.
+// clip cube [-1, 1]^3. For a perspective shadow map `view` passes through the camera's
+// post-perspective space and is projective.
 struct ShadowView {
   glm::mat4 view{1.0f};
   glm::mat4 projection{1.0f};

@@ -1,6 +1,7 @@
 #include "shadow/uniform_map.hpp"
 
 #include "shadow/focus_body.hpp"
+#include "shadow/light_projection.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -9,29 +10,6 @@
 
 namespace shadow {
 namespace {
-
-// Widest half-angle of receivers around a point light served by one perspective map; beyond it
-// texels at the map's rim grow too large, and the light gets a cube of six maps.
-constexpr float max_single_map_half_angle_deg = 60.0f;
-
-glm::vec3 any_perpendicular(const glm::vec3& v) {
-  return glm::normalize(std::abs(v.y) < 0.9f ? glm::cross(v, glm::vec3(0, 1, 0))
-                                             : glm::cross(v, glm::vec3(1, 0, 0)));
-}
-
-// Up vector for a light view along `axis`: the camera's forward direction where it is not
-// parallel, so the map's rows follow the view.
-glm::vec3 light_up(const glm::vec3& axis, const Camera& camera) {
-  const glm::vec3 f = camera.forward();
-  const glm::vec3 up = f - glm::dot(f, axis) * axis;
-  return glm::length(up) > 1e-3f ? glm::normalize(up) : any_perpendicular(axis);
-}
-
-glm::vec3 centroid(const std::vector<glm::vec3>& points) {
-  glm::vec3 sum(0.0f);
-  for (const glm::vec3& p : points) sum += p;
-  return sum / static_cast<float>(points.size());
-}
 
 // A cone from the light around the receivers: its axis and the cosine of its half-angle.
 struct Cone {
@@ -133,12 +111,12 @@ ShadowSetup focused_uniform_map(const Camera& camera, float aspect, const Light&
   switch (light.type) {
     case LightType::directional: {
       const glm::vec3 axis = glm::normalize(light.direction);
-      const glm::vec3 center = centroid(bodies.receivers.vertices());
-      return {{fit_orthographic(glm::lookAt(center - axis, center, light_up(axis, camera)), bodies)}};
+      const glm::vec3 center = bodies.receivers.centroid();
+      return {{fit_orthographic(glm::lookAt(center - axis, center, light_up(axis, camera.forward())), bodies)}};
     }
     case LightType::spot: {
       const glm::vec3 axis = glm::normalize(light.direction);
-      const glm::mat4 view = glm::lookAt(light.position, light.position + axis, light_up(axis, camera));
+      const glm::mat4 view = glm::lookAt(light.position, light.position + axis, light_up(axis, camera.forward()));
       return {{fit_perspective(view, std::tan(glm::radians(light.cone_deg)), bodies)}};
     }
     case LightType::point: {
@@ -146,7 +124,7 @@ ShadowSetup focused_uniform_map(const Camera& camera, float aspect, const Light&
       if (cone.cos_half_angle < std::cos(glm::radians(max_single_map_half_angle_deg))) {
         return cube_faces(light.position, bodies, map_size);
       }
-      const glm::mat4 view = glm::lookAt(light.position, light.position + cone.axis, light_up(cone.axis, camera));
+      const glm::mat4 view = glm::lookAt(light.position, light.position + cone.axis, light_up(cone.axis, camera.forward()));
       return {{fit_perspective(view, std::tan(glm::radians(max_single_map_half_angle_deg)), bodies)}};
     }
   }

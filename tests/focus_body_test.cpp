@@ -1,7 +1,7 @@
 // Focus bodies and the focused uniform map, over many random cameras and lights: every receiver
 // the camera sees must land inside the map that holds its shadow, and no configuration may give
 // a matrix with NaN or infinity.
-#include "pointgen/random.hpp"
+#include "random_setups.hpp"
 #include "shadow/focus_body.hpp"
 #include "shadow/uniform_map.hpp"
 
@@ -11,58 +11,6 @@
 
 namespace shadow {
 namespace {
-
-glm::vec3 random_unit(pointgen::Random& rng) {
-  for (;;) {
-    const glm::vec3 v(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-    if (glm::length(v) > 0.2f && glm::length(v) <= 1.0f) return glm::normalize(v);
-  }
-}
-
-Box scene_box() {
-  Box b;
-  b.add(glm::vec3(-50.0f, 0.0f, -50.0f));
-  b.add(glm::vec3(50.0f, 20.0f, 50.0f));
-  return b;
-}
-
-Camera random_camera(pointgen::Random& rng) {
-  Camera c;
-  c.position = glm::vec3(rng.uniform(-60, 60), rng.uniform(1, 40), rng.uniform(-60, 60));
-  c.target = glm::vec3(rng.uniform(-40, 40), rng.uniform(0, 10), rng.uniform(-40, 40));
-  if (glm::length(c.target - c.position) < 1.0f) c.target.x += 5.0f;
-  c.fov_y_deg = rng.uniform(30, 90);
-  c.near = rng.uniform(0.1f, 1.0f);
-  c.far = rng.uniform(60, 300);
-  return c;
-}
-
-Light random_light(pointgen::Random& rng, LightType type) {
-  Light l;
-  l.type = type;
-  l.direction = random_unit(rng);
-  l.position = glm::vec3(rng.uniform(-60, 60), rng.uniform(5, 80), rng.uniform(-60, 60));
-  l.cone_deg = rng.uniform(20, 70);
-  return l;
-}
-
-bool finite(const glm::mat4& m) {
-  for (int c = 0; c < 4; ++c) {
-    for (int r = 0; r < 4; ++r) {
-      if (!std::isfinite(m[c][r])) return false;
-    }
-  }
-  return true;
-}
-
-// The layer a point looks up, as the frame shader chooses it.
-std::size_t layer_of(const ShadowSetup& setup, const Light& light, const glm::vec3& p) {
-  if (setup.selection == ViewSelection::single) return 0;
-  const glm::vec3 d = p - light.position, a = glm::abs(d);
-  if (a.x >= a.y && a.x >= a.z) return d.x >= 0 ? 0 : 1;
-  if (a.y >= a.z) return d.y >= 0 ? 2 : 3;
-  return d.z >= 0 ? 4 : 5;
-}
 
 class FocusedMap : public testing::TestWithParam<LightType> {};
 

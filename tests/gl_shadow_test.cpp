@@ -27,12 +27,14 @@ const char* light_name(shadow::LightType t) {
   return t == shadow::LightType::directional ? "directional" : t == shadow::LightType::point ? "point" : "spot";
 }
 
-using Param = std::tuple<std::string, shadow::LightType>;
+const char* method_name(ShadowMethod m) { return m == ShadowMethod::psm ? "psm" : "uniform"; }
+
+using Param = std::tuple<std::string, shadow::LightType, ShadowMethod>;
 
 class FloatingBoxShadow : public testing::TestWithParam<Param> {};
 
 TEST_P(FloatingBoxShadow, ShadowAovMatchesGeometryAwayFromEdges) {
-  const auto& [backend, type] = GetParam();
+  const auto& [backend, type, method] = GetParam();
   if (backend == "osmesa" && !osmesa_available()) GTEST_SKIP() << "this build has no OSMesa backend";
   const auto context = create_headless_context(backend);
   pointgen::Random rng(static_cast<std::uint64_t>(env_int("ECOVIEW_TRUTH_SEED", 1) * 10 + static_cast<int>(type)));
@@ -40,15 +42,16 @@ TEST_P(FloatingBoxShadow, ShadowAovMatchesGeometryAwayFromEdges) {
   for (int i = 0; i < cases; ++i) {
     const FloatingBox s = random_floating_box(rng, type);
     const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
-    Renderer renderer(scene, {640, 480, 2048, ShadowMethod::uniform});
+    Renderer renderer(scene, {640, 480, 2048, method});
     renderer.render(scene.camera, scene.lights[0]);
     const TruthComparison c = compare_with_truth(s, renderer.frame().read_visibility(), 2);
     ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     if (const char* dump = std::getenv("ECOVIEW_TRUTH_DUMP")) {
-      std::ofstream(std::string(dump) + "/" + backend + "_" + light_name(type) + "_" + std::to_string(i) + ".png",
+      std::ofstream(std::string(dump) + "/" + backend + "_" + light_name(type) + "_" + method_name(method) + "_" +
+                        std::to_string(i) + ".png",
                     std::ios::binary) << encode_png(c.mismatches);
     }
-    std::cout << backend << " " << light_name(type) << " case " << i << ": " << 100.0 * c.agreement()
+    std::cout << backend << " " << light_name(type) << " " << method_name(method) << " case " << i << ": " << 100.0 * c.agreement()
               << " % of " << c.lit + c.shadowed << " plane pixels agree; lit " << c.lit_agreeing << "/" << c.lit
               << ", shadowed " << c.shadowed_agreeing << "/" << c.shadowed << "\n";
     EXPECT_GE(c.agreement(), 0.995) << "scene:\n" << s.scene_json();
@@ -61,11 +64,12 @@ TEST_P(FloatingBoxShadow, ShadowAovMatchesGeometryAwayFromEdges) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    AllBackendsAndLights, FloatingBoxShadow,
+    AllBackendsLightsAndMethods, FloatingBoxShadow,
     testing::Combine(testing::Values("egl", "osmesa"),
-                     testing::Values(shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot)),
+                     testing::Values(shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot),
+                     testing::Values(ShadowMethod::uniform, ShadowMethod::psm)),
     [](const testing::TestParamInfo<Param>& info) {
-      return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param));
+      return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + method_name(std::get<2>(info.param));
     });
 
 }  // namespace

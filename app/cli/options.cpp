@@ -46,7 +46,8 @@ int check_shadow_size(int size) {
 void add_render_options(CLI::App& command, RenderOptions& o) {
   command.add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
   command.add_option("--shadow-size", o.shadow_size, "Shadow map size in texels (square)")->capture_default_str();
-  command.add_option("--method", o.method, "Shadow method: uniform (focused uniform shadow map) or none")
+  command.add_option("--method", o.method, "Shadow method: uniform (focused uniform shadow map), psm (perspective shadow map, "
+                                         "built in the camera's post-perspective space) or none")
       ->capture_default_str();
   command.add_option("--geometry", o.geometry, "points: far plants, people and animals as view-adaptive point "
                                                "splats; polygons: everything as polygons")->capture_default_str();

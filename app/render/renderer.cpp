@@ -1,8 +1,10 @@
 #include "app/render/renderer.hpp"
 
 #include "app/errors.hpp"
+#include "shadow/psm_map.hpp"
 #include "shadow/uniform_map.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +21,19 @@ double elapsed_ms(const gl::Query& query) {
   return static_cast<double>(nanoseconds) * 1e-6;
 }
 
+// The nearest visible depth of a frame is taken with this margin, for surfaces that come nearer
+// by the next frame.
+constexpr float nearest_visible_margin = 0.8f;
+
+// The smallest depth in a frame's linear depth, 0 if nothing was drawn.
+float nearest_depth(const Image<float>& depth) {
+  float nearest = INFINITY;
+  for (float d : depth.samples) {
+    if (d > 0.0f) nearest = std::min(nearest, d);
+  }
+  return std::isfinite(nearest) ? nearest : 0.0f;
+}
+
 double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -27,8 +42,9 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 
 ShadowMethod parse_shadow_method(const std::string& name) {
   if (name == "uniform") return ShadowMethod::uniform;
+  if (name == "psm") return ShadowMethod::psm;
   if (name == "none") return ShadowMethod::none;
-  throw InputError("--method: '" + name + "' is not available in this build (available: uniform, none)");
+  throw InputError("--method: '" + name + "' is not available in this build (available: uniform, psm, none)");
 }
 
 pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSettings& settings, std::vector<glm::mat4> views) {
@@ -116,7 +132,10 @@ pointgen::SampledFrame Renderer::measured(const pointgen::SampledFrame& selectio
 // The shadow map for this frame; with points on, far instances of point meshes are splatted into
 // it. Timed from the first GL draw to the last.
 void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Light& light) {
-  setup_ = shadow::focused_uniform_map(camera, aspect(), light, scene_bounds_, settings_.shadow_size);
+  setup_ = settings_.method == ShadowMethod::psm
+               ? shadow::perspective_shadow_map(camera, aspect(), light, scene_bounds_, settings_.shadow_size,
+                                                nearest_visible_margin * nearest_visible_)
+               : shadow::focused_uniform_map(camera, aspect(), light, scene_bounds_, settings_.shadow_size);
   std::vector<glm::mat4> views;
   for (const shadow::ShadowView& v : setup_.views) views.push_back(v.view_projection());
   if (settings_.points) {
@@ -154,11 +173,20 @@ void Renderer::pose(double t) {
 }
 
 void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, double t) {
+  const bool psm = settings_.method == ShadowMethod::psm;
+  // The first PSM frame has no last frame to take its near plane from: a frame without shadows
+  // gives it.
+  if (psm && !(nearest_visible_ > 0.0f)) draw(camera, light, t, false);
+  draw(camera, light, t, settings_.method != ShadowMethod::none);
+  if (psm) nearest_visible_ = nearest_depth(frame_pass_.read_depth());
+}
+
+void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows) {
   pose(t);
   stats_ = {};
   view_projection_ = camera.projection(aspect()) * camera.view();
   std::optional<FramePass::ShadowLookup> lookup;
-  if (settings_.method == ShadowMethod::uniform) {
+  if (shadows) {
     render_shadow_map(camera, light);
     lookup.emplace(FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size()});
   }

@@ -11,7 +11,7 @@
 
 namespace ecoview {
 
-enum class ShadowMethod { none, uniform };
+enum class ShadowMethod { none, uniform, psm };
 
 // Parses a --method name; throws InputError listing the methods this build renders.
 ShadowMethod parse_shadow_method(const std::string& name);
@@ -63,6 +63,8 @@ class Renderer {
   void pose(double t);
   // Loads the GPU instance buffers of point meshes with the instances `selection` draws as polygons.
   void upload_polygons(const pointgen::SampledFrame& selection);
+  // One frame, with or without the shadow map.
+  void draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows);
   void render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
   // The selection as RenderSettings::measure asks.
   pointgen::SampledFrame measured(const pointgen::SampledFrame& selection) const;
@@ -78,6 +80,9 @@ class Renderer {
   PointSplat frame_points_;
   std::unique_ptr<PointSplat> shadow_points_;  // made with the first shadow map that needs it
   shadow::ShadowSetup setup_;  // of the last frame
+  // PSM: the nearest depth the camera saw in the last frame, pushing the near plane of the next
+  // (seed 000, Sect. 6); 0 until a frame was drawn.
+  float nearest_visible_ = 0.0f;
   glm::mat4 view_projection_{1.0f};  // of the last frame
   FrameStats stats_;
   gl::Query shadow_timer_{GL_TIME_ELAPSED}, frame_timer_{GL_TIME_ELAPSED};

@@ -1,0 +1,51 @@
+#include "shadow/psm_map.hpp"
+
+#include "shadow/focus_body.hpp"
+#include "shadow/light_projection.hpp"
+#include "shadow/post_perspective.hpp"
+#include "shadow/uniform_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadow {
+namespace {
+
+// Attempts at moving the virtual camera back, each twice as far as the last, from 1/8 of the
+// casters' depth range to 2^(max_shift_steps - 5) times it, where the map is all but uniform.
+constexpr int max_shift_steps = 14;
+
+bool finite(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) {
+      if (!std::isfinite(m[c][r])) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+ShadowSetup perspective_shadow_map(const Camera& camera, float aspect, const Light& light, const Box& scene,
+                                   int map_size, float nearest_visible) {
+  Camera pushed = camera;
+  pushed.near = std::clamp(nearest_visible, camera.near, 0.5f * camera.far);
+  const FocusBodies bodies = focus_bodies(pushed.projection(aspect) * pushed.view(), light, scene);
+  if (bodies.receivers.empty()) return focused_uniform_map(camera, aspect, light, scene, map_size);
+
+  const PostPerspectiveSpace first = post_perspective_space(pushed, aspect, bodies.casters, pushed.near);
+  const float depth_range = first.far - first.near;
+  for (int step = 0; step < max_shift_steps; ++step) {
+    const float extra_shift = step == 0 ? 0.0f : depth_range * std::exp2(static_cast<float>(step - 4));
+    const PostPerspectiveSpace space = post_perspective_space(pushed, aspect, bodies.casters, pushed.near, extra_shift);
+    const FocusBodies warped{bodies.receivers.transformed(space.matrix), bodies.casters.transformed(space.matrix)};
+    // The camera looks down +z in post-perspective space.
+    const std::optional<ShadowView> light_view = fit_light_view(space.matrix * homogeneous(light), warped, {0, 0, 1});
+    if (!light_view) continue;
+    const ShadowView view{light_view->view * space.matrix, light_view->projection};
+    if (finite(view.view_projection())) return {{view}};
+  }
+  return focused_uniform_map(camera, aspect, light, scene, map_size);
+}
+
+}  // namespace shadow

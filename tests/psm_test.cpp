@@ -1,0 +1,220 @@
+// The perspective shadow map against geometry the test computes itself: every ray from a visible
+// receiver to the light, inside the scene, maps into the shadow map's clip cube with depth growing
+// towards the receiver; the light cases follow the paper's geometric rule; no configuration,
+// random or degenerate, gives NaN or infinity.
+#include "random_setups.hpp"
+#include "shadow/focus_body.hpp"
+#include "shadow/post_perspective.hpp"
+#include "shadow/psm_map.hpp"
+#include "shadow/uniform_map.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+
+namespace shadow {
+namespace {
+
+constexpr float aspect = 16.0f / 9.0f;
+
+// A random point inside a convex body: a random mix of its vertices.
+glm::vec3 random_point_in(const ConvexBody& body, pointgen::Random& rng) {
+  const std::vector<glm::vec3> v = body.vertices();
+  glm::vec3 sum(0.0f);
+  float weights = 0.0f;
+  for (const glm::vec3& p : v) {
+    const float w = rng.uniform() * rng.uniform();
+    sum += w * p;
+    weights += w;
+  }
+  return sum / weights;
+}
+
+bool inside(const Box& box, const glm::vec3& p) {
+  return glm::all(glm::greaterThanEqual(p, box.min)) && glm::all(glm::lessThanEqual(p, box.max));
+}
+
+bool lit_by_spot(const Light& light, const glm::vec3& p) {
+  return light.type != LightType::spot || (glm::distance(p, light.position) > 0.01f &&
+                                           glm::dot(glm::normalize(p - light.position), light.direction) >=
+                                               std::cos(glm::radians(light.cone_deg)));
+}
+
+// Points from `receiver` towards the light, inside the scene: the casters that can shadow it.
+std::vector<glm::vec3> ray_to_light(const glm::vec3& receiver, const Light& light, const Box& scene) {
+  const glm::vec3 end = light.type == LightType::directional ? receiver - 400.0f * glm::normalize(light.direction)
+                                                             : light.position;
+  std::vector<glm::vec3> points;
+  for (int i = 1; i <= 40; ++i) {
+    const glm::vec3 p = glm::mix(receiver, end, static_cast<float>(i) / 41.0f);
+    if (inside(scene, p)) points.push_back(p);
+  }
+  return points;
+}
+
+class PerspectiveMap : public testing::TestWithParam<LightType> {};
+
+TEST_P(PerspectiveMap, RaysFromReceiversToTheLightMapIntoTheCubeCastersFirst) {
+  pointgen::Random rng(300 + static_cast<int>(GetParam()));
+  int receivers = 0, casters = 0, warped = 0;
+  for (int i = 0; i < 300; ++i) {
+    const Camera camera = random_camera(rng);
+    const Light light = random_light(rng, GetParam());
+    const FocusBodies bodies = focus_bodies(camera.projection(aspect) * camera.view(), light, scene_box());
+    if (bodies.receivers.empty()) continue;
+    const ShadowSetup setup = perspective_shadow_map(camera, aspect, light, scene_box(), 2048);
+    const ShadowSetup uniform = focused_uniform_map(camera, aspect, light, scene_box(), 2048);
+    warped += setup.views.size() == 1 && uniform.views.size() == 1 &&
+              setup.views[0].view_projection() != uniform.views[0].view_projection();
+    for (int j = 0; j < 20; ++j) {
+      const glm::vec3 r = random_point_in(bodies.receivers, rng);
+      if (!lit_by_spot(light, r)) continue;
+      const std::size_t layer = layer_of(setup, light, r);
+      const glm::mat4 m = setup.views[layer].view_projection();
+      const glm::vec4 clip = m * glm::vec4(r, 1.0f);
+      ASSERT_GT(clip.w, 0.0f) << "camera " << i;
+      const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+      ASSERT_LE(glm::max(std::abs(ndc.x), glm::max(std::abs(ndc.y), std::abs(ndc.z))), 1.0001f) << "camera " << i;
+      ++receivers;
+      for (const glm::vec3& c : ray_to_light(r, light, scene_box())) {
+        if (layer_of(setup, light, c) != layer) continue;
+        const glm::vec4 cc = m * glm::vec4(c, 1.0f);
+        ASSERT_GT(cc.w, 0.0f) << "camera " << i;
+        const glm::vec3 cn = glm::vec3(cc) / cc.w;
+        ASSERT_LE(glm::max(std::abs(cn.x), glm::max(std::abs(cn.y), std::abs(cn.z))), 1.0001f) << "camera " << i;
+        ASSERT_LE(cn.z, ndc.z + 1e-5f) << "a caster behind its receiver, camera " << i;
+        ++casters;
+      }
+    }
+  }
+  EXPECT_GT(receivers, 2000);
+  EXPECT_GT(casters, 10000);
+  EXPECT_GT(warped, 100);  // most maps are warped, not the uniform fallback
+}
+
+INSTANTIATE_TEST_SUITE_P(Lights, PerspectiveMap,
+                         testing::Values(LightType::directional, LightType::point, LightType::spot),
+                         [](const auto& info) {
+                           return std::string(info.param == LightType::directional ? "directional"
+                                              : info.param == LightType::point      ? "point"
+                                                                                    : "spot");
+                         });
+
+// Seed 000, Sect. 3: a light in front of the viewer (a directional light shining towards it, a
+// point light in front of the camera plane) stays a point light, one behind becomes inverted, and
+// one in the camera plane (for a directional light: parallel to the image plane) directional.
+TEST(PostPerspectiveLight, FollowsThePapersGeometricRule) {
+  pointgen::Random rng(21);
+  int checked = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Camera camera = random_camera(rng);
+    const glm::mat4 pps = camera.projection(aspect) * camera.view();
+    const glm::vec3 forward = camera.forward();
+    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const glm::vec3 up = glm::cross(right, forward);
+
+    Light sun = random_light(rng, LightType::directional);
+    const float from_front = glm::dot(-sun.direction, forward);
+    if (std::abs(from_front) > 1e-2f) {
+      EXPECT_EQ(post_perspective_light(pps, sun), from_front > 0 ? PostPerspectiveLight::point : PostPerspectiveLight::inverted);
+      ++checked;
+    }
+    const float a = rng.uniform(0.0f, 6.2831853f);
+    sun.direction = std::cos(a) * right + std::sin(a) * up;  // parallel to the image plane
+    EXPECT_EQ(post_perspective_light(pps, sun), PostPerspectiveLight::directional);
+
+    Light lamp = random_light(rng, LightType::point);
+    const float ahead = glm::dot(lamp.position - camera.position, forward);
+    if (std::abs(ahead) > 1e-2f) {
+      EXPECT_EQ(post_perspective_light(pps, lamp), ahead > 0 ? PostPerspectiveLight::point : PostPerspectiveLight::inverted);
+      ++checked;
+    }
+    lamp.position = camera.position + rng.uniform(-20, 20) * right + rng.uniform(-20, 20) * up;  // in the camera plane
+    EXPECT_EQ(post_perspective_light(pps, lamp), PostPerspectiveLight::directional);
+  }
+  EXPECT_GT(checked, 3500);
+}
+
+// Seed 000, Sect. 3.3: a directional light perpendicular to the view is the best case. Near the
+// eye the perspective map's texels on the ground must be far smaller than the uniform map's.
+TEST(PerspectiveMap, NearTexelsAreSmallerThanTheUniformMapsForALightAcrossTheView) {
+  Camera camera;
+  camera.position = glm::vec3(0, 2, 45);
+  camera.target = glm::vec3(0, 1, 0);
+  camera.near = 0.5f;
+  camera.far = 300.0f;
+  const Light sun{LightType::directional, {}, glm::normalize(glm::vec3(1, -1, 0)), 30};
+  // The ground's texel area at p: the determinant of the map's (u, v) against the ground's (x, z).
+  auto texel_area = [](const glm::mat4& m, const glm::vec3& p) {
+    auto uv = [&](const glm::vec3& q) {
+      const glm::vec4 c = m * glm::vec4(q, 1.0f);
+      return glm::vec2(c) / c.w;
+    };
+    const float h = 1e-2f;
+    const glm::vec2 du = (uv(p + glm::vec3(h, 0, 0)) - uv(p)) / h, dv = (uv(p + glm::vec3(0, 0, h)) - uv(p)) / h;
+    return 1.0f / std::abs(du.x * dv.y - du.y * dv.x);
+  };
+  const glm::vec3 near_ground(0, 0, 40);
+  const float psm = texel_area(perspective_shadow_map(camera, aspect, sun, scene_box(), 1024).views[0].view_projection(), near_ground);
+  const float uniform = texel_area(focused_uniform_map(camera, aspect, sun, scene_box(), 1024).views[0].view_projection(), near_ground);
+  EXPECT_LT(psm, uniform / 16.0f);
+}
+
+// Configurations where a warp breaks down, each with several cameras: finite matrices.
+TEST(PerspectiveMap, DegenerateConfigurationsGiveFiniteMatrices) {
+  Camera ahead;  // looking down -z
+  ahead.position = glm::vec3(0, 10, 30);
+  ahead.target = glm::vec3(0, 10, 0);
+  Camera inside = ahead;  // inside the scene, near the ground
+  inside.position = glm::vec3(3, 0.5f, 3);
+  inside.target = glm::vec3(10, 0.5f, -10);
+  Camera away = ahead;  // sees none of the scene
+  away.position = glm::vec3(0, 10, 200);
+  away.target = glm::vec3(0, 10, 400);
+  away.far = 20.0f;
+  Camera down = ahead;  // straight down with a sideways up
+  down.target = glm::vec3(0, 0, 30);
+  down.up = glm::vec3(0, 0, -1);
+  std::vector<Light> lights;
+  for (const glm::vec3& d : {glm::vec3(0, 0, -1), glm::vec3(0, 0, 1), glm::vec3(0, -1, 0), glm::vec3(1, 0, 0),
+                             glm::vec3(0, 1, 0), glm::normalize(glm::vec3(0, -1e-7f, 1))}) {
+    lights.push_back({LightType::directional, {}, d, 30});  // along, against, across, from below the view
+  }
+  for (const Camera& c : {ahead, inside, away, down}) {
+    const glm::vec3 f = c.forward();
+    for (const glm::vec3& p : {c.position, c.position + glm::vec3(5, 0, 0), c.position + 20.0f * f, c.position - 20.0f * f,
+                               c.position + 1e-4f * f, c.position + glm::vec3(0, 500, 0), glm::vec3(0, 10, 0)}) {
+      lights.push_back({LightType::point, p, {0, -1, 0}, 30});  // at the eye, in the camera plane, in view, behind
+      lights.push_back({LightType::spot, p, f, 45});
+      lights.push_back({LightType::spot, p, -f, 45});
+    }
+  }
+  for (const Camera& c : {ahead, inside, away, down}) {
+    for (const Light& light : lights) {
+      for (float nearest : {0.0f, 5.0f, 1e6f}) {
+        for (const ShadowView& v : perspective_shadow_map(c, aspect, light, scene_box(), 1024, nearest).views) {
+          EXPECT_TRUE(finite(v.view_projection()));
+        }
+      }
+    }
+  }
+}
+
+// The count: a million random configurations (ECOVIEW_PSM_CASES sets another), every kind
+// of light, no NaN or infinity.
+TEST(PerspectiveMap, AMillionRandomConfigurationsGiveFiniteMatrices) {
+  const char* cases = std::getenv("ECOVIEW_PSM_CASES");
+  const int count = cases ? std::atoi(cases) : 1000000;
+  pointgen::Random rng(5);
+  int bad = 0;
+  for (int i = 0; i < count; ++i) {
+    const Camera camera = random_camera(rng);
+    const Light light = random_light(rng, static_cast<LightType>(i % 3));
+    for (const ShadowView& v : perspective_shadow_map(camera, aspect, light, scene_box(), 1024).views) bad += !finite(v.view_projection());
+  }
+  EXPECT_EQ(bad, 0);
+}
+
+}  // namespace
+}  // namespace shadow

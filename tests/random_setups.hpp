@@ -1,0 +1,19 @@
+#pragma once
+// Random cameras and lights over a 100 x 20 x 100 m scene box, for the shadow-map tests.
+#include "pointgen/random.hpp"
+#include "shadow/box.hpp"
+#include "shadow/camera.hpp"
+#include "shadow/light.hpp"
+#include "shadow/shadow_setup.hpp"
+
+namespace shadow {
+
+glm::vec3 random_unit(pointgen::Random& rng);
+Box scene_box();
+Camera random_camera(pointgen::Random& rng);
+Light random_light(pointgen::Random& rng, LightType type);
+bool finite(const glm::mat4& m);
+// The layer a point looks up, as the frame shader chooses it.
+std::size_t layer_of(const ShadowSetup& setup, const Light& light, const glm::vec3& p);
+
+}  // namespace shadow
