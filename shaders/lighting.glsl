@@ -10,9 +10,12 @@ uniform vec3 camera_position;
 
 uniform int shadows_enabled;
 // The views of the shadow setup (shadow::ShadowSetup), one map layer each, and how a point picks
-// its view: one map, or cube faces by the major axis of (point - light).
-const int SINGLE = 0, CUBE_FACES = 1;
+// its view: one map, cube faces by the major axis of (point - light), or the first cascade that
+// holds it.
+const int SINGLE = 0, CUBE_FACES = 1, FIRST_CONTAINING = 2;
+const float CASCADE_MARGIN_TEXELS = 2.0;  // shadow::cascade_margin_texels
 uniform int shadow_selection;
+uniform int shadow_view_count;
 uniform mat4 shadow_matrices[6];
 uniform float shadow_size;  // texels per side
 layout(binding = 0) uniform sampler2DArrayShadow shadow_map;
@@ -37,6 +40,14 @@ float texel_world_size(mat4 m, vec3 p) {
 // The layer of the map that holds p's shadow.
 int shadow_view(vec3 p) {
   if (shadow_selection == SINGLE) return 0;
+  if (shadow_selection == FIRST_CONTAINING) {
+    float inside = 1.0 - 2.0 * CASCADE_MARGIN_TEXELS / shadow_size;
+    for (int i = 0; i < shadow_view_count - 1; ++i) {
+      vec4 clip = shadow_matrices[i] * vec4(p, 1.0);
+      if (all(lessThanEqual(abs(clip.xy), vec2(inside * clip.w))) && abs(clip.z) <= clip.w) return i;
+    }
+    return shadow_view_count - 1;
+  }
   vec3 d = p - light_position;
   vec3 a = abs(d);
   if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0 : 1;
@@ -65,6 +76,34 @@ float shadow_test(vec3 position, vec3 n, float n_dot_l) {
     }
   }
   return sum / 9.0;
+}
+
+// d(ndc.xy)/d(p along t1, t2) of a projective matrix at p: the columns are the two directions.
+mat2 screen_jacobian(mat4 m, vec3 p, vec3 t1, vec3 t2) {
+  vec4 clip = m * vec4(p, 1.0);
+  vec4 d1 = m * vec4(t1, 0.0), d2 = m * vec4(t2, 0.0);
+  vec2 ndc = clip.xy / clip.w;
+  return mat2((d1.xy - ndc * d1.w) / clip.w, (d2.xy - ndc * d2.w) / clip.w);
+}
+
+uniform vec2 frame_size;  // pixels
+uniform mat4 view_projection;
+
+// The aliasing factor (DESIGN.md): the size in screen pixels of one shadow-map texel projected
+// onto the surface at p with normal n; the largest singular value of pixels per texel along the
+// surface. 0 without a shadow map.
+float aliasing_factor(vec3 p, vec3 n) {
+  if (shadows_enabled == 0) return 0.0;
+  vec3 t1 = normalize(abs(n.y) < 0.9 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
+  vec3 t2 = cross(n, t1);
+  mat2 texels = 0.5 * shadow_size * screen_jacobian(shadow_matrices[shadow_view(p)], p, t1, t2);
+  mat2 pixels = mat2(0.5 * frame_size.x, 0.0, 0.0, 0.5 * frame_size.y) * screen_jacobian(view_projection, p, t1, t2);
+  float det = determinant(texels);
+  if (abs(det) < 1e-20) return 1e9;  // the light grazes the surface: one texel covers it all
+  mat2 a = pixels * inverse(texels);
+  float frobenius = dot(a[0], a[0]) + dot(a[1], a[1]);
+  float d = determinant(a);
+  return sqrt(0.5 * (frobenius + sqrt(max(frobenius * frobenius - 4.0 * d * d, 0.0))));
 }
 
 vec3 linear_to_srgb(vec3 c) {

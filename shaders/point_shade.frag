@@ -6,6 +6,7 @@
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out float out_visibility;
 layout(location = 2) out float out_depth;
+layout(location = 3) out float out_aliasing;
 
 uniform mat4 view;
 
@@ -27,4 +28,5 @@ void main() {
   out_color = vec4(linear_to_srgb(shading.color), 1.0);
   out_visibility = shading.visibility;
   out_depth = -(view * vec4(position, 1.0)).z;
+  out_aliasing = aliasing_factor(position, n);
 }

@@ -6,13 +6,18 @@
 namespace shadow {
 namespace {
 
-// Tolerance for "on the plane", relative to the size of the coordinates involved.
-float tolerance(const std::vector<ConvexBody::Polygon>& faces, const Plane& plane) {
-  float scale = std::abs(plane.offset);
+// The largest coordinate of a body's vertices.
+float extent(const std::vector<ConvexBody::Polygon>& faces) {
+  float scale = 0.0f;
   for (const auto& face : faces) {
     for (const glm::vec3& p : face) scale = std::max({scale, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
   }
-  return 1e-5f * std::max(scale, 1.0f);
+  return scale;
+}
+
+// Tolerance for "on the plane", relative to the size of the numbers in the distances.
+float tolerance(float body_extent, const Plane& plane) {
+  return 1e-5f * std::max({body_extent, std::abs(plane.offset), 1.0f});
 }
 
 void add_distinct(std::vector<glm::vec3>& points, const glm::vec3& p, float eps) {
@@ -73,7 +78,11 @@ ConvexBody ConvexBody::from_corners(const std::array<glm::vec3, 8>& corners) {
 }
 
 void ConvexBody::clip(const Plane& plane) {
-  const float eps = tolerance(faces_, plane);
+  const float body_extent = extent(faces_);
+  const float eps = tolerance(body_extent, plane);
+  // Points closer than this are one vertex: relative to the body alone, so that a far plane does
+  // not merge a small body's vertices.
+  const float merge = 1e-5f * std::max(body_extent, 1e-30f);
   std::vector<Polygon> kept_faces;
   std::vector<glm::vec3> cut;  // points on the plane, which become the cap face
   for (const Polygon& face : faces_) {
@@ -84,15 +93,15 @@ void ConvexBody::clip(const Plane& plane) {
       const float da = plane.distance(a);
       const float db = plane.distance(b);
       if (da <= eps) kept.push_back(a);
-      if (std::abs(da) <= eps) add_distinct(cut, a, eps);
+      if (std::abs(da) <= eps) add_distinct(cut, a, merge);
       if ((da < -eps && db > eps) || (da > eps && db < -eps)) {
         const glm::vec3 x = crossing(a, b, da, db);
         kept.push_back(x);
-        add_distinct(cut, x, eps);
+        add_distinct(cut, x, merge);
       }
     }
     std::vector<glm::vec3> distinct;
-    for (const glm::vec3& p : kept) add_distinct(distinct, p, eps);
+    for (const glm::vec3& p : kept) add_distinct(distinct, p, merge);
     if (distinct.size() >= 3) kept_faces.push_back(std::move(distinct));
   }
   if (cut.size() >= 3 && !kept_faces.empty()) kept_faces.push_back(loop_in_plane(cut, plane.normal));

@@ -31,7 +31,10 @@ ShadowSetup perspective_shadow_map(const Camera& camera, float aspect, const Lig
   Camera pushed = camera;
   pushed.near = std::clamp(nearest_visible, camera.near, 0.5f * camera.far);
   const FocusBodies bodies = focus_bodies(pushed.projection(aspect) * pushed.view(), light, scene);
-  if (bodies.receivers.empty()) return focused_uniform_map(camera, aspect, light, scene, map_size);
+  // Receivers all around a point light need the uniform cube: one warped map spreads its texels
+  // too thin over them (a case of seed 000, Sect. 3.3: a near point light).
+  ShadowSetup uniform = focused_uniform_map(camera, aspect, light, scene, map_size);
+  if (bodies.receivers.empty() || uniform.selection == ViewSelection::cube_faces) return uniform;
 
   const PostPerspectiveSpace first = post_perspective_space(pushed, aspect, bodies.casters, pushed.near);
   const float depth_range = first.far - first.near;
@@ -45,7 +48,7 @@ ShadowSetup perspective_shadow_map(const Camera& camera, float aspect, const Lig
     const ShadowView view{light_view->view * space.matrix, light_view->projection};
     if (finite(view.view_projection())) return {{view}};
   }
-  return focused_uniform_map(camera, aspect, light, scene, map_size);
+  return uniform;
 }
 
 }  // namespace shadow

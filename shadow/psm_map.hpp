@@ -11,7 +11,8 @@ namespace shadow {
 // closely.
 //   near plane pushed → focus bodies → virtual camera → light in post-perspective space → fit,
 // moving the virtual camera further back while the fit fails (each step nearer a uniform map),
-// and the focused uniform map if it never holds (a point light among the receivers).
+// and the focused uniform map if it never holds (a point light among the receivers) or when the
+// receivers spread so wide around a point light that the uniform map takes a cube.
 // `nearest_visible` is the depth of the nearest surface the camera saw last frame (Sect. 6), 0
 // when unknown.
 ShadowSetup perspective_shadow_map(const Camera& camera, float aspect, const Light& light, const Box& scene,

@@ -20,7 +20,12 @@ enum class ViewSelection {
   single,      // one map
   cube_faces,  // six maps around a point light, by the major axis of (point - light):
                // +x, -x, +y, -y, +z, -z
+  first_containing,  // cascades: the first map whose box holds the point (in depth, and across
+                     // two texels in from its edge, for the filter), else the last
 };
+
+// Two texels: how far inside a cascade's square a point must be to use that cascade.
+constexpr float cascade_margin_texels = 2.0f;
 
 // What a renderer needs to draw a shadow map (one layer per view) and look it up.
 struct ShadowSetup {

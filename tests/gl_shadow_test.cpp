@@ -27,7 +27,12 @@ const char* light_name(shadow::LightType t) {
   return t == shadow::LightType::directional ? "directional" : t == shadow::LightType::point ? "point" : "spot";
 }
 
-const char* method_name(ShadowMethod m) { return m == ShadowMethod::psm ? "psm" : "uniform"; }
+const char* method_name(ShadowMethod m) {
+  return m == ShadowMethod::psm      ? "psm"
+         : m == ShadowMethod::lispsm ? "lispsm"
+         : m == ShadowMethod::cascades ? "cascades"
+                                       : "uniform";
+}
 
 using Param = std::tuple<std::string, shadow::LightType, ShadowMethod>;
 
@@ -67,7 +72,8 @@ INSTANTIATE_TEST_SUITE_P(
     AllBackendsLightsAndMethods, FloatingBoxShadow,
     testing::Combine(testing::Values("egl", "osmesa"),
                      testing::Values(shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot),
-                     testing::Values(ShadowMethod::uniform, ShadowMethod::psm)),
+                     testing::Values(ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::lispsm,
+                                     ShadowMethod::cascades)),
     [](const testing::TestParamInfo<Param>& info) {
       return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + method_name(std::get<2>(info.param));
     });

@@ -14,6 +14,8 @@ std::string aov_name(Aov aov) {
     case Aov::color: return "color";
     case Aov::shadow: return "shadow";
     case Aov::depth: return "depth";
+    case Aov::aliasing: return "aliasing";
+    case Aov::shadowmap: return "shadowmap";
   }
   return "?";
 }
@@ -24,18 +26,42 @@ std::vector<Aov> parse_aov_list(const std::string& list) {
   std::string name;
   if (!list.empty() && list.back() == ',') throw InputError("--aov: empty name in '" + list + "'");
   while (std::getline(stream, name, ',')) {
-    const Aov all[] = {Aov::color, Aov::shadow, Aov::depth};
+    const Aov all[] = {Aov::color, Aov::shadow, Aov::depth, Aov::aliasing, Aov::shadowmap};
     const auto* found = std::find_if(std::begin(all), std::end(all), [&](Aov a) { return aov_name(a) == name; });
     if (found == std::end(all)) {
-      throw InputError("--aov: unknown AOV '" + name + "' (available: color, shadow, depth)");
+      throw InputError("--aov: unknown AOV '" + name + "' (available: color, shadow, depth, aliasing, shadowmap)");
     }
     if (std::find(aovs.begin(), aovs.end(), *found) == aovs.end()) aovs.push_back(*found);
   }
-  if (aovs.empty()) throw InputError("--aov: empty list (available: color, shadow, depth)");
+  if (aovs.empty()) throw InputError("--aov: empty list (available: color, shadow, depth, aliasing, shadowmap)");
   return aovs;
 }
 
-std::string encode_aov(Aov aov, const FramePass& frame, float far) {
+namespace {
+
+Image8 heat_map(const Image<float>& aliasing) {
+  Image8 image{aliasing.width, aliasing.height, 3, {}};
+  image.samples.reserve(aliasing.samples.size() * 3);
+  for (float a : aliasing.samples) {
+    const float t = a > 0.0f ? std::clamp((std::log2(a) + 3.0f) / 6.0f, 0.0f, 1.0f) : -1.0f;
+    const float red = std::clamp(2.0f * t - 1.0f, 0.0f, 1.0f), blue = std::clamp(1.0f - 2.0f * t, 0.0f, 1.0f);
+    const float green = t < 0.0f ? 0.0f : 1.0f - red - blue;
+    for (float c : {t < 0.0f ? 0.0f : red, green, t < 0.0f ? 0.0f : blue}) image.samples.push_back(static_cast<std::uint8_t>(std::lround(255.0f * c)));
+  }
+  return image;
+}
+
+Image8 gray(const Image<float>& depth) {
+  Image8 image{depth.width, depth.height, 1, {}};
+  image.samples.reserve(depth.samples.size());
+  for (float d : depth.samples) image.samples.push_back(static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(d, 0.0f, 1.0f))));
+  return image;
+}
+
+}  // namespace
+
+std::string encode_aov(Aov aov, const Renderer& renderer, float far) {
+  const FramePass& frame = renderer.frame();
   switch (aov) {
     case Aov::color: return encode_png(frame.read_color());
     case Aov::shadow: return encode_png(frame.read_visibility());
@@ -49,6 +75,8 @@ std::string encode_aov(Aov aov, const FramePass& frame, float far) {
       }
       return encode_png(encoded);
     }
+    case Aov::aliasing: return encode_png(heat_map(frame.read_aliasing()));
+    case Aov::shadowmap: return encode_png(gray(renderer.shadow_map().read_layer(0)));
   }
   return {};
 }

@@ -1,5 +1,6 @@
 #include "app/capture/capture_command.hpp"
 
+#include "app/bench/shadow_figures.hpp"
 #include "app/capture/aov.hpp"
 #include "app/cli/options.hpp"
 #include "app/cli/progress.hpp"
@@ -15,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 namespace ecoview {
@@ -38,6 +40,15 @@ FrameRange default_frames(const std::optional<CameraPath>& path, double fps) {
   return {0, static_cast<int>(frames)};
 }
 
+// One frame's figures for --stats (names as DESIGN.md defines them).
+nlohmann::json frame_stats(int frame, double t, const RenderOptions& options, const Renderer& renderer) {
+  const FrameStats& s = renderer.stats();
+  return {{"frame", frame}, {"t", t}, {"method", options.method}, {"shadow_size", options.shadow_size},
+          {"alias_p95", alias_p95(renderer.frame().read_aliasing(), renderer.frame().read_visibility())},
+          {"sample_ms", s.sample_ms}, {"shadow_pass_ms", s.shadow_pass_ms}, {"frame_pass_ms", s.frame_pass_ms},
+          {"points", s.points}, {"triangles", s.triangles}};
+}
+
 }  // namespace
 
 CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
@@ -53,12 +64,15 @@ CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
   cmd->add_option("--frames", o.frames, "Frames A:B renders frames A to B-1 (default: the whole path at --fps, "
                                         "or frame 0 without a path)");
   cmd->add_option("--fps", o.fps, "Frames per second: frame i is at time i / fps")->capture_default_str();
-  cmd->add_option("--aov", o.aov, "Comma-separated images per frame: color, shadow, depth")->capture_default_str();
+  cmd->add_option("--aov", o.aov, "Comma-separated images per frame: color, shadow, depth, aliasing "
+                                  "(heat map of shadow-map texels per pixel), shadowmap (the map itself)")->capture_default_str();
   cmd->add_option("--light", o.light, "Index of the scene light that shines and casts shadows")->capture_default_str();
   cmd->add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes that would need more memory than this, in GiB")
       ->capture_default_str();
   cmd->add_flag("--force", o.force, "Render frames again even where their files exist (by default a capture "
                                     "resumes, skipping finished frames)");
+  cmd->add_option("--stats", o.stats, "Also write each rendered frame's figures as JSON to this file: alias_p95, "
+                                      "pass times, points, triangles");
   cmd->add_option("--out", o.out, "Output folder (created if missing)")->required();
   return cmd;
 }
@@ -71,6 +85,9 @@ int run_capture(const CaptureOptions& o) {
   check_backend(o.backend);
   const bool frames_asked = !o.frames.empty();
   const FrameRange asked_frames = frames_asked ? parse_frames(o.frames) : FrameRange{};
+  if (!o.stats.empty() && !fs::is_directory(fs::absolute(o.stats).parent_path())) {
+    throw InputError("--stats: " + o.stats + ": its folder does not exist");
+  }
   const auto load_start = std::chrono::steady_clock::now();
   const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
   std::cout << describe_scene(scene, std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count())
@@ -98,16 +115,19 @@ int run_capture(const CaptureOptions& o) {
   const std::unique_ptr<GlContext> context = create_headless_context(o.backend);
   Renderer renderer(scene, settings);
   Progress progress("capture: frame", todo.size());
+  nlohmann::json stats = nlohmann::json::array();
   for (int frame : todo) {
     const double t = static_cast<double>(frame) / fps;
     const shadow::Camera camera = path ? path->at(t, scene.camera) : scene.camera;
     renderer.render(camera, light, t);
     for (Aov aov : aovs) {
-      write_file_atomically(frame_file(out, aov, frame), encode_aov(aov, renderer.frame(), camera.far));
+      write_file_atomically(frame_file(out, aov, frame), encode_aov(aov, renderer, camera.far));
     }
+    if (!o.stats.empty()) stats.push_back(frame_stats(frame, t, o.render, renderer));
     progress.step();
   }
   progress.finish();
+  if (!o.stats.empty()) write_file_atomically(o.stats, stats.dump(2) + "\n");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << "capture: wrote " << todo.size() << " frame(s) to " << o.out;
   std::cout << "; the last drew " << renderer.stats().points << " points and " << renderer.stats().triangles << " triangles";

@@ -18,6 +18,7 @@ struct CaptureOptions {
   int light = 0;
   bool force = false;
   double memory_budget_gib = 4.0;
+  std::string stats;  // per-frame figures as JSON, when not empty
   std::string out;
 };
 

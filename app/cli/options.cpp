@@ -47,7 +47,10 @@ void add_render_options(CLI::App& command, RenderOptions& o) {
   command.add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
   command.add_option("--shadow-size", o.shadow_size, "Shadow map size in texels (square)")->capture_default_str();
   command.add_option("--method", o.method, "Shadow method: uniform (focused uniform shadow map), psm (perspective shadow map, "
-                                         "built in the camera's post-perspective space) or none")
+                                         "built in the camera's post-perspective space), lispsm (light space "
+                                         "perspective shadow map), cascades (4 cascades, practical splits, "
+                                         "texel snapping; lispsm and cascades warp directional lights only, "
+                                         "others get the uniform map) or none")
       ->capture_default_str();
   command.add_option("--geometry", o.geometry, "points: far plants, people and animals as view-adaptive point "
                                                "splats; polygons: everything as polygons")->capture_default_str();

@@ -86,6 +86,10 @@ void set_uniform(const Program& program, const char* name, int value) {
 void set_uniform(const Program& program, const char* name, unsigned value) {
   glProgramUniform1ui(program.name(), glGetUniformLocation(program.name(), name), value);
 }
+void set_uniform(const Program& program, const char* name, const glm::vec2& value) {
+  glProgramUniform2f(program.name(), glGetUniformLocation(program.name(), name), value.x, value.y);
+}
+
 void set_uniform(const Program& program, const char* name, const glm::ivec2& value) {
   glProgramUniform2i(program.name(), glGetUniformLocation(program.name(), name), value.x, value.y);
 }

@@ -18,6 +18,7 @@ void set_uniform(const Program& program, const char* name, const glm::vec3& valu
 void set_uniform(const Program& program, const char* name, float value);
 void set_uniform(const Program& program, const char* name, int value);
 void set_uniform(const Program& program, const char* name, unsigned value);
+void set_uniform(const Program& program, const char* name, const glm::vec2& value);
 void set_uniform(const Program& program, const char* name, const glm::ivec2& value);
 
 }  // namespace ecoview::gl

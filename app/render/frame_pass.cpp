@@ -22,14 +22,16 @@ FramePass::FramePass(int width, int height)
   glTextureStorage2D(color_.name(), 1, GL_RGBA8, width, height);
   glTextureStorage2D(visibility_.name(), 1, GL_R8, width, height);
   glTextureStorage2D(depth_.name(), 1, GL_R32F, width, height);
+  glTextureStorage2D(aliasing_.name(), 1, GL_R32F, width, height);
   glTextureStorage2D(depth_buffer_.name(), 1, GL_DEPTH_COMPONENT32F, width, height);
   const GLuint fb = framebuffer_.name();
   glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT0, color_.name(), 0);
   glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT1, visibility_.name(), 0);
   glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT2, depth_.name(), 0);
+  glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT3, aliasing_.name(), 0);
   glNamedFramebufferTexture(fb, GL_DEPTH_ATTACHMENT, depth_buffer_.name(), 0);
-  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-  glNamedFramebufferDrawBuffers(fb, 3, buffers);
+  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+  glNamedFramebufferDrawBuffers(fb, 4, buffers);
   if (glCheckNamedFramebufferStatus(fb, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
     throw RuntimeFailure("the frame's render targets are not supported by this driver; try another --backend");
   }
@@ -47,6 +49,7 @@ void FramePass::render(const GpuScene& scene, const shadow::Camera& camera, cons
   glClearNamedFramebufferfv(fb, GL_COLOR, 0, sky);
   glClearNamedFramebufferfv(fb, GL_COLOR, 1, fully_visible);
   glClearNamedFramebufferfv(fb, GL_COLOR, 2, no_surface);
+  glClearNamedFramebufferfv(fb, GL_COLOR, 3, no_surface);
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -78,6 +81,7 @@ void FramePass::set_lighting(const gl::Program& program, const shadow::Camera& c
   gl::set_uniform(program, "view", camera.view());
   gl::set_uniform(program, "view_projection", camera.projection(aspect) * camera.view());
   gl::set_uniform(program, "camera_position", camera.position);
+  gl::set_uniform(program, "frame_size", glm::vec2(width_, height_));
   gl::set_uniform(program, "light_type", static_cast<int>(light.type));
   gl::set_uniform(program, "light_position", light.position);
   gl::set_uniform(program, "light_direction", glm::normalize(light.direction));
@@ -86,6 +90,7 @@ void FramePass::set_lighting(const gl::Program& program, const shadow::Camera& c
   if (shadow_map) {
     const shadow::ShadowSetup& setup = shadow_map->setup;
     gl::set_uniform(program, "shadow_selection", static_cast<int>(setup.selection));
+    gl::set_uniform(program, "shadow_view_count", static_cast<int>(setup.views.size()));
     for (std::size_t i = 0; i < setup.views.size(); ++i) {
       const std::string name = "shadow_matrices[" + std::to_string(i) + "]";
       gl::set_uniform(program, name.c_str(), setup.views[i].view_projection());
@@ -108,6 +113,7 @@ Image<Sample> FramePass::read(GLenum attachment, int channels, GLenum format, GL
 Image8 FramePass::read_color() const { return read<std::uint8_t>(GL_COLOR_ATTACHMENT0, 3, GL_RGB, GL_UNSIGNED_BYTE); }
 Image8 FramePass::read_visibility() const { return read<std::uint8_t>(GL_COLOR_ATTACHMENT1, 1, GL_RED, GL_UNSIGNED_BYTE); }
 Image<float> FramePass::read_depth() const { return read<float>(GL_COLOR_ATTACHMENT2, 1, GL_RED, GL_FLOAT); }
+Image<float> FramePass::read_aliasing() const { return read<float>(GL_COLOR_ATTACHMENT3, 1, GL_RED, GL_FLOAT); }
 
 void FramePass::present(int width, int height) const {
   glNamedFramebufferReadBuffer(framebuffer_.name(), GL_COLOR_ATTACHMENT0);

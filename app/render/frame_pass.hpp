@@ -11,8 +11,8 @@
 
 namespace ecoview {
 
-// Renders the camera's view with Blinn-Phong shading into three targets: sRGB colour, light
-// visibility (the `shadow` AOV) and linear view depth.
+// Renders the camera's view with Blinn-Phong shading into four targets: sRGB colour, light
+// visibility (the `shadow` AOV), linear view depth and the shadow map's aliasing factor.
 class FramePass {
  public:
   FramePass(int width, int height);
@@ -35,6 +35,9 @@ class FramePass {
   Image8 read_visibility() const;
   // Linear view depth in metres; negative where no surface was drawn.
   Image<float> read_depth() const;
+  // The aliasing factor (DESIGN.md) of the surface in each pixel; negative where no surface was
+  // drawn, 0 without a shadow map.
+  Image<float> read_aliasing() const;
   // Copies the colour to the default framebuffer (a window), scaled to fit.
   void present(int width, int height) const;
 
@@ -49,6 +52,7 @@ class FramePass {
   gl::Texture color_{GL_TEXTURE_2D};
   gl::Texture visibility_{GL_TEXTURE_2D};
   gl::Texture depth_{GL_TEXTURE_2D};
+  gl::Texture aliasing_{GL_TEXTURE_2D};
   gl::Texture depth_buffer_{GL_TEXTURE_2D};
   gl::Framebuffer framebuffer_;
   gl::Program program_;

@@ -1,6 +1,8 @@
 #include "app/render/renderer.hpp"
 
 #include "app/errors.hpp"
+#include "shadow/cascaded_map.hpp"
+#include "shadow/lispsm_map.hpp"
 #include "shadow/psm_map.hpp"
 #include "shadow/uniform_map.hpp"
 
@@ -43,8 +45,10 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 ShadowMethod parse_shadow_method(const std::string& name) {
   if (name == "uniform") return ShadowMethod::uniform;
   if (name == "psm") return ShadowMethod::psm;
+  if (name == "lispsm") return ShadowMethod::lispsm;
+  if (name == "cascades") return ShadowMethod::cascades;
   if (name == "none") return ShadowMethod::none;
-  throw InputError("--method: '" + name + "' is not available in this build (available: uniform, psm, none)");
+  throw InputError("--method: '" + name + "' is not available in this build (available: uniform, psm, lispsm, cascades, none)");
 }
 
 pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSettings& settings, std::vector<glm::mat4> views) {
@@ -129,13 +133,22 @@ pointgen::SampledFrame Renderer::measured(const pointgen::SampledFrame& selectio
   return out;
 }
 
+shadow::ShadowSetup Renderer::shadow_setup(const shadow::Camera& camera, const shadow::Light& light) const {
+  const int size = settings_.shadow_size;
+  switch (settings_.method) {
+    case ShadowMethod::psm:
+      return shadow::perspective_shadow_map(camera, aspect(), light, scene_bounds_, size,
+                                            nearest_visible_margin * nearest_visible_);
+    case ShadowMethod::lispsm: return shadow::light_space_perspective_map(camera, aspect(), light, scene_bounds_, size);
+    case ShadowMethod::cascades: return shadow::cascaded_map(camera, aspect(), light, scene_bounds_, size);
+    default: return shadow::focused_uniform_map(camera, aspect(), light, scene_bounds_, size);
+  }
+}
+
 // The shadow map for this frame; with points on, far instances of point meshes are splatted into
 // it. Timed from the first GL draw to the last.
 void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Light& light) {
-  setup_ = settings_.method == ShadowMethod::psm
-               ? shadow::perspective_shadow_map(camera, aspect(), light, scene_bounds_, settings_.shadow_size,
-                                                nearest_visible_margin * nearest_visible_)
-               : shadow::focused_uniform_map(camera, aspect(), light, scene_bounds_, settings_.shadow_size);
+  setup_ = shadow_setup(camera, light);
   std::vector<glm::mat4> views;
   for (const shadow::ShadowView& v : setup_.views) views.push_back(v.view_projection());
   if (settings_.points) {

@@ -11,7 +11,7 @@
 
 namespace ecoview {
 
-enum class ShadowMethod { none, uniform, psm };
+enum class ShadowMethod { none, uniform, psm, lispsm, cascades };
 
 // Parses a --method name; throws InputError listing the methods this build renders.
 ShadowMethod parse_shadow_method(const std::string& name);
@@ -53,6 +53,7 @@ class Renderer {
   // The frame at time t (seconds): moving objects are posed for t first.
   void render(const shadow::Camera& camera, const shadow::Light& light, double t = 0.0);
   const FramePass& frame() const { return frame_pass_; }
+  const ShadowPass& shadow_map() const { return shadow_pass_; }
   const FrameStats& stats() const { return stats_; }
   // Points per pixel of the last frame (see PointSplat::count_points).
   Image<std::uint32_t> count_points();
@@ -65,6 +66,7 @@ class Renderer {
   void upload_polygons(const pointgen::SampledFrame& selection);
   // One frame, with or without the shadow map.
   void draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows);
+  shadow::ShadowSetup shadow_setup(const shadow::Camera& camera, const shadow::Light& light) const;
   void render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
   // The selection as RenderSettings::measure asks.
   pointgen::SampledFrame measured(const pointgen::SampledFrame& selection) const;

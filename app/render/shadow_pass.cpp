@@ -63,6 +63,13 @@ void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup)
 
 namespace ecoview {
 
+Image<float> ShadowPass::read_layer(int layer) const {
+  std::vector<float> bottom_up(static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_));
+  glGetTextureSubImage(depth_.name(), 0, 0, 0, layer, size_, size_, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                       static_cast<GLsizei>(bottom_up.size() * sizeof(float)), bottom_up.data());
+  return from_bottom_up(size_, size_, 1, bottom_up);
+}
+
 void ShadowPass::add_points(const PointSplat& points, int layer) const {
   if (points.point_count() == 0) return;
   const GLuint fb = framebuffer_.name();

@@ -1,6 +1,7 @@
 #pragma once
 #include "app/gl/gl_objects.hpp"
 #include "app/render/gpu_scene.hpp"
+#include "app/render/image.hpp"
 #include "app/render/point_splat.hpp"
 #include "shadow/shadow_setup.hpp"
 
@@ -17,6 +18,8 @@ class ShadowPass {
   // what render() drew there.
   void add_points(const PointSplat& points, int layer) const;
   GLuint depth_texture() const { return depth_.name(); }
+  // One layer's depths, window depth 0 (near) to 1 (far), rows from the top.
+  Image<float> read_layer(int layer) const;
   int size() const { return size_; }
 
  private:

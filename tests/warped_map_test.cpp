@@ -1,9 +1,11 @@
-// The perspective shadow map against geometry the test computes itself: every ray from a visible
-// receiver to the light, inside the scene, maps into the shadow map's clip cube with depth growing
-// towards the receiver; the light cases follow the paper's geometric rule; no configuration,
-// random or degenerate, gives NaN or infinity.
+// The warped and cascaded shadow maps (PSM, LiSPSM, cascades) against geometry the test computes itself: every ray from
+// a visible receiver to the light, inside the scene, maps into the shadow map's clip cube with
+// depth growing towards the receiver; the PSM's light cases follow the paper's geometric rule; no
+// configuration, random or degenerate, gives NaN or infinity.
 #include "random_setups.hpp"
+#include "shadow/cascaded_map.hpp"
 #include "shadow/focus_body.hpp"
+#include "shadow/lispsm_map.hpp"
 #include "shadow/post_perspective.hpp"
 #include "shadow/psm_map.hpp"
 #include "shadow/uniform_map.hpp"
@@ -53,20 +55,26 @@ std::vector<glm::vec3> ray_to_light(const glm::vec3& receiver, const Light& ligh
   return points;
 }
 
-class PerspectiveMap : public testing::TestWithParam<LightType> {};
+ShadowSetup psm(const Camera& c, const Light& l) { return perspective_shadow_map(c, aspect, l, scene_box(), 2048); }
+ShadowSetup lispsm(const Camera& c, const Light& l) { return light_space_perspective_map(c, aspect, l, scene_box(), 2048); }
+ShadowSetup cascades(const Camera& c, const Light& l) { return cascaded_map(c, aspect, l, scene_box(), 2048); }
 
-TEST_P(PerspectiveMap, RaysFromReceiversToTheLightMapIntoTheCubeCastersFirst) {
-  pointgen::Random rng(300 + static_cast<int>(GetParam()));
+using Param = std::tuple<ShadowSetup (*)(const Camera&, const Light&), LightType>;
+
+class WarpedMap : public testing::TestWithParam<Param> {};
+
+TEST_P(WarpedMap, RaysFromReceiversToTheLightMapIntoTheCubeCastersFirst) {
+  const auto [map, type] = GetParam();
+  pointgen::Random rng(300 + static_cast<int>(type));
   int receivers = 0, casters = 0, warped = 0;
   for (int i = 0; i < 300; ++i) {
     const Camera camera = random_camera(rng);
-    const Light light = random_light(rng, GetParam());
+    const Light light = random_light(rng, type);
     const FocusBodies bodies = focus_bodies(camera.projection(aspect) * camera.view(), light, scene_box());
     if (bodies.receivers.empty()) continue;
-    const ShadowSetup setup = perspective_shadow_map(camera, aspect, light, scene_box(), 2048);
+    const ShadowSetup setup = map(camera, light);
     const ShadowSetup uniform = focused_uniform_map(camera, aspect, light, scene_box(), 2048);
-    warped += setup.views.size() == 1 && uniform.views.size() == 1 &&
-              setup.views[0].view_projection() != uniform.views[0].view_projection();
+    warped += uniform.views.size() == 1 && setup.views[0].view_projection() != uniform.views[0].view_projection();
     for (int j = 0; j < 20; ++j) {
       const glm::vec3 r = random_point_in(bodies.receivers, rng);
       if (!lit_by_spot(light, r)) continue;
@@ -82,7 +90,9 @@ TEST_P(PerspectiveMap, RaysFromReceiversToTheLightMapIntoTheCubeCastersFirst) {
         const glm::vec4 cc = m * glm::vec4(c, 1.0f);
         ASSERT_GT(cc.w, 0.0f) << "camera " << i;
         const glm::vec3 cn = glm::vec3(cc) / cc.w;
-        ASSERT_LE(glm::max(std::abs(cn.x), glm::max(std::abs(cn.y), std::abs(cn.z))), 1.0001f) << "camera " << i;
+        ASSERT_LE(glm::max(std::abs(cn.x), glm::max(std::abs(cn.y), std::abs(cn.z))), 1.0001f)
+            << "camera " << i << ": caster at " << cn.x << ", " << cn.y << ", " << cn.z << ", its receiver at " << ndc.x
+            << ", " << ndc.y << ", " << ndc.z;
         ASSERT_LE(cn.z, ndc.z + 1e-5f) << "a caster behind its receiver, camera " << i;
         ++casters;
       }
@@ -90,15 +100,20 @@ TEST_P(PerspectiveMap, RaysFromReceiversToTheLightMapIntoTheCubeCastersFirst) {
   }
   EXPECT_GT(receivers, 2000);
   EXPECT_GT(casters, 10000);
-  EXPECT_GT(warped, 100);  // most maps are warped, not the uniform fallback
+  // Most maps are not the uniform fallback (LiSPSM and cascades take directional lights only).
+  if (map == psm || type == LightType::directional) {
+    EXPECT_GT(warped, 100);
+  }
 }
 
-INSTANTIATE_TEST_SUITE_P(Lights, PerspectiveMap,
-                         testing::Values(LightType::directional, LightType::point, LightType::spot),
-                         [](const auto& info) {
-                           return std::string(info.param == LightType::directional ? "directional"
-                                              : info.param == LightType::point      ? "point"
-                                                                                    : "spot");
+INSTANTIATE_TEST_SUITE_P(MethodsAndLights, WarpedMap,
+                         testing::Combine(testing::Values(&psm, &lispsm, &cascades),
+                                          testing::Values(LightType::directional, LightType::point, LightType::spot)),
+                         [](const testing::TestParamInfo<Param>& info) {
+                           const LightType type = std::get<1>(info.param);
+                           const auto map = std::get<0>(info.param);
+                           return std::string(map == &psm ? "psm_" : map == &lispsm ? "lispsm_" : "cascades_") +
+                                  (type == LightType::directional ? "directional" : type == LightType::point ? "point" : "spot");
                          });
 
 // Seed 000, Sect. 3: a light in front of the viewer (a directional light shining towards it, a
@@ -137,8 +152,8 @@ TEST(PostPerspectiveLight, FollowsThePapersGeometricRule) {
 }
 
 // Seed 000, Sect. 3.3: a directional light perpendicular to the view is the best case. Near the
-// eye the perspective map's texels on the ground must be far smaller than the uniform map's.
-TEST(PerspectiveMap, NearTexelsAreSmallerThanTheUniformMapsForALightAcrossTheView) {
+// eye the warped maps' texels on the ground must be far smaller than the uniform map's.
+TEST(WarpedMap, NearTexelsAreSmallerThanTheUniformMapsForALightAcrossTheView) {
   Camera camera;
   camera.position = glm::vec3(0, 2, 45);
   camera.target = glm::vec3(0, 1, 0);
@@ -158,11 +173,13 @@ TEST(PerspectiveMap, NearTexelsAreSmallerThanTheUniformMapsForALightAcrossTheVie
   const glm::vec3 near_ground(0, 0, 40);
   const float psm = texel_area(perspective_shadow_map(camera, aspect, sun, scene_box(), 1024).views[0].view_projection(), near_ground);
   const float uniform = texel_area(focused_uniform_map(camera, aspect, sun, scene_box(), 1024).views[0].view_projection(), near_ground);
+  const float lispsm = texel_area(light_space_perspective_map(camera, aspect, sun, scene_box(), 1024).views[0].view_projection(), near_ground);
   EXPECT_LT(psm, uniform / 16.0f);
+  EXPECT_LT(lispsm, uniform / 4.0f);
 }
 
 // Configurations where a warp breaks down, each with several cameras: finite matrices.
-TEST(PerspectiveMap, DegenerateConfigurationsGiveFiniteMatrices) {
+TEST(WarpedMap, DegenerateConfigurationsGiveFiniteMatrices) {
   Camera ahead;  // looking down -z
   ahead.position = glm::vec3(0, 10, 30);
   ahead.target = glm::vec3(0, 10, 0);
@@ -197,21 +214,34 @@ TEST(PerspectiveMap, DegenerateConfigurationsGiveFiniteMatrices) {
           EXPECT_TRUE(finite(v.view_projection()));
         }
       }
+      for (const ShadowView& v : light_space_perspective_map(c, aspect, light, scene_box(), 1024).views) {
+        EXPECT_TRUE(finite(v.view_projection()));
+      }
+      for (const ShadowView& v : cascaded_map(c, aspect, light, scene_box(), 1024).views) {
+        EXPECT_TRUE(finite(v.view_projection()));
+      }
     }
   }
 }
 
-// The count: a million random configurations (ECOVIEW_PSM_CASES sets another), every kind
-// of light, no NaN or infinity.
-TEST(PerspectiveMap, AMillionRandomConfigurationsGiveFiniteMatrices) {
+// The count: a million random configurations for the PSM (ECOVIEW_PSM_CASES sets
+// another), a tenth of that for LiSPSM and cascades, every kind of light, no NaN or infinity.
+TEST(WarpedMap, AMillionRandomConfigurationsGiveFiniteMatrices) {
   const char* cases = std::getenv("ECOVIEW_PSM_CASES");
   const int count = cases ? std::atoi(cases) : 1000000;
   pointgen::Random rng(5);
   int bad = 0;
+  auto count_bad = [&](const ShadowSetup& setup) {
+    for (const ShadowView& v : setup.views) bad += !finite(v.view_projection());
+  };
   for (int i = 0; i < count; ++i) {
     const Camera camera = random_camera(rng);
     const Light light = random_light(rng, static_cast<LightType>(i % 3));
-    for (const ShadowView& v : perspective_shadow_map(camera, aspect, light, scene_box(), 1024).views) bad += !finite(v.view_projection());
+    count_bad(perspective_shadow_map(camera, aspect, light, scene_box(), 1024));
+    if (i % 10 == 0) {
+      count_bad(light_space_perspective_map(camera, aspect, light, scene_box(), 1024));
+      count_bad(cascaded_map(camera, aspect, light, scene_box(), 1024));
+    }
   }
   EXPECT_EQ(bad, 0);
 }

@@ -1,0 +1,51 @@
+// The aliasing factor against a case the test works out itself: a camera and a light both looking
+// straight down on a plane, where a uniform map spreads its texels evenly over what the camera sees.
+#include "app/bench/shadow_figures.hpp"
+#include "app/gl/context.hpp"
+#include "app/render/renderer.hpp"
+#include "app/scene/scene_file.hpp"
+
+#include <gtest/gtest.h>
+
+namespace ecoview {
+namespace {
+
+constexpr int width = 640, height = 480, map_size = 256;
+
+Scene plane_seen_from_above() {
+  const std::string json = R"({"camera": {"position": [0, 10, 0], "target": [0, 0, 0], "up": [0, 0, -1], "fov_y_deg": 60,
+                                          "near": 0.5, "far": 50},
+                               "lights": [{"type": "directional", "direction": [0, -1, 0]}],
+                               "objects": [{"type": "plane", "center": [0, 0, 0], "size": [100, 100]}]})";
+  return load_scene({"plane.json", json, [](const std::string&) { return std::nullopt; }});
+}
+
+TEST(AliasingFactor, IsTheUniformMapsTexelInPixelsOnAPlaneSeenFromAbove) {
+  const auto context = create_headless_context("egl");
+  const Scene scene = plane_seen_from_above();
+  Renderer renderer(scene, {width, height, map_size, ShadowMethod::uniform});
+  renderer.render(scene.camera, scene.lights[0]);
+  const Image<float> aliasing = renderer.frame().read_aliasing();
+  // The map's longer side spans the camera's wider footprint, `width` pixels, in `map_size` texels
+  // (plus the fit's 1 % margin on either side): one texel is width / map_size pixels across.
+  const double expected = 1.02 * width / map_size;
+  for (const auto& [x, y] : {std::pair{width / 2, height / 2}, std::pair{10, 10}, std::pair{width - 10, height - 10}}) {
+    EXPECT_NEAR(aliasing.at(x, y), expected, 0.01 * expected) << "pixel " << x << ", " << y;
+  }
+  EXPECT_NEAR(alias_p95(aliasing, renderer.frame().read_visibility()), expected, 0.01 * expected);
+}
+
+TEST(AliasingFactor, IsZeroWithoutAShadowMapAndNegativeWhereNothingIsDrawn) {
+  const auto context = create_headless_context("egl");
+  Scene scene = plane_seen_from_above();
+  Renderer renderer(scene, {width, height, map_size, ShadowMethod::none});
+  renderer.render(scene.camera, scene.lights[0]);
+  EXPECT_EQ(renderer.frame().read_aliasing().at(width / 2, height / 2), 0.0f);
+  scene.camera.target = glm::vec3(0, 20, 0);  // looking up into the sky
+  scene.camera.up = glm::vec3(0, 0, 1);
+  renderer.render(scene.camera, scene.lights[0]);
+  EXPECT_LT(renderer.frame().read_aliasing().at(width / 2, height / 2), 0.0f);
+}
+
+}  // namespace
+}  // namespace ecoview
