@@ -98,12 +98,12 @@ float aliasing_factor(vec3 p, vec3 n) {
   vec3 t2 = cross(n, t1);
   mat2 texels = 0.5 * shadow_size * screen_jacobian(shadow_matrices[shadow_view(p)], p, t1, t2);
   mat2 pixels = mat2(0.5 * frame_size.x, 0.0, 0.0, 0.5 * frame_size.y) * screen_jacobian(view_projection, p, t1, t2);
-  float det = determinant(texels);
-  if (abs(det) < 1e-20) return 1e9;  // the light grazes the surface: one texel covers it all
+  float size = dot(texels[0], texels[0]) + dot(texels[1], texels[1]);
+  if (abs(determinant(texels)) <= 1e-6 * size) return 1e9;  // the light grazes the surface
   mat2 a = pixels * inverse(texels);
   float frobenius = dot(a[0], a[0]) + dot(a[1], a[1]);
-  float d = determinant(a);
-  return sqrt(0.5 * (frobenius + sqrt(max(frobenius * frobenius - 4.0 * d * d, 0.0))));
+  float d = abs(determinant(a));
+  return 0.5 * (sqrt(frobenius + 2.0 * d) + sqrt(max(frobenius - 2.0 * d, 0.0)));
 }
 
 vec3 linear_to_srgb(vec3 c) {

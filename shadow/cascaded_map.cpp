@@ -26,7 +26,8 @@ std::vector<float> split_depths(float near, float far, int cascades) {
 }
 
 // One slice's map: an orthographic view around the sphere holding the slice, whose size does not
-// change as the camera turns, its origin on whole texels.
+// change as the camera turns in place, its origin on whole texels. (The splits follow the
+// receivers' depth range, so the sizes do change where that range does.)
 ShadowView slice_map(const Camera& camera, float aspect, const Light& light, const Box& scene, float near, float far,
                      int map_size) {
   Camera slice = camera;
@@ -37,7 +38,8 @@ ShadowView slice_map(const Camera& camera, float aspect, const Light& light, con
   for (const glm::vec3& c : corners) centre += c / 8.0f;
   float radius = 0.0f;
   for (const glm::vec3& c : corners) radius = std::max(radius, glm::distance(c, centre));
-  radius = std::max(radius * 1.01f, 1e-3f);
+  // One texel more, for the snapping below, which moves the square by up to a texel.
+  radius = std::max(radius * (1.0f + 2.0f / static_cast<float>(map_size)), 1e-3f);
 
   // A light frame that depends on the light alone, so texels keep their place from frame to frame.
   const glm::vec3 axis = glm::normalize(light.direction);

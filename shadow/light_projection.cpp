@@ -68,7 +68,7 @@ std::optional<ShadowView> fit_light_view(const glm::vec4& light, const FocusBodi
   const glm::mat4 frame = glm::lookAt(c, c + axis, light_up(axis, forward));
 
   // Across: the receivers as seen from the light.
-  float t1 = -INFINITY, w_far = 0.0f;
+  float t1 = -INFINITY, w_near = INFINITY, w_far = 0.0f;
   glm::vec2 lo(INFINITY), hi(-INFINITY);
   for (const glm::vec3& p : bodies.receivers.transformed(frame).vertices()) {
     const float t = -p.z, w = 1.0f + k * t;
@@ -77,8 +77,11 @@ std::optional<ShadowView> fit_light_view(const glm::vec4& light, const FocusBodi
     lo = glm::min(lo, glm::vec2(p) / w);
     hi = glm::max(hi, glm::vec2(p) / w);
     t1 = std::max(t1, t);
+    w_near = std::min(w_near, w);
     w_far = std::max(w_far, w);
   }
+  const float w_min = min_w_ratio * w_far;
+  if (w_near < w_min) return std::nullopt;  // receivers too near the light for the depth range
   const glm::vec2 pad = 0.01f * (hi - lo) + 1e-6f * (glm::abs(lo) + glm::abs(hi)) + 1e-6f;
   lo -= pad;
   hi += pad;
@@ -88,7 +91,6 @@ std::optional<ShadowView> fit_light_view(const glm::vec4& light, const FocusBodi
   const Plane sides[4] = {unit_plane({1, 0, hi.x * k}, hi.x), unit_plane({-1, 0, -lo.x * k}, -lo.x),
                           unit_plane({0, 1, hi.y * k}, hi.y), unit_plane({0, -1, -lo.y * k}, -lo.y)};
   casters.clip(sides);
-  const float w_min = min_w_ratio * w_far;
   if (k != 0.0f) casters.clip(unit_plane({0, 0, k}, 1.0f - w_min));  // w >= w_min
   float t0 = t1;
   for (const glm::vec3& p : casters.vertices()) t0 = std::min(t0, -p.z);

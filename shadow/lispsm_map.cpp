@@ -30,11 +30,13 @@ ShadowSetup light_space_perspective_map(const Camera& camera, float aspect, cons
   if (sin_gamma < min_sin_gamma) return focused_uniform_map(camera, aspect, light, scene, map_size);
   const glm::vec3 axis = across / sin_gamma;
 
-  // The casters' extent along the warp axis and in view depth.
+  // The casters' extent along the warp axis; the receivers' view depth (Wimmer's z_n, z_f).
   float a_min = INFINITY, a_max = -INFINITY, z_near = INFINITY, z_far = -INFINITY;
   for (const glm::vec3& p : bodies.casters.vertices()) {
     a_min = std::min(a_min, glm::dot(p, axis));
     a_max = std::max(a_max, glm::dot(p, axis));
+  }
+  for (const glm::vec3& p : bodies.receivers.vertices()) {
     z_near = std::min(z_near, glm::dot(p - camera.position, f));
     z_far = std::max(z_far, glm::dot(p - camera.position, f));
   }
@@ -44,7 +46,7 @@ ShadowSetup light_space_perspective_map(const Camera& camera, float aspect, cons
   // evenly over the view depth.
   const float n = (z_near + std::sqrt(z_near * z_far)) / sin_gamma;
   const glm::vec3 centre = camera.position + (a_min - n - glm::dot(camera.position, axis)) * axis;
-  const float depth = a_max - a_min;
+  const float depth = std::max(a_max - a_min, 1e-4f * n);
   const glm::mat4 warp = glm::perspective(glm::radians(90.0f), 1.0f, n, n + depth) * glm::lookAt(centre, centre + axis, d);
 
   const FocusBodies warped{bodies.receivers.transformed(warp), bodies.casters.transformed(warp)};
