@@ -189,7 +189,8 @@ class DensityBench {
                   {"splat", base_.splat_size}, {"width", base_.width}, {"height", base_.height}, {"frames", t.frames}};
     if (count > 0) run.params["instances"] = count;
     run.figures = {{"frame_ms", t.frame_ms}, {"sample_ms", t.sample_ms}, {"shadow_pass_ms", t.shadow_pass_ms},
-                   {"frame_pass_ms", t.frame_pass_ms}, {"points", stats.points}, {"triangles", stats.triangles}};
+                   {"frame_pass_ms", t.frame_pass_ms}, {"points", stats.points}, {"triangles", stats.triangles},
+                   {"shadow_points", stats.shadow_points}};
     results_.runs.push_back(run);
   }
 

@@ -41,12 +41,13 @@ FrameRange default_frames(const std::optional<CameraPath>& path, double fps) {
 }
 
 // One frame's figures for --stats (names as DESIGN.md defines them).
-nlohmann::json frame_stats(int frame, double t, const RenderOptions& options, const Renderer& renderer) {
+// render_ms: the wall time of this one frame, sampling, passes and read-backs, until glFinish.
+nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOptions& options, const Renderer& renderer) {
   const FrameStats& s = renderer.stats();
-  return {{"frame", frame}, {"t", t}, {"method", options.method}, {"shadow_size", options.shadow_size},
+  return {{"frame", frame}, {"t", t}, {"method", options.method}, {"shadow_size", options.shadow_size}, {"render_ms", render_ms},
           {"alias_p95", alias_p95(renderer.frame().read_aliasing(), renderer.frame().read_visibility())},
           {"sample_ms", s.sample_ms}, {"shadow_pass_ms", s.shadow_pass_ms}, {"frame_pass_ms", s.frame_pass_ms},
-          {"points", s.points}, {"triangles", s.triangles}};
+          {"points", s.points}, {"triangles", s.triangles}, {"shadow_points", s.shadow_points}};
 }
 
 }  // namespace
@@ -119,11 +120,14 @@ int run_capture(const CaptureOptions& o) {
   for (int frame : todo) {
     const double t = static_cast<double>(frame) / fps;
     const shadow::Camera camera = path ? path->at(t, scene.camera) : scene.camera;
+    const auto render_start = std::chrono::steady_clock::now();
     renderer.render(camera, light, t);
+    glFinish();
+    const double render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - render_start).count();
     for (Aov aov : aovs) {
       write_file_atomically(frame_file(out, aov, frame), encode_aov(aov, renderer, camera.far));
     }
-    if (!o.stats.empty()) stats.push_back(frame_stats(frame, t, o.render, renderer));
+    if (!o.stats.empty()) stats.push_back(frame_stats(frame, t, render_ms, o.render, renderer));
     progress.step();
   }
   progress.finish();

@@ -158,6 +158,7 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
     view.cap_to_pixels = true;
     const pointgen::SampledFrame selection = pointgen::sample_view(view, tables_, samples_.meshes());
     stats_.sample_ms += ms_since(start);
+    stats_.shadow_points = selection.point_count;
     upload_polygons(selection);
     if (!shadow_points_) shadow_points_ = std::make_unique<PointSplat>(glm::ivec2(settings_.shadow_size));
     shadow_points_->upload(selection.points, tables_, samples_);

@@ -36,6 +36,7 @@ struct RenderSettings {
 struct FrameStats {
   std::size_t points = 0;     // in the frame pass
   std::size_t triangles = 0;  // in the frame pass
+  std::size_t shadow_points = 0;  // in the shadow pass
   double sample_ms = 0.0;     // CPU: choosing points or polygons, for both passes
   double shadow_pass_ms = 0.0;  // GPU (timer query)
   double frame_pass_ms = 0.0;   // GPU (timer query): polygons, point splats and their shading
