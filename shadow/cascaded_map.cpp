@@ -74,7 +74,7 @@ ShadowSetup cascaded_map(const Camera& camera, float aspect, const Light& light,
   }
   near = std::max(near, camera.near);
   far = std::max(far, near * 1.001f);
-  ShadowSetup setup{{}, ViewSelection::first_containing};
+  ShadowSetup setup{{}, ViewSelection::first_containing, "cascades"};
   const std::vector<float> splits = split_depths(near, far, cascades);
   for (int i = 0; i < cascades; ++i) {
     setup.views.push_back(slice_map(camera, aspect, light, scene, splits[static_cast<std::size_t>(i)],

@@ -52,7 +52,7 @@ ShadowSetup light_space_perspective_map(const Camera& camera, float aspect, cons
   const FocusBodies warped{bodies.receivers.transformed(warp), bodies.casters.transformed(warp)};
   // The warp looks down +z in its post-perspective space; the light stays at infinity there.
   if (const std::optional<ShadowView> view = fit_light_view(warp * homogeneous(light), warped, {0, 0, 1})) {
-    return {{ShadowView{view->view * warp, view->projection}}};
+    return {{ShadowView{view->view * warp, view->projection}}, ViewSelection::single, "lispsm"};
   }
   return focused_uniform_map(camera, aspect, light, scene, map_size);
 }

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace shadow {
 namespace {
@@ -22,6 +24,14 @@ bool finite(const glm::mat4& m) {
     }
   }
   return true;
+}
+
+std::string describe(const PostPerspectiveSpace& space, const Light& light) {
+  const PostPerspectiveLight kind = post_perspective_light(space.matrix, light);
+  std::ostringstream s;
+  s << "psm: " << (kind == PostPerspectiveLight::point ? "point" : kind == PostPerspectiveLight::inverted ? "inverted" : "directional")
+    << " light, camera moved back " << std::fixed << std::setprecision(1) << space.shift << " m";
+  return s.str();
 }
 
 }  // namespace
@@ -46,7 +56,7 @@ ShadowSetup perspective_shadow_map(const Camera& camera, float aspect, const Lig
     const std::optional<ShadowView> light_view = fit_light_view(space.matrix * homogeneous(light), warped, {0, 0, 1});
     if (!light_view) continue;
     const ShadowView view{light_view->view * space.matrix, light_view->projection};
-    if (finite(view.view_projection())) return {{view}};
+    if (finite(view.view_projection())) return {{view}, ViewSelection::single, describe(space, light)};
   }
   return uniform;
 }

@@ -1,6 +1,7 @@
 #pragma once
 #include <glm/glm.hpp>
 
+#include <string>
 #include <vector>
 
 namespace shadow {
@@ -31,6 +32,9 @@ constexpr float cascade_margin_texels = 2.0f;
 struct ShadowSetup {
   std::vector<ShadowView> views;
   ViewSelection selection = ViewSelection::single;
+  // What the method made of this frame, for reports: e.g. "psm: inverted light, camera moved
+  // back 3.2 m", or "uniform" where a method handed the frame to the uniform map.
+  std::string description = "uniform";
 };
 
 }  // namespace shadow

@@ -86,7 +86,7 @@ ShadowSetup cube_faces(const glm::vec3& light, const FocusBodies& bodies, int ma
   const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
   const glm::vec2 tan_half(1.0f + 8.0f / static_cast<float>(map_size));
-  ShadowSetup setup{{}, ViewSelection::cube_faces};
+  ShadowSetup setup{{}, ViewSelection::cube_faces, "uniform: cube faces"};
   for (int face = 0; face < 6; ++face) {
     const glm::mat4 view = glm::lookAt(light, light + axes[face], ups[face]);
     setup.views.push_back({view, pyramid_projection(view, -tan_half, tan_half, bodies)});

@@ -133,7 +133,7 @@ pointgen::SampledFrame Renderer::measured(const pointgen::SampledFrame& selectio
   return out;
 }
 
-shadow::ShadowSetup Renderer::shadow_setup(const shadow::Camera& camera, const shadow::Light& light) const {
+shadow::ShadowSetup Renderer::make_shadow_setup(const shadow::Camera& camera, const shadow::Light& light) const {
   const int size = settings_.shadow_size;
   switch (settings_.method) {
     case ShadowMethod::psm:
@@ -148,7 +148,7 @@ shadow::ShadowSetup Renderer::shadow_setup(const shadow::Camera& camera, const s
 // The shadow map for this frame; with points on, far instances of point meshes are splatted into
 // it. Timed from the first GL draw to the last.
 void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Light& light) {
-  setup_ = shadow_setup(camera, light);
+  setup_ = make_shadow_setup(camera, light);
   std::vector<glm::mat4> views;
   for (const shadow::ShadowView& v : setup_.views) views.push_back(v.view_projection());
   if (settings_.points) {

@@ -55,6 +55,8 @@ class Renderer {
   void render(const shadow::Camera& camera, const shadow::Light& light, double t = 0.0);
   const FramePass& frame() const { return frame_pass_; }
   const ShadowPass& shadow_map() const { return shadow_pass_; }
+  // The shadow setup of the last frame drawn with shadows.
+  const shadow::ShadowSetup& shadow_setup() const { return setup_; }
   const FrameStats& stats() const { return stats_; }
   // Points per pixel of the last frame (see PointSplat::count_points).
   Image<std::uint32_t> count_points();
@@ -67,7 +69,7 @@ class Renderer {
   void upload_polygons(const pointgen::SampledFrame& selection);
   // One frame, with or without the shadow map.
   void draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows);
-  shadow::ShadowSetup shadow_setup(const shadow::Camera& camera, const shadow::Light& light) const;
+  shadow::ShadowSetup make_shadow_setup(const shadow::Camera& camera, const shadow::Light& light) const;
   void render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
   // The selection as RenderSettings::measure asks.
   pointgen::SampledFrame measured(const pointgen::SampledFrame& selection) const;
