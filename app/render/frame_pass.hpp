@@ -38,6 +38,8 @@ class FramePass {
   // The aliasing factor (DESIGN.md) of the surface in each pixel; negative where no surface was
   // drawn, 0 without a shadow map.
   Image<float> read_aliasing() const;
+  // The smallest linear view depth drawn; 0 if nothing was drawn.
+  float nearest_depth() const;
   // Copies the colour to the default framebuffer (a window), scaled to fit.
   void present(int width, int height) const;
 

@@ -27,15 +27,6 @@ double elapsed_ms(const gl::Query& query) {
 // by the next frame.
 constexpr float nearest_visible_margin = 0.8f;
 
-// The smallest depth in a frame's linear depth, 0 if nothing was drawn.
-float nearest_depth(const Image<float>& depth) {
-  float nearest = INFINITY;
-  for (float d : depth.samples) {
-    if (d > 0.0f) nearest = std::min(nearest, d);
-  }
-  return std::isfinite(nearest) ? nearest : 0.0f;
-}
-
 double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -192,7 +183,7 @@ void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, 
   // gives it.
   if (psm && !(nearest_visible_ > 0.0f)) draw(camera, light, t, false);
   draw(camera, light, t, settings_.method != ShadowMethod::none);
-  if (psm) nearest_visible_ = nearest_depth(frame_pass_.read_depth());
+  if (psm) nearest_visible_ = frame_pass_.nearest_depth();
 }
 
 void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows) {
