@@ -88,12 +88,13 @@ mat2 screen_jacobian(mat4 m, vec3 p, vec3 t1, vec3 t2) {
 
 uniform vec2 frame_size;  // pixels
 uniform mat4 view_projection;
+uniform int aliasing_wanted;
 
 // The aliasing factor (DESIGN.md): the size in screen pixels of one shadow-map texel projected
 // onto the surface at p with normal n; the largest singular value of pixels per texel along the
-// surface. 0 without a shadow map.
+// surface. 0 without a shadow map, or when not wanted.
 float aliasing_factor(vec3 p, vec3 n) {
-  if (shadows_enabled == 0) return 0.0;
+  if (shadows_enabled == 0 || aliasing_wanted == 0) return 0.0;
   vec3 t1 = normalize(abs(n.y) < 0.9 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
   vec3 t2 = cross(n, t1);
   mat2 texels = 0.5 * shadow_size * screen_jacobian(shadow_matrices[shadow_view(p)], p, t1, t2);

@@ -23,7 +23,9 @@ Scene plane_seen_from_above() {
 TEST(AliasingFactor, IsTheUniformMapsTexelInPixelsOnAPlaneSeenFromAbove) {
   const auto context = create_headless_context("egl");
   const Scene scene = plane_seen_from_above();
-  Renderer renderer(scene, {width, height, map_size, ShadowMethod::uniform});
+  RenderSettings settings{width, height, map_size, ShadowMethod::uniform};
+  settings.aliasing = true;
+  Renderer renderer(scene, settings);
   renderer.render(scene.camera, scene.lights[0]);
   const Image<float> aliasing = renderer.frame().read_aliasing();
   // The map's longer side spans the camera's wider footprint, `width` pixels, in `map_size` texels
@@ -38,7 +40,9 @@ TEST(AliasingFactor, IsTheUniformMapsTexelInPixelsOnAPlaneSeenFromAbove) {
 TEST(AliasingFactor, IsZeroWithoutAShadowMapAndNegativeWhereNothingIsDrawn) {
   const auto context = create_headless_context("egl");
   Scene scene = plane_seen_from_above();
-  Renderer renderer(scene, {width, height, map_size, ShadowMethod::none});
+  RenderSettings settings{width, height, map_size, ShadowMethod::none};
+  settings.aliasing = true;
+  Renderer renderer(scene, settings);
   renderer.render(scene.camera, scene.lights[0]);
   EXPECT_EQ(renderer.frame().read_aliasing().at(width / 2, height / 2), 0.0f);
   scene.camera.target = glm::vec3(0, 20, 0);  // looking up into the sky

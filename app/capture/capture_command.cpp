@@ -11,6 +11,7 @@
 #include "app/render/renderer.hpp"
 #include "app/scene/camera_path.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -81,9 +82,10 @@ CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
 
 int run_capture(const CaptureOptions& o) {
   // Check every input before any file is written.
-  const RenderSettings settings = render_settings(o.render);
+  RenderSettings settings = render_settings(o.render);
   const double fps = check_fps(o.fps);
   const std::vector<Aov> aovs = parse_aov_list(o.aov);
+  settings.aliasing = !o.stats.empty() || std::find(aovs.begin(), aovs.end(), Aov::aliasing) != aovs.end();
   check_backend(o.backend);
   const bool frames_asked = !o.frames.empty();
   const FrameRange asked_frames = frames_asked ? parse_frames(o.frames) : FrameRange{};

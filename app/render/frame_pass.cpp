@@ -14,9 +14,10 @@ const glm::vec3 sky_color(0.62f, 0.74f, 0.86f);  // sRGB
 
 }  // namespace
 
-FramePass::FramePass(int width, int height)
+FramePass::FramePass(int width, int height, bool aliasing)
     : width_(width),
       height_(height),
+      aliasing_wanted_(aliasing),
       program_(gl::build_program("frame.vert", "frame.frag")),
       point_program_(gl::build_program("fullscreen.vert", "point_shade.frag")) {
   glTextureStorage2D(color_.name(), 1, GL_RGBA8, width, height);
@@ -87,6 +88,7 @@ void FramePass::set_lighting(const gl::Program& program, const shadow::Camera& c
   gl::set_uniform(program, "light_direction", glm::normalize(light.direction));
   gl::set_uniform(program, "spot_cos_cone", std::cos(glm::radians(light.cone_deg)));
   gl::set_uniform(program, "shadows_enabled", shadow_map ? 1 : 0);
+  gl::set_uniform(program, "aliasing_wanted", aliasing_wanted_ ? 1 : 0);
   if (shadow_map) {
     const shadow::ShadowSetup& setup = shadow_map->setup;
     gl::set_uniform(program, "shadow_selection", static_cast<int>(setup.selection));

@@ -15,7 +15,8 @@ namespace ecoview {
 // visibility (the `shadow` AOV), linear view depth and the shadow map's aliasing factor.
 class FramePass {
  public:
-  FramePass(int width, int height);
+  // `aliasing`: also fill the aliasing target (it costs shading time; otherwise it holds 0).
+  FramePass(int width, int height, bool aliasing);
 
   // `shadow_map`: the depth-texture array with one layer per view of `setup`; without one every
   // surface facing the light is lit.
@@ -51,6 +52,7 @@ class FramePass {
                     const std::optional<ShadowLookup>& shadow_map) const;
 
   int width_, height_;
+  bool aliasing_wanted_;
   gl::Texture color_{GL_TEXTURE_2D};
   gl::Texture visibility_{GL_TEXTURE_2D};
   gl::Texture depth_{GL_TEXTURE_2D};

@@ -84,7 +84,7 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       gpu_scene_(scene),
       samples_(scene, settings.points_per_triangle),
       shadow_pass_(settings.shadow_size),
-      frame_pass_(settings.width, settings.height),
+      frame_pass_(settings.width, settings.height, settings.aliasing),
       frame_points_({settings.width, settings.height}) {
   if (settings.point_meshes_only) {
     for (std::size_t g = 0; g < tables_.size(); ++g) {

@@ -30,6 +30,7 @@ struct RenderSettings {
   // For the density figures: draw the instances the sampler makes points as points only (no
   // polygons at all), or the same instances as polygons (their reference).
   enum class Measure { off, points_only, their_polygons } measure = Measure::off;
+  bool aliasing = false;  // fill the frame's aliasing target (the `aliasing` AOV, alias_p95)
 };
 
 // What a frame drew, and how long its parts took.
