@@ -17,15 +17,6 @@ namespace {
 // casters' depth range to 2^(max_shift_steps - 5) times it, where the map is all but uniform.
 constexpr int max_shift_steps = 14;
 
-bool finite(const glm::mat4& m) {
-  for (int c = 0; c < 4; ++c) {
-    for (int r = 0; r < 4; ++r) {
-      if (!std::isfinite(m[c][r])) return false;
-    }
-  }
-  return true;
-}
-
 std::string describe(const PostPerspectiveSpace& space, const Light& light) {
   const PostPerspectiveLight kind = post_perspective_light(space.matrix, light);
   std::ostringstream s;

@@ -1,6 +1,7 @@
 #pragma once
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,16 @@ struct ShadowView {
 
   glm::mat4 view_projection() const { return projection * view; }
 };
+
+// Whether every entry of a matrix is a finite number.
+inline bool finite(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) {
+      if (!std::isfinite(m[c][r])) return false;
+    }
+  }
+  return true;
+}
 
 // How a surface point picks the view whose map holds its shadow.
 enum class ViewSelection {

@@ -38,15 +38,6 @@ Light random_light(pointgen::Random& rng, LightType type) {
   return l;
 }
 
-bool finite(const glm::mat4& m) {
-  for (int c = 0; c < 4; ++c) {
-    for (int r = 0; r < 4; ++r) {
-      if (!std::isfinite(m[c][r])) return false;
-    }
-  }
-  return true;
-}
-
 std::size_t layer_of(const ShadowSetup& setup, const Light& light, const glm::vec3& p) {
   if (setup.selection == ViewSelection::single) return 0;
   if (setup.selection == ViewSelection::first_containing) {
