@@ -147,6 +147,10 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
     pointgen::SamplerView view = sampler_view(camera, settings_, views);
     view.pixels = glm::ivec2(settings_.shadow_size);
     view.cap_to_pixels = true;
+    // Layer under layer of canopy as the light sees it: counts follow the expected visible share
+    // (docs/benchmarks.md: 30.3 M shadow points down to 8.5 M in the default view, polygon-shadowed
+    // pixels lit 0.34 % against 0.51 %).
+    view.full_count_transmittance = 1.0f;
     const pointgen::SampledFrame selection = pointgen::sample_view(view, tables_, samples_.meshes());
     stats_.sample_ms += ms_since(start);
     stats_.shadow_points = selection.point_count;

@@ -15,9 +15,6 @@ namespace {
 // The band around break-even, as ratios of needed points to the polygon-equivalent count, in which
 // an instance is drawn both as points and as polygons.
 constexpr float band_low = 0.8f, band_high = 1.25f;
-// Below this much of its screen rectangle left uncovered by nearer objects, an object's count
-// falls linearly to none.
-constexpr float full_count_transmittance = 0.01f;
 constexpr int tile_pixels = 4;  // per side of a coverage tile
 
 using Frustum = std::array<glm::vec4, 6>;
@@ -81,7 +78,8 @@ std::array<glm::vec3, 8> box_corners(const SampledMesh& mesh, const glm::mat4& t
 // silhouette fills that much of its screen rectangle, hiding what lies behind there. Tiles count as
 // uniformly covered, which cannot see the exact gaps between objects, so an object keeps its full
 // count until nearly all of its rectangle is hidden and only then fades out.
-float visible_share(CoverageGrid& coverage, const SampledMesh& mesh, const glm::mat4& transform, const Candidate& c) {
+float visible_share(CoverageGrid& coverage, const SampledMesh& mesh, const glm::mat4& transform, const Candidate& c,
+                    float full_count_transmittance) {
   if (!(mesh.silhouette > 0.0f && mesh.area > 0.0f)) return 1.0f;
   const std::optional<CoverageGrid::Rect> rect = coverage.project(box_corners(mesh, transform));
   if (!rect || !(rect->area() > 0.0f)) return 1.0f;
@@ -117,7 +115,9 @@ SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTabl
       needed = std::min(needed, view.density.k * 0.5f * c.area * coverage->ndc_area_per_square_metre(c.center) * ndc_to_pixels);
     }
     // Only point meshes hide others: ground and buildings are large and far from their bounds.
-    if (coverage && view.occlusion && mesh.samples > 0) needed *= visible_share(*coverage, mesh, tables[c.table].transforms[c.instance], c);
+    if (coverage && view.occlusion && mesh.samples > 0) {
+      needed *= visible_share(*coverage, mesh, tables[c.table].transforms[c.instance], c, view.full_count_transmittance);
+    }
     const float polygon_equivalent = view.points_per_triangle * static_cast<float>(mesh.triangles);
     const float ratio = needed / polygon_equivalent;
     const bool as_polygons = ratio > band_low || needed > static_cast<float>(mesh.samples);

@@ -34,6 +34,10 @@ struct SamplerView {
   // Count only the surface in front: each object's own front layer, and (with one view) what the
   // objects before it leave uncovered (CoverageGrid).
   bool occlusion = true;
+  // Below this much of its screen rectangle left uncovered by nearer objects, an object's count
+  // falls linearly to none. The frame keeps full counts until 99 % is hidden (holes show); at 1 the
+  // count is the expected visible share, which suits the shadow map.
+  float full_count_transmittance = 0.01f;
   glm::ivec2 pixels{256, 256};  // the (first) view's image size; occlusion tiles are 4 pixels
   // For a shadow map: counts follow the camera, but the map holds no more than k points per texel
   // of a caster's projected surface, so no caster gets more (with one view).
