@@ -70,7 +70,8 @@ std::optional<ShadowView> fit_light_view(const glm::vec4& light, const FocusBodi
   // Across: the receivers as seen from the light.
   float t1 = -INFINITY, w_near = INFINITY, w_far = 0.0f;
   glm::vec2 lo(INFINITY), hi(-INFINITY);
-  for (const glm::vec3& p : bodies.receivers.transformed(frame).vertices()) {
+  const std::vector<glm::vec3> receivers = bodies.receivers.transformed(frame).vertices();
+  for (const glm::vec3& p : receivers) {
     const float t = -p.z, w = 1.0f + k * t;
     if (!(w > min_w_ratio)) return std::nullopt;  // the light among or before the receivers
     if (std::abs(k) * glm::length(glm::vec2(p)) > max_half_angle_tan * w) return std::nullopt;
@@ -94,7 +95,7 @@ std::optional<ShadowView> fit_light_view(const glm::vec4& light, const FocusBodi
   if (k != 0.0f) casters.clip(unit_plane({0, 0, k}, 1.0f - w_min));  // w >= w_min
   float t0 = t1;
   for (const glm::vec3& p : casters.vertices()) t0 = std::min(t0, -p.z);
-  for (const glm::vec3& p : bodies.receivers.transformed(frame).vertices()) t0 = std::min(t0, -p.z);
+  for (const glm::vec3& p : receivers) t0 = std::min(t0, -p.z);
   const float depth_pad = 0.01f * (t1 - t0) + 1e-6f * (std::abs(t0) + std::abs(t1)) + 1e-6f;
   t0 -= depth_pad;
   t1 += depth_pad;

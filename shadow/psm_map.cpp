@@ -40,8 +40,10 @@ ShadowSetup perspective_shadow_map(const Camera& camera, float aspect, const Lig
   const PostPerspectiveSpace first = post_perspective_space(pushed, aspect, bodies.casters, pushed.near);
   const float depth_range = first.far - first.near;
   for (int step = 0; step < max_shift_steps; ++step) {
-    const float extra_shift = step == 0 ? 0.0f : depth_range * std::exp2(static_cast<float>(step - 4));
-    const PostPerspectiveSpace space = post_perspective_space(pushed, aspect, bodies.casters, pushed.near, extra_shift);
+    const PostPerspectiveSpace space =
+        step == 0 ? first
+                  : post_perspective_space(pushed, aspect, bodies.casters, pushed.near,
+                                           depth_range * std::exp2(static_cast<float>(step - 4)));
     const FocusBodies warped{bodies.receivers.transformed(space.matrix), bodies.casters.transformed(space.matrix)};
     // The camera looks down +z in post-perspective space.
     const std::optional<ShadowView> light_view = fit_light_view(space.matrix * homogeneous(light), warped, {0, 0, 1});
