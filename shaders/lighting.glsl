@@ -10,24 +10,41 @@ uniform vec3 camera_position;
 
 uniform int shadows_enabled;
 // The views of the shadow setup (shadow::ShadowSetup), one map layer each, and how a point picks
-// its view: one map, cube faces by the major axis of (point - light), or the first cascade that
-// holds it.
-const int SINGLE = 0, CUBE_FACES = 1, FIRST_CONTAINING = 2;
+// its view: one map, cube faces by the major axis of (point - light), the first cascade that
+// holds it, or the paraboloid whose hemisphere holds it.
+const int SINGLE = 0, CUBE_FACES = 1, FIRST_CONTAINING = 2, HEMISPHERES = 3;
 const float CASCADE_MARGIN_TEXELS = 2.0;  // shadow::cascade_margin_texels
 uniform int shadow_selection;
 uniform int shadow_view_count;
+// A view's world → clip matrix; for a paraboloid view (zoom, range in shadow_paraboloids, zoom 0
+// for the others) its world → light space matrix.
 uniform mat4 shadow_matrices[6];
+uniform vec2 shadow_paraboloids[6];
 uniform float shadow_size;  // texels per side
 layout(binding = 0) uniform sampler2DArrayShadow shadow_map;
+
+#include "paraboloid.glsl"
+
+vec4 shadow_clip(int layer, vec3 p) {
+  if (shadow_paraboloids[layer].x == 0.0) return shadow_matrices[layer] * vec4(p, 1.0);
+  return paraboloid_clip(shadow_matrices[layer], shadow_paraboloids[layer], p);
+}
 
 const float ambient = 0.18;
 const float dimming = 0.3;
 const float shininess = 48.0;
 const float specular_strength = 0.25;
 
-// World-space size of one shadow-map texel at p, from the gradient of the map coordinates of
-// the (projective) light matrix, so it holds for any parameterization.
-float texel_world_size(mat4 m, vec3 p) {
+// World-space size of one shadow-map texel at p. For a projective view from the gradient of its
+// map coordinates, so it holds for any such parameterization; a paraboloid view is conformal, with
+// texels of 2 zoom (1 - d.z) / shadow_size radians (shadow/paraboloid_map.cpp).
+float texel_world_size(int layer, vec3 p) {
+  mat4 m = shadow_matrices[layer];
+  vec2 paraboloid = shadow_paraboloids[layer];
+  if (paraboloid.x != 0.0) {
+    vec3 q = (m * vec4(p, 1.0)).xyz;
+    return 2.0 * paraboloid.x * (length(q) - q.z) / shadow_size;
+  }
   vec4 clip = m * vec4(p, 1.0);
   vec3 row_x = vec3(m[0][0], m[1][0], m[2][0]);
   vec3 row_y = vec3(m[0][1], m[1][1], m[2][1]);
@@ -48,6 +65,7 @@ int shadow_view(vec3 p) {
     }
     return shadow_view_count - 1;
   }
+  if (shadow_selection == HEMISPHERES) return (shadow_matrices[0] * vec4(p, 1.0)).z <= 0.0 ? 0 : 1;
   vec3 d = p - light_position;
   vec3 a = abs(d);
   if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0 : 1;
@@ -62,10 +80,9 @@ int shadow_view(vec3 p) {
 // centre tap.
 float shadow_test(vec3 position, vec3 n, float n_dot_l) {
   int layer = shadow_view(position);
-  mat4 m = shadow_matrices[layer];
   float sin_light = sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0));
-  vec3 p = position + n * (1.5 * texel_world_size(m, position) * sin_light);
-  vec4 clip = m * vec4(p, 1.0);
+  vec3 p = position + n * (1.5 * texel_world_size(layer, position) * sin_light);
+  vec4 clip = shadow_clip(layer, p);
   if (clip.w <= 0.0) return 1.0;  // behind the map's projection centre: not covered
   vec3 map = clip.xyz / clip.w * 0.5 + 0.5;
   if (any(lessThan(map.xy, vec2(0.0))) || any(greaterThan(map.xy, vec2(1.0)))) return 1.0;
@@ -86,6 +103,22 @@ mat2 screen_jacobian(mat4 m, vec3 p, vec3 t1, vec3 t2) {
   return mat2((d1.xy - ndc * d1.w) / clip.w, (d2.xy - ndc * d2.w) / clip.w);
 }
 
+// The same for the map coordinates of a shadow view. A paraboloid view is projective in the
+// direction d = q / |q| (its matrix takes (d, 1) to (d.xy / zoom, -, 1 - d.z)), and d moves by
+// the part of a step across it, over |q|.
+mat2 shadow_jacobian(int layer, vec3 p, vec3 t1, vec3 t2) {
+  mat4 m = shadow_matrices[layer];
+  float zoom = shadow_paraboloids[layer].x;
+  if (zoom == 0.0) return screen_jacobian(m, p, t1, t2);
+  vec3 q = (m * vec4(p, 1.0)).xyz;
+  vec3 d = normalize(q);
+  vec3 s1 = mat3(m) * t1, s2 = mat3(m) * t2;
+  s1 = (s1 - d * dot(d, s1)) / length(q);
+  s2 = (s2 - d * dot(d, s2)) / length(q);
+  mat4 direction_to_clip = mat4(1.0 / zoom, 0.0, 0.0, 0.0, 0.0, 1.0 / zoom, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0);
+  return screen_jacobian(direction_to_clip, d, s1, s2);
+}
+
 uniform vec2 frame_size;  // pixels
 uniform mat4 view_projection;
 uniform int aliasing_wanted;
@@ -97,7 +130,7 @@ float aliasing_factor(vec3 p, vec3 n) {
   if (shadows_enabled == 0 || aliasing_wanted == 0) return 0.0;
   vec3 t1 = normalize(abs(n.y) < 0.9 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
   vec3 t2 = cross(n, t1);
-  mat2 texels = 0.5 * shadow_size * screen_jacobian(shadow_matrices[shadow_view(p)], p, t1, t2);
+  mat2 texels = 0.5 * shadow_size * shadow_jacobian(shadow_view(p), p, t1, t2);
   mat2 pixels = mat2(0.5 * frame_size.x, 0.0, 0.0, 0.5 * frame_size.y) * screen_jacobian(view_projection, p, t1, t2);
   float size = dot(texels[0], texels[0]) + dot(texels[1], texels[1]);
   if (abs(determinant(texels)) <= 1e-6 * size) return 1e9;  // the light grazes the surface

@@ -3,13 +3,16 @@
 // The including shader defines VISIT first.
 layout(local_size_x = 64) in;
 
-uniform mat4 view_projection;
+uniform mat4 view_projection;  // for a paraboloid shadow view, its world → light space matrix
+uniform vec2 paraboloid;        // a paraboloid view's zoom and range; zoom 0 for a projective view
 uniform uint total_points;
 uniform uint first_thread;  // dispatches are split to stay within the work-group count limit
 uniform int splat_size;
 uniform float depth_bias;  // added to window depth (shadow maps)
 
 const uint points_per_thread = 16u;
+
+#include "paraboloid.glsl"
 
 void main() {
   uint first = (first_thread + gl_GlobalInvocationID.x) * points_per_thread;
@@ -19,7 +22,8 @@ void main() {
   uint last = min(first + points_per_thread, total_points);
   for (uint p = first; p < last; ++p) {
     while (p >= d.x + d.y) d = draws[++draw];
-    vec4 clip = view_projection * (instances[d.w].model * vec4(positions[d.z + (p - d.x)].xyz, 1.0));
+    vec4 world = instances[d.w].model * vec4(positions[d.z + (p - d.x)].xyz, 1.0);
+    vec4 clip = paraboloid.x == 0.0 ? view_projection * world : paraboloid_clip(view_projection, paraboloid, world.xyz);
     if (clip.w <= 0.0) continue;
     vec3 ndc = clip.xyz / clip.w;
     if (any(greaterThan(abs(ndc), vec3(1.0)))) continue;

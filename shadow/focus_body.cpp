@@ -77,4 +77,15 @@ FocusBodies focus_bodies(const glm::mat4& view_projection, const Light& light, c
   return bodies;
 }
 
+FocusBodies focus_bodies_or_scene(const glm::mat4& view_projection, const Light& light, const Box& scene) {
+  FocusBodies bodies = focus_bodies(view_projection, light, scene);
+  if (bodies.receivers.empty()) {
+    bodies.receivers = ConvexBody::from_box(scene);
+    bodies.receivers.clip(light_frustum_planes(light));
+    bodies.casters = bodies.receivers;
+  }
+  if (bodies.receivers.empty()) bodies.receivers = bodies.casters = ConvexBody::from_box(scene);
+  return bodies;
+}
+
 }  // namespace shadow

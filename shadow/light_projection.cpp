@@ -51,6 +51,19 @@ glm::mat4 projection(float k, glm::vec2 lo, glm::vec2 hi, float t0, float t1) {
 
 }  // namespace
 
+Cone cone_around(const glm::vec3& apex, const std::vector<glm::vec3>& points) {
+  glm::vec3 sum(0.0f);
+  for (const glm::vec3& p : points) {
+    if (glm::length(p - apex) > 0.0f) sum += glm::normalize(p - apex);
+  }
+  if (glm::length(sum) < 1e-6f) return {glm::vec3(0, -1, 0), -1.0f};
+  Cone cone{glm::normalize(sum), 1.0f};
+  for (const glm::vec3& p : points) {
+    if (glm::length(p - apex) > 0.0f) cone.cos_half_angle = std::min(cone.cos_half_angle, glm::dot(cone.axis, glm::normalize(p - apex)));
+  }
+  return cone;
+}
+
 glm::vec3 light_up(const glm::vec3& axis, const glm::vec3& forward) {
   const glm::vec3 up = forward - glm::dot(forward, axis) * axis;
   return glm::length(up) > 1e-3f ? glm::normalize(up) : any_perpendicular(axis);

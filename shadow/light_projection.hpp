@@ -10,6 +10,14 @@ namespace shadow {
 // at the map's rim grow too large.
 constexpr float max_single_map_half_angle_deg = 60.0f;
 
+// A cone from an apex around points: its axis and the cosine of its half-angle (-1 when the
+// points surround the apex).
+struct Cone {
+  glm::vec3 axis;
+  float cos_half_angle;
+};
+Cone cone_around(const glm::vec3& apex, const std::vector<glm::vec3>& points);
+
 // Up vector for a light view along `axis`: the camera's view direction `forward` (in the same
 // space) where it is not parallel, so the map's rows follow the view.
 glm::vec3 light_up(const glm::vec3& axis, const glm::vec3& forward);

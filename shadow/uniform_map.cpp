@@ -11,27 +11,6 @@
 namespace shadow {
 namespace {
 
-// A cone from the light around the receivers: its axis and the cosine of its half-angle.
-struct Cone {
-  glm::vec3 axis;
-  float cos_half_angle;
-};
-
-Cone receiver_cone(const glm::vec3& light, const std::vector<glm::vec3>& receivers) {
-  glm::vec3 sum(0.0f);
-  for (const glm::vec3& p : receivers) {
-    if (glm::length(p - light) > 0.0f) sum += glm::normalize(p - light);
-  }
-  if (glm::length(sum) < 1e-6f) return {glm::vec3(0, -1, 0), -1.0f};
-  Cone cone{glm::normalize(sum), 1.0f};
-  for (const glm::vec3& p : receivers) {
-    if (glm::length(p - light) > 0.0f) {
-      cone.cos_half_angle = std::min(cone.cos_half_angle, glm::dot(cone.axis, glm::normalize(p - light)));
-    }
-  }
-  return cone;
-}
-
 ShadowView fit_orthographic(const glm::mat4& view, const FocusBodies& bodies) {
   Box r, c;
   for (const glm::vec3& p : bodies.receivers.vertices()) r.add(glm::vec3(view * glm::vec4(p, 1.0f)));
@@ -98,15 +77,7 @@ ShadowSetup cube_faces(const glm::vec3& light, const FocusBodies& bodies, int ma
 
 ShadowSetup focused_uniform_map(const Camera& camera, float aspect, const Light& light, const Box& scene,
                                 int map_size) {
-  FocusBodies bodies = focus_bodies(camera.projection(aspect) * camera.view(), light, scene);
-  if (bodies.receivers.empty()) {  // the camera sees none of the scene: cover all of it
-    bodies.receivers = ConvexBody::from_box(scene);
-    bodies.receivers.clip(light_frustum_planes(light));
-    bodies.casters = bodies.receivers;
-  }
-  if (bodies.receivers.empty()) {  // the light does not reach the scene: any valid map will do
-    bodies.receivers = bodies.casters = ConvexBody::from_box(scene);
-  }
+  const FocusBodies bodies = focus_bodies_or_scene(camera.projection(aspect) * camera.view(), light, scene);
 
   switch (light.type) {
     case LightType::directional: {
@@ -120,7 +91,7 @@ ShadowSetup focused_uniform_map(const Camera& camera, float aspect, const Light&
       return {{fit_perspective(view, std::tan(glm::radians(light.cone_deg)), bodies)}};
     }
     case LightType::point: {
-      const Cone cone = receiver_cone(light.position, bodies.receivers.vertices());
+      const Cone cone = cone_around(light.position, bodies.receivers.vertices());
       if (cone.cos_half_angle < std::cos(glm::radians(max_single_map_half_angle_deg))) {
         return cube_faces(light.position, bodies, map_size);
       }

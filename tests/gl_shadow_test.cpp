@@ -28,9 +28,11 @@ const char* light_name(shadow::LightType t) {
 }
 
 const char* method_name(ShadowMethod m) {
-  return m == ShadowMethod::psm      ? "psm"
-         : m == ShadowMethod::lispsm ? "lispsm"
+  return m == ShadowMethod::psm        ? "psm"
+         : m == ShadowMethod::lispsm   ? "lispsm"
          : m == ShadowMethod::cascades ? "cascades"
+         : m == ShadowMethod::dpsm     ? "dpsm"
+         : m == ShadowMethod::ipsm     ? "ipsm"
                                        : "uniform";
 }
 
@@ -58,7 +60,7 @@ TEST_P(FloatingBoxShadow, ShadowAovMatchesGeometryAwayFromEdges) {
     }
     std::cout << backend << " " << light_name(type) << " " << method_name(method) << " case " << i << ": " << 100.0 * c.agreement()
               << " % of " << c.lit + c.shadowed << " plane pixels agree; lit " << c.lit_agreeing << "/" << c.lit
-              << ", shadowed " << c.shadowed_agreeing << "/" << c.shadowed << "\n";
+              << ", shadowed " << c.shadowed_agreeing << "/" << c.shadowed << " (" << renderer.shadow_setup().description << ")\n";
     EXPECT_GE(c.agreement(), 0.995) << "scene:\n" << s.scene_json();
     // Per class too, so that a frame with no shadows at all cannot pass on the lit majority.
     EXPECT_GE(c.shadowed_agreement(), 0.99) << "scene:\n" << s.scene_json();
@@ -73,7 +75,7 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Combine(testing::Values("egl", "osmesa"),
                      testing::Values(shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot),
                      testing::Values(ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::lispsm,
-                                     ShadowMethod::cascades)),
+                                     ShadowMethod::cascades, ShadowMethod::dpsm, ShadowMethod::ipsm)),
     [](const testing::TestParamInfo<Param>& info) {
       return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + method_name(std::get<2>(info.param));
     });

@@ -1,4 +1,5 @@
-// The warped and cascaded shadow maps (PSM, LiSPSM, cascades) against geometry the test computes itself: every ray from
+// The warped, cascaded and paraboloid shadow maps (PSM, LiSPSM, cascades, DPSM, IPSM) against
+// geometry the test computes itself: every ray from
 // a visible receiver to the light, inside the scene, maps into the shadow map's clip cube with
 // depth growing towards the receiver; the PSM's light cases follow the paper's geometric rule; no
 // configuration, random or degenerate, gives NaN or infinity.
@@ -6,6 +7,7 @@
 #include "shadow/cascaded_map.hpp"
 #include "shadow/focus_body.hpp"
 #include "shadow/lispsm_map.hpp"
+#include "shadow/paraboloid_map.hpp"
 #include "shadow/post_perspective.hpp"
 #include "shadow/psm_map.hpp"
 #include "shadow/uniform_map.hpp"
@@ -58,6 +60,8 @@ std::vector<glm::vec3> ray_to_light(const glm::vec3& receiver, const Light& ligh
 ShadowSetup psm(const Camera& c, const Light& l) { return perspective_shadow_map(c, aspect, l, scene_box(), 2048); }
 ShadowSetup lispsm(const Camera& c, const Light& l) { return light_space_perspective_map(c, aspect, l, scene_box(), 2048); }
 ShadowSetup cascades(const Camera& c, const Light& l) { return cascaded_map(c, aspect, l, scene_box(), 2048); }
+ShadowSetup dpsm(const Camera& c, const Light& l) { return dual_paraboloid_map(c, aspect, l, scene_box(), 2048); }
+ShadowSetup ipsm(const Camera& c, const Light& l) { return improved_paraboloid_map(c, aspect, l, scene_box(), 2048); }
 
 using Param = std::tuple<ShadowSetup (*)(const Camera&, const Light&), LightType>;
 
@@ -74,14 +78,14 @@ TEST_P(WarpedMap, RaysFromReceiversToTheLightMapIntoTheCubeCastersFirst) {
     if (bodies.receivers.empty()) continue;
     const ShadowSetup setup = map(camera, light);
     const ShadowSetup uniform = focused_uniform_map(camera, aspect, light, scene_box(), 2048);
-    warped += setup.views.size() != uniform.views.size() ||
+    warped += setup.views.size() != uniform.views.size() || setup.views[0].paraboloid ||
               setup.views[0].view_projection() != uniform.views[0].view_projection();
     for (int j = 0; j < 20; ++j) {
       const glm::vec3 r = random_point_in(bodies.receivers, rng);
       if (!lit_by_spot(light, r)) continue;
       const std::size_t layer = layer_of(setup, light, r);
-      const glm::mat4 m = setup.views[layer].view_projection();
-      const glm::vec4 clip = m * glm::vec4(r, 1.0f);
+      const ShadowView& view = setup.views[layer];
+      const glm::vec4 clip = view.clip(r);
       ASSERT_GT(clip.w, 0.0f) << "camera " << i;
       const glm::vec3 ndc = glm::vec3(clip) / clip.w;
       ASSERT_LE(glm::max(std::abs(ndc.x), glm::max(std::abs(ndc.y), std::abs(ndc.z))), 1.0001f) << "camera " << i;
@@ -89,7 +93,7 @@ TEST_P(WarpedMap, RaysFromReceiversToTheLightMapIntoTheCubeCastersFirst) {
       for (const glm::vec3& c : ray_to_light(r, light, scene_box())) {
         // A cube face holds only its own directions; a cascade must hold its receivers' casters.
         if (setup.selection == ViewSelection::cube_faces && layer_of(setup, light, c) != layer) continue;
-        const glm::vec4 cc = m * glm::vec4(c, 1.0f);
+        const glm::vec4 cc = view.clip(c);
         ASSERT_GT(cc.w, 0.0f) << "camera " << i;
         const glm::vec3 cn = glm::vec3(cc) / cc.w;
         ASSERT_LE(glm::max(std::abs(cn.x), glm::max(std::abs(cn.y), std::abs(cn.z))), 1.0001f)
@@ -102,19 +106,25 @@ TEST_P(WarpedMap, RaysFromReceiversToTheLightMapIntoTheCubeCastersFirst) {
   }
   EXPECT_GT(receivers, 2000);
   EXPECT_GT(casters, 10000);
-  // Most maps are not the uniform fallback (LiSPSM and cascades take directional lights only).
-  if (map == psm || type == LightType::directional) {
+  // Most maps are not the uniform fallback (LiSPSM and cascades take directional lights only,
+  // the paraboloid maps point and spot lights only).
+  const bool paraboloid = map == dpsm || map == ipsm;
+  if (map == psm || (type == LightType::directional) != paraboloid) {
     EXPECT_GT(warped, 100);
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(MethodsAndLights, WarpedMap,
-                         testing::Combine(testing::Values(&psm, &lispsm, &cascades),
+                         testing::Combine(testing::Values(&psm, &lispsm, &cascades, &dpsm, &ipsm),
                                           testing::Values(LightType::directional, LightType::point, LightType::spot)),
                          [](const testing::TestParamInfo<Param>& info) {
                            const LightType type = std::get<1>(info.param);
                            const auto map = std::get<0>(info.param);
-                           return std::string(map == &psm ? "psm_" : map == &lispsm ? "lispsm_" : "cascades_") +
+                           return std::string(map == &psm      ? "psm_"
+                                              : map == &lispsm   ? "lispsm_"
+                                              : map == &cascades ? "cascades_"
+                                              : map == &dpsm     ? "dpsm_"
+                                                                 : "ipsm_") +
                                   (type == LightType::directional ? "directional" : type == LightType::point ? "point" : "spot");
                          });
 
@@ -213,28 +223,28 @@ TEST(WarpedMap, DegenerateConfigurationsGiveFiniteMatrices) {
     for (const Light& light : lights) {
       for (float nearest : {0.0f, 5.0f, 1e6f}) {
         for (const ShadowView& v : perspective_shadow_map(c, aspect, light, scene_box(), 1024, nearest).views) {
-          EXPECT_TRUE(finite(v.view_projection()));
+          EXPECT_TRUE(finite(v));
         }
       }
-      for (const ShadowView& v : light_space_perspective_map(c, aspect, light, scene_box(), 1024).views) {
-        EXPECT_TRUE(finite(v.view_projection()));
-      }
-      for (const ShadowView& v : cascaded_map(c, aspect, light, scene_box(), 1024).views) {
-        EXPECT_TRUE(finite(v.view_projection()));
+      for (const ShadowSetup& setup : {light_space_perspective_map(c, aspect, light, scene_box(), 1024),
+                                       cascaded_map(c, aspect, light, scene_box(), 1024),
+                                       dual_paraboloid_map(c, aspect, light, scene_box(), 1024),
+                                       improved_paraboloid_map(c, aspect, light, scene_box(), 1024)}) {
+        for (const ShadowView& v : setup.views) EXPECT_TRUE(finite(v));
       }
     }
   }
 }
 
 // The count: a million random configurations for the PSM (ECOVIEW_PSM_CASES sets
-// another), a tenth of that for LiSPSM and cascades, every kind of light, no NaN or infinity.
+// another), a tenth of that for the other methods, every kind of light, no NaN or infinity.
 TEST(WarpedMap, AMillionRandomConfigurationsGiveFiniteMatrices) {
   const char* cases = std::getenv("ECOVIEW_PSM_CASES");
   const int count = cases ? std::atoi(cases) : 1000000;
   pointgen::Random rng(5);
   int bad = 0;
   auto count_bad = [&](const ShadowSetup& setup) {
-    for (const ShadowView& v : setup.views) bad += !finite(v.view_projection());
+    for (const ShadowView& v : setup.views) bad += !finite(v);
   };
   for (int i = 0; i < count; ++i) {
     const Camera camera = random_camera(rng);
@@ -243,6 +253,8 @@ TEST(WarpedMap, AMillionRandomConfigurationsGiveFiniteMatrices) {
     if (i % 10 == 0) {
       count_bad(light_space_perspective_map(camera, aspect, light, scene_box(), 1024));
       count_bad(cascaded_map(camera, aspect, light, scene_box(), 1024));
+      count_bad(dual_paraboloid_map(camera, aspect, light, scene_box(), 1024));
+      count_bad(improved_paraboloid_map(camera, aspect, light, scene_box(), 1024));
     }
   }
   EXPECT_EQ(bad, 0);

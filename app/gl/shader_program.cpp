@@ -65,6 +65,15 @@ Program build_program(const std::string& vertex, const std::string& fragment) {
   return link({&vs, &fs}, vertex + " + " + fragment);
 }
 
+Program build_program(const std::string& vertex, const std::string& tess_control, const std::string& tess_evaluation,
+                      const std::string& fragment) {
+  const Shader vs = compile(GL_VERTEX_SHADER, vertex);
+  const Shader tcs = compile(GL_TESS_CONTROL_SHADER, tess_control);
+  const Shader tes = compile(GL_TESS_EVALUATION_SHADER, tess_evaluation);
+  const Shader fs = compile(GL_FRAGMENT_SHADER, fragment);
+  return link({&vs, &tcs, &tes, &fs}, vertex + " + " + tess_control + " + " + tess_evaluation + " + " + fragment);
+}
+
 Program build_compute_program(const std::string& compute) {
   const Shader cs = compile(GL_COMPUTE_SHADER, compute);
   return link({&cs}, compute);

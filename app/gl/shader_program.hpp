@@ -9,6 +9,9 @@ namespace ecoview::gl {
 
 // Compiles and links the embedded shaders at shaders/<vertex> and shaders/<fragment>.
 Program build_program(const std::string& vertex, const std::string& fragment);
+// The same with tessellation control and evaluation stages between them.
+Program build_program(const std::string& vertex, const std::string& tess_control, const std::string& tess_evaluation,
+                      const std::string& fragment);
 // Compiles and links the embedded compute shader at shaders/<compute>.
 Program build_compute_program(const std::string& compute);
 

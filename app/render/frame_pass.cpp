@@ -94,8 +94,10 @@ void FramePass::set_lighting(const gl::Program& program, const shadow::Camera& c
     gl::set_uniform(program, "shadow_selection", static_cast<int>(setup.selection));
     gl::set_uniform(program, "shadow_view_count", static_cast<int>(setup.views.size()));
     for (std::size_t i = 0; i < setup.views.size(); ++i) {
-      const std::string name = "shadow_matrices[" + std::to_string(i) + "]";
-      gl::set_uniform(program, name.c_str(), setup.views[i].view_projection());
+      const shadow::ShadowView& view = setup.views[i];
+      const std::string index = "[" + std::to_string(i) + "]";
+      gl::set_uniform(program, ("shadow_matrices" + index).c_str(), view.view_projection());
+      gl::set_uniform(program, ("shadow_paraboloids" + index).c_str(), view.paraboloid_parameters());
     }
     gl::set_uniform(program, "shadow_size", static_cast<float>(shadow_map->size));
     glBindTextureUnit(0, shadow_map->depth_texture);

@@ -76,11 +76,11 @@ void GpuScene::update(std::size_t group, const pointgen::InstanceTable& table) {
                        instances.data());
 }
 
-void GpuScene::draw() const {
+void GpuScene::draw(GLenum mode) const {
   for (const Group& group : groups_) {
     if (group.instance_count == 0) continue;
     glBindVertexArray(group.vertex_array.name());
-    glDrawElementsInstanced(GL_TRIANGLES, group.index_count, GL_UNSIGNED_INT, nullptr, group.instance_count);
+    glDrawElementsInstanced(mode, group.index_count, GL_UNSIGNED_INT, nullptr, group.instance_count);
   }
   glBindVertexArray(0);
 }

@@ -12,7 +12,8 @@ namespace ecoview {
 class GpuScene {
  public:
   explicit GpuScene(const Scene& scene);
-  void draw() const;
+  // `mode` GL_PATCHES (of 3 vertices) for programs that tessellate.
+  void draw(GLenum mode = GL_TRIANGLES) const;
   // Replaces the instances of a group with `table`, which has at most as many as the scene's
   // group: posed moving objects, or the subset a pass draws as polygons.
   void update(std::size_t group, const pointgen::InstanceTable& table);

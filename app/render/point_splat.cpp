@@ -81,9 +81,10 @@ void PointSplat::bind_for(const gl::Program& program) const {
 }
 
 void PointSplat::dispatch(const gl::Program& program, const glm::mat4& view_projection, int splat_size,
-                          float depth_bias) const {
+                          float depth_bias, glm::vec2 paraboloid) const {
   bind_for(program);
   gl::set_uniform(program, "view_projection", view_projection);
+  gl::set_uniform(program, "paraboloid", paraboloid);
   gl::set_uniform(program, "total_points", static_cast<unsigned>(total_points_));
   gl::set_uniform(program, "splat_size", splat_size);
   gl::set_uniform(program, "depth_bias", depth_bias);
@@ -97,18 +98,19 @@ void PointSplat::dispatch(const gl::Program& program, const glm::mat4& view_proj
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
-void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float depth_bias, bool find_points) {
+void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float depth_bias, bool find_points,
+                       glm::vec2 paraboloid) {
   clear(depths_, 0xFFFFFFFFu);
   if (find_points) clear(winners_, 0xFFFFFFFFu);
   if (total_points_ == 0) return;
-  dispatch(depth_program_, view_projection, splat_size, depth_bias);
-  if (find_points) dispatch(resolve_program_, view_projection, splat_size, depth_bias);
+  dispatch(depth_program_, view_projection, splat_size, depth_bias, paraboloid);
+  if (find_points) dispatch(resolve_program_, view_projection, splat_size, depth_bias, paraboloid);
 }
 
 Image<std::uint32_t> PointSplat::count_points(const glm::mat4& view_projection) {
   if (!count_program_) count_program_ = std::make_unique<gl::Program>(gl::build_compute_program("point_count.comp"));
   clear(winners_, 0u);
-  if (total_points_ > 0) dispatch(*count_program_, view_projection, 1, 0.0f);
+  if (total_points_ > 0) dispatch(*count_program_, view_projection, 1, 0.0f, glm::vec2(0.0f));
   std::vector<std::uint32_t> bottom_up(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));
   glGetNamedBufferSubData(winners_.name(), 0, static_cast<GLsizeiptr>(bottom_up.size() * sizeof(std::uint32_t)), bottom_up.data());
   return from_bottom_up(size_.x, size_.y, 1, bottom_up);

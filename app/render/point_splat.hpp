@@ -18,8 +18,11 @@ class PointSplat {
   // The points to draw: the first `count` samples of each drawn instance.
   void upload(const std::vector<pointgen::PointDraw>& draws, const std::vector<pointgen::InstanceTable>& tables,
               const PointSamples& samples);
-  // Pass 1 (and 2 when `find_points`), with splats of splat_size x splat_size pixels.
-  void splat(const glm::mat4& view_projection, int splat_size, float depth_bias, bool find_points);
+  // Pass 1 (and 2 when `find_points`), with splats of splat_size x splat_size pixels. For a
+  // paraboloid shadow view, `view_projection` is its world → light space matrix and `paraboloid`
+  // its zoom and range (shadow::Paraboloid); zoom 0 for a projective view.
+  void splat(const glm::mat4& view_projection, int splat_size, float depth_bias, bool find_points,
+             glm::vec2 paraboloid = glm::vec2(0.0f));
   // Points per pixel, each counted once where its centre lands, rows from the top: for the density
   // figures. Overwrites the nearest-point buffer, so call it after the frame is shaded.
   Image<std::uint32_t> count_points(const glm::mat4& view_projection);
@@ -34,7 +37,8 @@ class PointSplat {
   std::size_t draw_count_ = 0;
   gl::Buffer draws_, instances_, depths_, winners_;
   std::size_t draws_capacity_ = 0, instances_capacity_ = 0;
-  void dispatch(const gl::Program& program, const glm::mat4& view_projection, int splat_size, float depth_bias) const;
+  void dispatch(const gl::Program& program, const glm::mat4& view_projection, int splat_size, float depth_bias,
+                glm::vec2 paraboloid) const;
 
   gl::Program depth_program_, resolve_program_;
   std::unique_ptr<gl::Program> count_program_;  // made when first counting

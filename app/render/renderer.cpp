@@ -3,6 +3,7 @@
 #include "app/errors.hpp"
 #include "shadow/cascaded_map.hpp"
 #include "shadow/lispsm_map.hpp"
+#include "shadow/paraboloid_map.hpp"
 #include "shadow/psm_map.hpp"
 #include "shadow/uniform_map.hpp"
 
@@ -27,6 +28,21 @@ double elapsed_ms(const gl::Query& query) {
 // by the next frame.
 constexpr float nearest_visible_margin = 0.8f;
 
+// The frusta the sampler culls a shadow pass's casters against: each projective view's own, and
+// around each paraboloid view, frusta that hold what it maps.
+std::vector<glm::mat4> culling_frusta(const shadow::ShadowSetup& setup) {
+  std::vector<glm::mat4> frusta;
+  for (const shadow::ShadowView& v : setup.views) {
+    if (!v.paraboloid) {
+      frusta.push_back(v.view_projection());
+      continue;
+    }
+    const std::vector<glm::mat4> around = shadow::enclosing_frusta(v);
+    frusta.insert(frusta.end(), around.begin(), around.end());
+  }
+  return frusta;
+}
+
 double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -38,8 +54,10 @@ ShadowMethod parse_shadow_method(const std::string& name) {
   if (name == "psm") return ShadowMethod::psm;
   if (name == "lispsm") return ShadowMethod::lispsm;
   if (name == "cascades") return ShadowMethod::cascades;
+  if (name == "dpsm") return ShadowMethod::dpsm;
+  if (name == "ipsm") return ShadowMethod::ipsm;
   if (name == "none") return ShadowMethod::none;
-  throw InputError("--method: '" + name + "' is not available in this build (available: uniform, psm, lispsm, cascades, none)");
+  throw InputError("--method: '" + name + "' is not available in this build (available: uniform, psm, lispsm, cascades, dpsm, ipsm, none)");
 }
 
 pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSettings& settings, std::vector<glm::mat4> views) {
@@ -132,6 +150,8 @@ shadow::ShadowSetup Renderer::make_shadow_setup(const shadow::Camera& camera, co
                                             nearest_visible_margin * nearest_visible_);
     case ShadowMethod::lispsm: return shadow::light_space_perspective_map(camera, aspect(), light, scene_bounds_, size);
     case ShadowMethod::cascades: return shadow::cascaded_map(camera, aspect(), light, scene_bounds_, size);
+    case ShadowMethod::dpsm: return shadow::dual_paraboloid_map(camera, aspect(), light, scene_bounds_, size);
+    case ShadowMethod::ipsm: return shadow::improved_paraboloid_map(camera, aspect(), light, scene_bounds_, size);
     default: return shadow::focused_uniform_map(camera, aspect(), light, scene_bounds_, size);
   }
 }
@@ -140,11 +160,9 @@ shadow::ShadowSetup Renderer::make_shadow_setup(const shadow::Camera& camera, co
 // it. Timed from the first GL draw to the last.
 void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Light& light) {
   setup_ = make_shadow_setup(camera, light);
-  std::vector<glm::mat4> views;
-  for (const shadow::ShadowView& v : setup_.views) views.push_back(v.view_projection());
   if (settings_.points) {
     const auto start = std::chrono::steady_clock::now();
-    pointgen::SamplerView view = sampler_view(camera, settings_, views);
+    pointgen::SamplerView view = sampler_view(camera, settings_, culling_frusta(setup_));
     view.pixels = glm::ivec2(settings_.shadow_size);
     view.cap_to_pixels = true;
     // Layer under layer of canopy as the light sees it: counts follow the expected visible share
@@ -160,8 +178,9 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
   }
   glBeginQuery(GL_TIME_ELAPSED, shadow_timer_.name());
   shadow_pass_.render(gpu_scene_, setup_);
-  for (std::size_t layer = 0; settings_.points && layer < views.size(); ++layer) {
-    shadow_points_->splat(views[layer], settings_.shadow_splat_size, shadow_point_bias, false);
+  for (std::size_t layer = 0; settings_.points && layer < setup_.views.size(); ++layer) {
+    const shadow::ShadowView& v = setup_.views[layer];
+    shadow_points_->splat(v.view_projection(), settings_.shadow_splat_size, shadow_point_bias, false, v.paraboloid_parameters());
     shadow_pass_.add_points(*shadow_points_, static_cast<int>(layer));
   }
   glEndQuery(GL_TIME_ELAPSED);

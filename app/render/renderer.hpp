@@ -11,7 +11,7 @@
 
 namespace ecoview {
 
-enum class ShadowMethod { none, uniform, psm, lispsm, cascades };
+enum class ShadowMethod { none, uniform, psm, lispsm, cascades, dpsm, ipsm };
 
 // Parses a --method name; throws InputError listing the methods this build renders.
 ShadowMethod parse_shadow_method(const std::string& name);

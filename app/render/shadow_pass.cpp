@@ -15,6 +15,8 @@ constexpr float offset_units = 4.0f;
 ShadowPass::ShadowPass(int size)
     : size_(size),
       program_(gl::build_program("shadow_depth.vert", "shadow_depth.frag")),
+      paraboloid_program_(gl::build_program("shadow_paraboloid.vert", "shadow_paraboloid.tesc", "shadow_paraboloid.tese",
+                                            "shadow_depth.frag")),
       point_program_(gl::build_program("fullscreen.vert", "point_shadow.frag")) {
   allocate(1);
 }
@@ -48,13 +50,22 @@ void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup)
   glDisable(GL_CULL_FACE);  // planes are single-sided but cast shadows from both sides
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(offset_factor, offset_units);
-  glUseProgram(program_.name());
+  glPatchParameteri(GL_PATCH_VERTICES, 3);
   for (std::size_t layer = 0; layer < setup.views.size(); ++layer) {
     glNamedFramebufferTextureLayer(fb, GL_DEPTH_ATTACHMENT, depth_.name(), 0, static_cast<GLint>(layer));
     const float far_depth = 1.0f;
     glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
-    gl::set_uniform(program_, "light_view_projection", setup.views[layer].view_projection());
-    scene.draw();
+    const shadow::ShadowView& view = setup.views[layer];
+    if (view.paraboloid) {
+      glUseProgram(paraboloid_program_.name());
+      gl::set_uniform(paraboloid_program_, "light_view", view.view);
+      gl::set_uniform(paraboloid_program_, "paraboloid", view.paraboloid_parameters());
+      scene.draw(GL_PATCHES);
+    } else {
+      glUseProgram(program_.name());
+      gl::set_uniform(program_, "light_view_projection", view.view_projection());
+      scene.draw();
+    }
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
 }

@@ -9,7 +9,7 @@ namespace ecoview {
 
 // Renders the scene's depth as the light sees it, one layer of a square depth-texture array per
 // view of the shadow setup, set up for hardware depth comparison (sampler2DArrayShadow, bilinear
-// PCF), with slope-scaled polygon offset against acne.
+// PCF), with slope-scaled polygon offset against acne. Paraboloid views tessellate the scene.
 class ShadowPass {
  public:
   explicit ShadowPass(int size);
@@ -30,6 +30,7 @@ class ShadowPass {
   gl::Texture depth_{GL_TEXTURE_2D_ARRAY};
   gl::Framebuffer framebuffer_;
   gl::Program program_;
+  gl::Program paraboloid_program_;
   gl::Program point_program_;
   gl::VertexArray empty_vertex_array_;
 };

@@ -1,0 +1,9 @@
+#version 450 core
+// Depth of the scene in a paraboloid map: world positions go on to the tessellation stages,
+// which project them (a paraboloid bends straight edges, so edges are cut into short pieces).
+layout(location = 0) in vec3 position;
+layout(location = 3) in mat4 model;
+
+out vec3 world_position;
+
+void main() { world_position = (model * vec4(position, 1.0)).xyz; }
