@@ -12,7 +12,7 @@ uniform int shadows_enabled;
 // The views of the shadow setup (shadow::ShadowSetup), one map layer each, and how a point picks
 // its view: one map, cube faces by the major axis of (point - light), the first cascade that
 // holds it, or the paraboloid whose hemisphere holds it.
-const int SINGLE = 0, CUBE_FACES = 1, FIRST_CONTAINING = 2, HEMISPHERES = 3;
+const int SINGLE = 0, CUBE_FACES = 1, FIRST_CONTAINING = 2, HEMISPHERES = 3, SCREEN_MASK = 4;
 const float CASCADE_MARGIN_TEXELS = 2.0;  // shadow::cascade_margin_texels
 uniform int shadow_selection;
 uniform int shadow_view_count;
@@ -22,6 +22,7 @@ uniform mat4 shadow_matrices[6];
 uniform vec2 shadow_paraboloids[6];
 uniform float shadow_size;  // texels per side
 layout(binding = 0) uniform sampler2DArrayShadow shadow_map;
+layout(binding = 1) uniform sampler2D light_mask;  // SCREEN_MASK (shadow volumes): 1 where lit
 
 #include "paraboloid.glsl"
 
@@ -79,6 +80,7 @@ int shadow_view(vec3 p) {
 // hit the surface's own depth (acne); slope-scaled polygon offset in the shadow pass covers the
 // centre tap.
 float shadow_test(vec3 position, vec3 n, float n_dot_l) {
+  if (shadow_selection == SCREEN_MASK) return texelFetch(light_mask, ivec2(gl_FragCoord.xy), 0).r;
   int layer = shadow_view(position);
   float sin_light = sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0));
   vec3 p = position + n * (1.5 * texel_world_size(layer, position) * sin_light);
@@ -125,9 +127,9 @@ uniform int aliasing_wanted;
 
 // The aliasing factor (DESIGN.md): the size in screen pixels of one shadow-map texel projected
 // onto the surface at p with normal n; the largest singular value of pixels per texel along the
-// surface. 0 without a shadow map, or when not wanted.
+// surface. 0 without a shadow map (none, volumes), or when not wanted.
 float aliasing_factor(vec3 p, vec3 n) {
-  if (shadows_enabled == 0 || aliasing_wanted == 0) return 0.0;
+  if (shadows_enabled == 0 || aliasing_wanted == 0 || shadow_selection == SCREEN_MASK) return 0.0;
   vec3 t1 = normalize(abs(n.y) < 0.9 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
   vec3 t2 = cross(n, t1);
   mat2 texels = 0.5 * shadow_size * shadow_jacobian(shadow_view(p), p, t1, t2);

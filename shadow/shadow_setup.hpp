@@ -74,6 +74,7 @@ enum class ViewSelection {
                      // two texels in from its edge, for the filter), else the last
   hemispheres,  // dual paraboloids: the first in front of its light view (light-space z <= 0),
                 // else the second
+  screen_mask,  // no map (shadow volumes): the renderer's per-pixel mask of lit surfaces
 };
 
 // Two texels: how far inside a cascade's square a point must be to use that cascade.

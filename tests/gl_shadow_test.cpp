@@ -33,6 +33,7 @@ const char* method_name(ShadowMethod m) {
          : m == ShadowMethod::cascades ? "cascades"
          : m == ShadowMethod::dpsm     ? "dpsm"
          : m == ShadowMethod::ipsm     ? "ipsm"
+         : m == ShadowMethod::volumes  ? "volumes"
                                        : "uniform";
 }
 
@@ -75,7 +76,8 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Combine(testing::Values("egl", "osmesa"),
                      testing::Values(shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot),
                      testing::Values(ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::lispsm,
-                                     ShadowMethod::cascades, ShadowMethod::dpsm, ShadowMethod::ipsm)),
+                                     ShadowMethod::cascades, ShadowMethod::dpsm, ShadowMethod::ipsm,
+                                     ShadowMethod::volumes)),
     [](const testing::TestParamInfo<Param>& info) {
       return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + method_name(std::get<2>(info.param));
     });

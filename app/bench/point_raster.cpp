@@ -23,7 +23,7 @@ constexpr GLuint draws_binding = 0, instances_binding = 1, positions_binding = 2
 
 }  // namespace
 
-PointRaster::PointRaster(glm::ivec2 size) : size_(size), program_(gl::build_program("point_raster.vert", "point_raster.frag")) {
+PointRaster::PointRaster(glm::ivec2 size) : size_(size), program_(gl::build_program({"point_raster.vert", "point_raster.frag"})) {
   glTextureStorage2D(color_.name(), 1, GL_RGBA8, size.x, size.y);
   glTextureStorage2D(depth_.name(), 1, GL_DEPTH_COMPONENT32F, size.x, size.y);
   glNamedFramebufferTexture(framebuffer_.name(), GL_COLOR_ATTACHMENT0, color_.name(), 0);

@@ -86,6 +86,10 @@ int run_capture(const CaptureOptions& o) {
   const double fps = check_fps(o.fps);
   const std::vector<Aov> aovs = parse_aov_list(o.aov);
   settings.aliasing = !o.stats.empty() || std::find(aovs.begin(), aovs.end(), Aov::aliasing) != aovs.end();
+  if (std::find(aovs.begin(), aovs.end(), Aov::shadowmap) != aovs.end() &&
+      (settings.method == ShadowMethod::volumes || settings.method == ShadowMethod::none)) {
+    throw InputError("--aov: shadowmap needs a shadow map; --method " + o.render.method + " has none");
+  }
   check_backend(o.backend);
   const bool frames_asked = !o.frames.empty();
   const FrameRange asked_frames = frames_asked ? parse_frames(o.frames) : FrameRange{};

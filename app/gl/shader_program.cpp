@@ -42,9 +42,29 @@ Shader compile(GLenum type, const std::string& file) {
   return shader;
 }
 
-Program link(std::initializer_list<const Shader*> shaders, const std::string& names) {
+// The stage of a shader file, by its extension.
+GLenum stage_of(const std::string& file) {
+  const std::string extension = file.substr(file.rfind('.') + 1);
+  if (extension == "vert") return GL_VERTEX_SHADER;
+  if (extension == "tesc") return GL_TESS_CONTROL_SHADER;
+  if (extension == "tese") return GL_TESS_EVALUATION_SHADER;
+  if (extension == "geom") return GL_GEOMETRY_SHADER;
+  if (extension == "frag") return GL_FRAGMENT_SHADER;
+  if (extension == "comp") return GL_COMPUTE_SHADER;
+  throw RuntimeFailure("shaders/" + file + ": no shader stage has the extension ." + extension);
+}
+
+}  // namespace
+
+Program build_program(std::initializer_list<std::string> files) {
+  std::vector<Shader> shaders;
+  std::string names;
+  for (const std::string& file : files) {
+    shaders.push_back(compile(stage_of(file), file));
+    names += (names.empty() ? "" : " + ") + file;
+  }
   Program program;
-  for (const Shader* shader : shaders) glAttachShader(program.name(), shader->name());
+  for (const Shader& shader : shaders) glAttachShader(program.name(), shader.name());
   glLinkProgram(program.name());
   GLint ok = 0;
   glGetProgramiv(program.name(), GL_LINK_STATUS, &ok);
@@ -53,36 +73,18 @@ Program link(std::initializer_list<const Shader*> shaders, const std::string& na
     glGetProgramInfoLog(program.name(), sizeof log, nullptr, log);
     throw RuntimeFailure("shaders " + names + " do not link: " + log);
   }
-  for (const Shader* shader : shaders) glDetachShader(program.name(), shader->name());
+  for (const Shader& shader : shaders) glDetachShader(program.name(), shader.name());
   return program;
-}
-
-}  // namespace
-
-Program build_program(const std::string& vertex, const std::string& fragment) {
-  const Shader vs = compile(GL_VERTEX_SHADER, vertex);
-  const Shader fs = compile(GL_FRAGMENT_SHADER, fragment);
-  return link({&vs, &fs}, vertex + " + " + fragment);
-}
-
-Program build_program(const std::string& vertex, const std::string& tess_control, const std::string& tess_evaluation,
-                      const std::string& fragment) {
-  const Shader vs = compile(GL_VERTEX_SHADER, vertex);
-  const Shader tcs = compile(GL_TESS_CONTROL_SHADER, tess_control);
-  const Shader tes = compile(GL_TESS_EVALUATION_SHADER, tess_evaluation);
-  const Shader fs = compile(GL_FRAGMENT_SHADER, fragment);
-  return link({&vs, &tcs, &tes, &fs}, vertex + " + " + tess_control + " + " + tess_evaluation + " + " + fragment);
-}
-
-Program build_compute_program(const std::string& compute) {
-  const Shader cs = compile(GL_COMPUTE_SHADER, compute);
-  return link({&cs}, compute);
 }
 
 void set_uniform(const Program& program, const char* name, const glm::mat4& value) {
   glProgramUniformMatrix4fv(program.name(), glGetUniformLocation(program.name(), name), 1, GL_FALSE,
                             glm::value_ptr(value));
 }
+void set_uniform(const Program& program, const char* name, const glm::vec4& value) {
+  glProgramUniform4fv(program.name(), glGetUniformLocation(program.name(), name), 1, glm::value_ptr(value));
+}
+
 void set_uniform(const Program& program, const char* name, const glm::vec3& value) {
   glProgramUniform3fv(program.name(), glGetUniformLocation(program.name(), name), 1, glm::value_ptr(value));
 }

@@ -3,20 +3,18 @@
 
 #include <glm/glm.hpp>
 
+#include <initializer_list>
 #include <string>
 
 namespace ecoview::gl {
 
-// Compiles and links the embedded shaders at shaders/<vertex> and shaders/<fragment>.
-Program build_program(const std::string& vertex, const std::string& fragment);
-// The same with tessellation control and evaluation stages between them.
-Program build_program(const std::string& vertex, const std::string& tess_control, const std::string& tess_evaluation,
-                      const std::string& fragment);
-// Compiles and links the embedded compute shader at shaders/<compute>.
-Program build_compute_program(const std::string& compute);
+// Compiles and links the embedded shaders at shaders/<file>, each for the stage its extension
+// names: .vert, .tesc, .tese, .geom, .frag, or .comp alone.
+Program build_program(std::initializer_list<std::string> files);
 
 // Uniform setters by name; a name the linker dropped is ignored, as GL does.
 void set_uniform(const Program& program, const char* name, const glm::mat4& value);
+void set_uniform(const Program& program, const char* name, const glm::vec4& value);
 void set_uniform(const Program& program, const char* name, const glm::vec3& value);
 void set_uniform(const Program& program, const char* name, float value);
 void set_uniform(const Program& program, const char* name, int value);

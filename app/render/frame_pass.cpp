@@ -18,19 +18,19 @@ FramePass::FramePass(int width, int height, bool aliasing)
     : width_(width),
       height_(height),
       aliasing_wanted_(aliasing),
-      program_(gl::build_program("frame.vert", "frame.frag")),
-      point_program_(gl::build_program("fullscreen.vert", "point_shade.frag")) {
+      program_(gl::build_program({"frame.vert", "frame.frag"})),
+      point_program_(gl::build_program({"fullscreen.vert", "point_shade.frag"})) {
   glTextureStorage2D(color_.name(), 1, GL_RGBA8, width, height);
   glTextureStorage2D(visibility_.name(), 1, GL_R8, width, height);
   glTextureStorage2D(depth_.name(), 1, GL_R32F, width, height);
   glTextureStorage2D(aliasing_.name(), 1, GL_R32F, width, height);
-  glTextureStorage2D(depth_buffer_.name(), 1, GL_DEPTH_COMPONENT32F, width, height);
+  glTextureStorage2D(depth_buffer_.name(), 1, GL_DEPTH32F_STENCIL8, width, height);
   const GLuint fb = framebuffer_.name();
   glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT0, color_.name(), 0);
   glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT1, visibility_.name(), 0);
   glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT2, depth_.name(), 0);
   glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT3, aliasing_.name(), 0);
-  glNamedFramebufferTexture(fb, GL_DEPTH_ATTACHMENT, depth_buffer_.name(), 0);
+  glNamedFramebufferTexture(fb, GL_DEPTH_STENCIL_ATTACHMENT, depth_buffer_.name(), 0);
   const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
   glNamedFramebufferDrawBuffers(fb, 4, buffers);
   if (glCheckNamedFramebufferStatus(fb, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
@@ -100,7 +100,7 @@ void FramePass::set_lighting(const gl::Program& program, const shadow::Camera& c
       gl::set_uniform(program, ("shadow_paraboloids" + index).c_str(), view.paraboloid_parameters());
     }
     gl::set_uniform(program, "shadow_size", static_cast<float>(shadow_map->size));
-    glBindTextureUnit(0, shadow_map->depth_texture);
+    glBindTextureUnit(setup.selection == shadow::ViewSelection::screen_mask ? 1 : 0, shadow_map->texture);
   }
 }
 

@@ -18,10 +18,11 @@ class FramePass {
   // `aliasing`: also fill the aliasing target (it costs shading time; otherwise it holds 0).
   FramePass(int width, int height, bool aliasing);
 
-  // `shadow_map`: the depth-texture array with one layer per view of `setup`; without one every
-  // surface facing the light is lit.
+  // `shadow_map`: the depth-texture array with one layer per view of `setup`, or for
+  // ViewSelection::screen_mask a frame-sized mask (1 where lit); without one every surface facing
+  // the light is lit.
   struct ShadowLookup {
-    GLuint depth_texture;
+    GLuint texture;
     const shadow::ShadowSetup& setup;
     int size;
   };
@@ -41,6 +42,8 @@ class FramePass {
   Image<float> read_aliasing() const;
   // The smallest linear view depth drawn; 0 if nothing was drawn.
   float nearest_depth() const;
+  // The depth-stencil texture (GL_DEPTH32F_STENCIL8) the frame draws into.
+  GLuint depth_stencil_texture() const { return depth_buffer_.name(); }
   // Copies the colour to the default framebuffer (a window), scaled to fit.
   void present(int width, int height) const;
 

@@ -39,8 +39,8 @@ void clear(const gl::Buffer& buffer, GLuint value) {
 
 PointSplat::PointSplat(glm::ivec2 size)
     : size_(size),
-      depth_program_(gl::build_compute_program("point_depth.comp")),
-      resolve_program_(gl::build_compute_program("point_resolve.comp")) {
+      depth_program_(gl::build_program({"point_depth.comp"})),
+      resolve_program_(gl::build_program({"point_resolve.comp"})) {
   const auto pixels = static_cast<GLsizeiptr>(size.x) * size.y * static_cast<GLsizeiptr>(sizeof(GLuint));
   glNamedBufferStorage(depths_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(winners_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -108,7 +108,7 @@ void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float d
 }
 
 Image<std::uint32_t> PointSplat::count_points(const glm::mat4& view_projection) {
-  if (!count_program_) count_program_ = std::make_unique<gl::Program>(gl::build_compute_program("point_count.comp"));
+  if (!count_program_) count_program_ = std::make_unique<gl::Program>(gl::build_program({"point_count.comp"}));
   clear(winners_, 0u);
   if (total_points_ > 0) dispatch(*count_program_, view_projection, 1, 0.0f, glm::vec2(0.0f));
   std::vector<std::uint32_t> bottom_up(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));

@@ -56,8 +56,9 @@ ShadowMethod parse_shadow_method(const std::string& name) {
   if (name == "cascades") return ShadowMethod::cascades;
   if (name == "dpsm") return ShadowMethod::dpsm;
   if (name == "ipsm") return ShadowMethod::ipsm;
+  if (name == "volumes") return ShadowMethod::volumes;
   if (name == "none") return ShadowMethod::none;
-  throw InputError("--method: '" + name + "' is not available in this build (available: uniform, psm, lispsm, cascades, dpsm, ipsm, none)");
+  throw InputError("--method: '" + name + "' is not available in this build (available: uniform, psm, lispsm, cascades, dpsm, ipsm, volumes, none)");
 }
 
 pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSettings& settings, std::vector<glm::mat4> views) {
@@ -187,6 +188,30 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
   stats_.shadow_pass_ms = elapsed_ms(shadow_timer_);
 }
 
+// The frame drawn without shadows leaves the depth the volumes are counted against; timed as the
+// shadow pass.
+FramePass::ShadowLookup Renderer::render_shadow_volumes(const shadow::Camera& camera, const shadow::Light& light) {
+  setup_ = {{}, shadow::ViewSelection::screen_mask, "volumes"};
+  if (!volume_pass_) {
+    volume_pass_ = std::make_unique<ShadowVolumePass>(settings_.width, settings_.height, frame_pass_.depth_stencil_texture());
+  }
+  glBeginQuery(GL_TIME_ELAPSED, shadow_timer_.name());
+  draw_frame(camera, light, std::nullopt);
+  volume_pass_->render(gpu_scene_, view_projection_, light);
+  glEndQuery(GL_TIME_ELAPSED);
+  stats_.shadow_pass_ms = elapsed_ms(shadow_timer_);
+  return {volume_pass_->light_mask(), setup_, 0};
+}
+
+void Renderer::draw_frame(const shadow::Camera& camera, const shadow::Light& light,
+                          const std::optional<FramePass::ShadowLookup>& lookup) {
+  frame_pass_.render(gpu_scene_, camera, light, lookup);
+  if (settings_.points) {
+    frame_points_.splat(view_projection_, settings_.splat_size, 0.0f, true);
+    frame_pass_.shade_points(frame_points_, camera, light, lookup);
+  }
+}
+
 void Renderer::pose(double t) {
   for (const Animation& animation : scene_.animations) {
     std::vector<pointgen::InstanceTable> posed = animation.set.pose(t, animation.first_mesh);
@@ -213,8 +238,9 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   pose(t);
   stats_ = {};
   view_projection_ = camera.projection(aspect()) * camera.view();
+  const bool volumes = settings_.method == ShadowMethod::volumes;
   std::optional<FramePass::ShadowLookup> lookup;
-  if (shadows) {
+  if (shadows && !volumes) {
     render_shadow_map(camera, light);
     lookup.emplace(FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size()});
   }
@@ -227,12 +253,9 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
     upload_polygons(selection);
     frame_points_.upload(selection.points, tables_, samples_);
   }
+  if (shadows && volumes) lookup.emplace(render_shadow_volumes(camera, light));
   glBeginQuery(GL_TIME_ELAPSED, frame_timer_.name());
-  frame_pass_.render(gpu_scene_, camera, light, lookup);
-  if (settings_.points) {
-    frame_points_.splat(view_projection_, settings_.splat_size, 0.0f, true);
-    frame_pass_.shade_points(frame_points_, camera, light, lookup);
-  }
+  draw_frame(camera, light, lookup);
   glEndQuery(GL_TIME_ELAPSED);
   stats_.frame_pass_ms = elapsed_ms(frame_timer_);
   stats_.points = selection.point_count;

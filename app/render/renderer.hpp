@@ -4,6 +4,7 @@
 #include "app/render/point_samples.hpp"
 #include "app/render/point_splat.hpp"
 #include "app/render/shadow_pass.hpp"
+#include "app/render/shadow_volume_pass.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
 
 #include <memory>
@@ -11,7 +12,7 @@
 
 namespace ecoview {
 
-enum class ShadowMethod { none, uniform, psm, lispsm, cascades, dpsm, ipsm };
+enum class ShadowMethod { none, uniform, psm, lispsm, cascades, dpsm, ipsm, volumes };
 
 // Parses a --method name; throws InputError listing the methods this build renders.
 ShadowMethod parse_shadow_method(const std::string& name);
@@ -72,6 +73,10 @@ class Renderer {
   void draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows);
   shadow::ShadowSetup make_shadow_setup(const shadow::Camera& camera, const shadow::Light& light) const;
   void render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
+  // Shadow volumes in place of a map: the lit-pixel mask of this frame.
+  FramePass::ShadowLookup render_shadow_volumes(const shadow::Camera& camera, const shadow::Light& light);
+  // The frame pass proper: polygons, then the point splats.
+  void draw_frame(const shadow::Camera& camera, const shadow::Light& light, const std::optional<FramePass::ShadowLookup>& lookup);
   // The selection as RenderSettings::measure asks.
   pointgen::SampledFrame measured(const pointgen::SampledFrame& selection) const;
 
@@ -85,6 +90,7 @@ class Renderer {
   FramePass frame_pass_;
   PointSplat frame_points_;
   std::unique_ptr<PointSplat> shadow_points_;  // made with the first shadow map that needs it
+  std::unique_ptr<ShadowVolumePass> volume_pass_;  // made with the first frame that needs it
   shadow::ShadowSetup setup_;  // of the last frame
   // PSM: the nearest depth the camera saw in the last frame, pushing the near plane of the next
   // (seed 000, Sect. 6); 0 until a frame was drawn.

@@ -1,0 +1,75 @@
+#include "app/render/shadow_volume_pass.hpp"
+
+#include "app/errors.hpp"
+#include "app/gl/shader_program.hpp"
+#include "shadow/post_perspective.hpp"
+
+namespace ecoview {
+namespace {
+
+// Pushes the volumes a little away from the eye, so that a triangle's near cap lies behind the
+// triangle as the frame drew it (counted, so the triangle does not shadow itself) whatever the
+// rounding of the two passes.
+constexpr float offset_factor = 1.0f;
+constexpr float offset_units = 8.0f;
+
+}  // namespace
+
+ShadowVolumePass::ShadowVolumePass(int width, int height, GLuint depth_stencil)
+    : width_(width),
+      height_(height),
+      volume_program_(gl::build_program({"shadow_volume.vert", "shadow_volume.geom", "shadow_depth.frag"})),
+      mask_program_(gl::build_program({"fullscreen.vert", "light_mask.frag"})) {
+  glTextureStorage2D(mask_.name(), 1, GL_R8, width, height);
+  const GLuint fb = framebuffer_.name();
+  glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT0, mask_.name(), 0);
+  glNamedFramebufferTexture(fb, GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil, 0);
+  if (glCheckNamedFramebufferStatus(fb, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    throw RuntimeFailure("the shadow-volume targets are not supported by this driver; try another --backend");
+  }
+}
+
+void ShadowVolumePass::render(const GpuScene& scene, const glm::mat4& view_projection, const shadow::Light& light) const {
+  const GLuint fb = framebuffer_.name();
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  glViewport(0, 0, width_, height_);
+  const float unlit = 0.0f;
+  const GLint zero = 0;
+  glClearNamedFramebufferfv(fb, GL_COLOR, 0, &unlit);
+  glClearNamedFramebufferiv(fb, GL_STENCIL, 0, &zero);
+
+  // The volumes: no colour, no depth writes, both faces; far caps at infinity kept by depth clamp.
+  glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_FALSE);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_DEPTH_CLAMP);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(offset_factor, offset_units);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 0, 0xFF);
+  glUseProgram(volume_program_.name());
+  gl::set_uniform(volume_program_, "view_projection", view_projection);
+  gl::set_uniform(volume_program_, "light", shadow::homogeneous(light));
+  // Leaving a volume behind the surface (a back face failing the depth test) counts +1.
+  glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+  glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+  scene.draw();
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_DEPTH_CLAMP);
+  glDepthMask(GL_TRUE);
+  glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+
+  // The mask: 1 where the count is 0.
+  glDisable(GL_DEPTH_TEST);
+  glStencilFunc(GL_EQUAL, 0, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glUseProgram(mask_program_.name());
+  glBindVertexArray(empty_vertex_array_.name());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glDisable(GL_STENCIL_TEST);
+}
+
+}  // namespace ecoview
