@@ -11,4 +11,9 @@ uniform vec2 paraboloid;  // zoom, range
 void main() {
   vec3 p = gl_TessCoord.x * patch_position[0] + gl_TessCoord.y * patch_position[1] + gl_TessCoord.z * patch_position[2];
   gl_Position = paraboloid_clip(light_view, paraboloid, p);
+  // Cut away what lies more than 120 degrees off the axis, beyond the map's disc: a piece around
+  // the pole behind the light would have all its corners far out in different directions, and
+  // cover the whole map.
+  vec3 q = (light_view * vec4(p, 1.0)).xyz;
+  gl_ClipDistance[0] = 0.5 - q.z / max(length(q), 1e-20);
 }

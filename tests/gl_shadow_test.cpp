@@ -82,5 +82,32 @@ INSTANTIATE_TEST_SUITE_P(
       return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + method_name(std::get<2>(info.param));
     });
 
+// A low point light whose receivers lie mostly on one side of it: IPSM takes two paraboloids
+// along a tilted axis, so their seam crosses the plane, and the box stands between the light and
+// the camera, so its shadow falls into the back map.
+TEST(ParaboloidSeam, AShadowInTheBackParaboloidMatchesGeometry) {
+  const auto context = create_headless_context("egl");
+  FloatingBox s;
+  s.box_min = {-4.5f, 0.6f, -1.0f};
+  s.box_max = {-3.5f, 1.6f, 1.0f};
+  s.light = {shadow::LightType::point, {0.0f, 3.0f, 0.0f}, {0, -1, 0}, 30};
+  s.camera.position = {-16.0f, 7.0f, 4.0f};
+  s.camera.target = {2.0f, 0.0f, 0.0f};
+  s.camera.fov_y_deg = 60.0f;
+  s.camera.near = 0.1f;
+  s.camera.far = 100.0f;
+  const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
+  Renderer renderer(scene, {640, 480, 2048, ShadowMethod::ipsm});
+  renderer.render(scene.camera, scene.lights[0]);
+  const shadow::ShadowSetup& setup = renderer.shadow_setup();
+  ASSERT_EQ(setup.selection, shadow::ViewSelection::hemispheres) << setup.description;
+  const glm::vec3 shadow_centre(-6.5f, 0.0f, 0.0f);
+  ASSERT_GT((setup.views[0].view * glm::vec4(shadow_centre, 1.0f)).z, 0.0f) << "the shadow is not in the back map";
+  const TruthComparison c = compare_with_truth(s, renderer.frame().read_visibility(), 2);
+  EXPECT_GE(c.lit_agreement(), 0.995);
+  EXPECT_GE(c.shadowed_agreement(), 0.99);
+  EXPECT_GE(c.shadowed, 300u);
+}
+
 }  // namespace
 }  // namespace ecoview::test

@@ -60,7 +60,9 @@ void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup)
       glUseProgram(paraboloid_program_.name());
       gl::set_uniform(paraboloid_program_, "light_view", view.view);
       gl::set_uniform(paraboloid_program_, "paraboloid", view.paraboloid_parameters());
+      glEnable(GL_CLIP_DISTANCE0);
       scene.draw(GL_PATCHES);
+      glDisable(GL_CLIP_DISTANCE0);
     } else {
       glUseProgram(program_.name());
       gl::set_uniform(program_, "light_view_projection", view.view_projection());
