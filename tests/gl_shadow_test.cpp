@@ -84,7 +84,9 @@ INSTANTIATE_TEST_SUITE_P(
 
 // A low point light whose receivers lie mostly on one side of it: IPSM takes two paraboloids
 // along a tilted axis, so their seam crosses the plane, and the box stands between the light and
-// the camera, so its shadow falls into the back map.
+// the camera, so its shadow falls into the back map. Without the clip beyond 120° in the
+// paraboloid pass, the piece of plane around the back map's pole covered that whole map and half
+// the lit plane read as shadowed.
 TEST(ParaboloidSeam, AShadowInTheBackParaboloidMatchesGeometry) {
   const auto context = create_headless_context("egl");
   FloatingBox s;
