@@ -16,6 +16,7 @@ std::string aov_name(Aov aov) {
     case Aov::depth: return "depth";
     case Aov::aliasing: return "aliasing";
     case Aov::shadowmap: return "shadowmap";
+    case Aov::reference: return "reference";
   }
   return "?";
 }
@@ -26,14 +27,14 @@ std::vector<Aov> parse_aov_list(const std::string& list) {
   std::string name;
   if (!list.empty() && list.back() == ',') throw InputError("--aov: empty name in '" + list + "'");
   while (std::getline(stream, name, ',')) {
-    const Aov all[] = {Aov::color, Aov::shadow, Aov::depth, Aov::aliasing, Aov::shadowmap};
+    const Aov all[] = {Aov::color, Aov::shadow, Aov::depth, Aov::aliasing, Aov::shadowmap, Aov::reference};
     const auto* found = std::find_if(std::begin(all), std::end(all), [&](Aov a) { return aov_name(a) == name; });
     if (found == std::end(all)) {
-      throw InputError("--aov: unknown AOV '" + name + "' (available: color, shadow, depth, aliasing, shadowmap)");
+      throw InputError("--aov: unknown AOV '" + name + "' (available: color, shadow, depth, aliasing, shadowmap, reference)");
     }
     if (std::find(aovs.begin(), aovs.end(), *found) == aovs.end()) aovs.push_back(*found);
   }
-  if (aovs.empty()) throw InputError("--aov: empty list (available: color, shadow, depth, aliasing, shadowmap)");
+  if (aovs.empty()) throw InputError("--aov: empty list (available: color, shadow, depth, aliasing, shadowmap, reference)");
   return aovs;
 }
 
@@ -60,7 +61,7 @@ Image8 gray(const Image<float>& depth) {
 
 }  // namespace
 
-std::string encode_aov(Aov aov, const Renderer& renderer, float far) {
+std::string encode_aov(Aov aov, Renderer& renderer, float far) {
   const FramePass& frame = renderer.frame();
   switch (aov) {
     case Aov::color: return encode_png(frame.read_color());
@@ -77,6 +78,7 @@ std::string encode_aov(Aov aov, const Renderer& renderer, float far) {
     }
     case Aov::aliasing: return encode_png(heat_map(frame.read_aliasing()));
     case Aov::shadowmap: return encode_png(gray(renderer.shadow_map().read_layer(0)));
+    case Aov::reference: return encode_png(renderer.exact_visibility());
   }
   return {};
 }

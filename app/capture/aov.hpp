@@ -8,8 +8,9 @@ namespace ecoview {
 
 // The images `capture` writes per frame (DESIGN.md): color (sRGB), shadow (255 × light
 // visibility, 255 where no surface), depth (16-bit linear view depth), aliasing (heat map of the
-// aliasing factor), shadowmap (the first layer of the shadow map, depth as gray, for looking at).
-enum class Aov { color, shadow, depth, aliasing, shadowmap };
+// aliasing factor), shadowmap (the first layer of the shadow map, depth as gray, for looking at),
+// reference (the exact visibility from ray tracing, encoded as shadow).
+enum class Aov { color, shadow, depth, aliasing, shadowmap, reference };
 
 std::string aov_name(Aov aov);
 // Parses a comma-separated --aov list; throws InputError on an unknown name or an empty list.
@@ -19,6 +20,6 @@ std::vector<Aov> parse_aov_list(const std::string& list);
 // round(65534 × view depth / far), 65535 where no surface was drawn. The aliasing heat map goes
 // from blue (a texel 1/8 of a pixel) through green (1 pixel) to red (8 pixels and more), black
 // where no surface was drawn or there is no shadow map.
-std::string encode_aov(Aov aov, const Renderer& renderer, float far);
+std::string encode_aov(Aov aov, Renderer& renderer, float far);
 
 }  // namespace ecoview

@@ -68,7 +68,8 @@ CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
                                         "or frame 0 without a path)");
   cmd->add_option("--fps", o.fps, "Frames per second: frame i is at time i / fps")->capture_default_str();
   cmd->add_option("--aov", o.aov, "Comma-separated images per frame: color, shadow, depth, aliasing "
-                                  "(heat map of shadow-map texels per pixel), shadowmap (the map itself)")->capture_default_str();
+                                  "(heat map of shadow-map texels per pixel), shadowmap (the map itself), reference (exact "
+                                  "visibility by ray tracing, encoded as shadow)")->capture_default_str();
   cmd->add_option("--light", o.light, "Index of the scene light that shines and casts shadows")->capture_default_str();
   cmd->add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes that would need more memory than this, in GiB")
       ->capture_default_str();
@@ -87,7 +88,8 @@ int run_capture(const CaptureOptions& o) {
   const std::vector<Aov> aovs = parse_aov_list(o.aov);
   settings.aliasing = !o.stats.empty() || std::find(aovs.begin(), aovs.end(), Aov::aliasing) != aovs.end();
   if (std::find(aovs.begin(), aovs.end(), Aov::shadowmap) != aovs.end() &&
-      (settings.method == ShadowMethod::volumes || settings.method == ShadowMethod::none)) {
+      (settings.method == ShadowMethod::volumes || settings.method == ShadowMethod::reference ||
+       settings.method == ShadowMethod::none)) {
     throw InputError("--aov: shadowmap needs a shadow map; --method " + o.render.method + " has none");
   }
   check_backend(o.backend);

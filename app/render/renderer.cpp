@@ -57,8 +57,9 @@ ShadowMethod parse_shadow_method(const std::string& name) {
   if (name == "dpsm") return ShadowMethod::dpsm;
   if (name == "ipsm") return ShadowMethod::ipsm;
   if (name == "volumes") return ShadowMethod::volumes;
+  if (name == "reference") return ShadowMethod::reference;
   if (name == "none") return ShadowMethod::none;
-  throw InputError("--method: '" + name + "' is not available in this build (available: uniform, psm, lispsm, cascades, dpsm, ipsm, volumes, none)");
+  throw InputError("--method: '" + name + "' is not available in this build (available: uniform, psm, lispsm, cascades, dpsm, ipsm, volumes, reference, none)");
 }
 
 pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSettings& settings, std::vector<glm::mat4> views) {
@@ -105,6 +106,7 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       shadow_pass_(settings.shadow_size),
       frame_pass_(settings.width, settings.height, settings.aliasing),
       frame_points_({settings.width, settings.height}) {
+  glTextureStorage2D(reference_mask_.name(), 1, GL_R8, settings.width, settings.height);
   if (settings.point_meshes_only) {
     for (std::size_t g = 0; g < tables_.size(); ++g) {
       if (!scene.point_meshes[tables_[g].mesh]) tables_[g] = {tables_[g].mesh, {}, {}, {}};
@@ -203,6 +205,31 @@ FramePass::ShadowLookup Renderer::render_shadow_volumes(const shadow::Camera& ca
   return {volume_pass_->light_mask(), setup_, 0};
 }
 
+ExactVisibility& Renderer::exact() {
+  if (!exact_) exact_ = std::make_unique<ExactVisibility>(scene_.meshes, tables_);
+  exact_->pose(tables_);
+  return *exact_;
+}
+
+Image8 Renderer::exact_visibility() { return exact().trace(camera_, aspect(), light_, frame_pass_.read_depth()); }
+
+// The frame drawn without shadows gives the depth the rays start from; the reference is CPU work,
+// timed by the wall clock as the shadow pass.
+FramePass::ShadowLookup Renderer::render_reference_mask(const shadow::Camera& camera, const shadow::Light& light) {
+  setup_ = {{}, shadow::ViewSelection::screen_mask, "reference"};
+  const auto start = std::chrono::steady_clock::now();
+  draw_frame(camera, light, std::nullopt);
+  const Image8 lit = exact_visibility();
+  // GL rows go up from the bottom.
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  for (int y = 0; y < lit.height; ++y) {
+    glTextureSubImage2D(reference_mask_.name(), 0, 0, lit.height - 1 - y, lit.width, 1, GL_RED, GL_UNSIGNED_BYTE,
+                        lit.samples.data() + static_cast<std::ptrdiff_t>(y) * lit.width);
+  }
+  stats_.shadow_pass_ms = ms_since(start);
+  return {reference_mask_.name(), setup_, 0};
+}
+
 void Renderer::draw_frame(const shadow::Camera& camera, const shadow::Light& light,
                           const std::optional<FramePass::ShadowLookup>& lookup) {
   frame_pass_.render(gpu_scene_, camera, light, lookup);
@@ -238,9 +265,12 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   pose(t);
   stats_ = {};
   view_projection_ = camera.projection(aspect()) * camera.view();
+  camera_ = camera;
+  light_ = light;
   const bool volumes = settings_.method == ShadowMethod::volumes;
+  const bool reference = settings_.method == ShadowMethod::reference;
   std::optional<FramePass::ShadowLookup> lookup;
-  if (shadows && !volumes) {
+  if (shadows && !volumes && !reference) {
     render_shadow_map(camera, light);
     lookup.emplace(FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size()});
   }
@@ -254,6 +284,7 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
     frame_points_.upload(selection.points, tables_, samples_);
   }
   if (shadows && volumes) lookup.emplace(render_shadow_volumes(camera, light));
+  if (shadows && reference) lookup.emplace(render_reference_mask(camera, light));
   glBeginQuery(GL_TIME_ELAPSED, frame_timer_.name());
   draw_frame(camera, light, lookup);
   glEndQuery(GL_TIME_ELAPSED);

@@ -4,6 +4,7 @@
 #include "app/render/point_samples.hpp"
 #include "app/render/point_splat.hpp"
 #include "app/render/shadow_pass.hpp"
+#include "app/reference/exact_visibility.hpp"
 #include "app/render/shadow_volume_pass.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
 
@@ -12,7 +13,7 @@
 
 namespace ecoview {
 
-enum class ShadowMethod { none, uniform, psm, lispsm, cascades, dpsm, ipsm, volumes };
+enum class ShadowMethod { none, uniform, psm, lispsm, cascades, dpsm, ipsm, volumes, reference };
 
 // Parses a --method name; throws InputError listing the methods this build renders.
 ShadowMethod parse_shadow_method(const std::string& name);
@@ -62,6 +63,9 @@ class Renderer {
   const FrameStats& stats() const { return stats_; }
   // Points per pixel of the last frame (see PointSplat::count_points).
   Image<std::uint32_t> count_points();
+  // The exact visibility of the last frame's surfaces (ExactVisibility::trace), as the `shadow`
+  // AOV encodes it.
+  Image8 exact_visibility();
 
  private:
   float aspect() const;
@@ -75,6 +79,9 @@ class Renderer {
   void render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
   // Shadow volumes in place of a map: the lit-pixel mask of this frame.
   FramePass::ShadowLookup render_shadow_volumes(const shadow::Camera& camera, const shadow::Light& light);
+  // The exact reference in place of a map: the mask from ExactVisibility.
+  FramePass::ShadowLookup render_reference_mask(const shadow::Camera& camera, const shadow::Light& light);
+  ExactVisibility& exact();
   // The frame pass proper: polygons, then the point splats.
   void draw_frame(const shadow::Camera& camera, const shadow::Light& light, const std::optional<FramePass::ShadowLookup>& lookup);
   // The selection as RenderSettings::measure asks.
@@ -91,6 +98,10 @@ class Renderer {
   PointSplat frame_points_;
   std::unique_ptr<PointSplat> shadow_points_;  // made with the first shadow map that needs it
   std::unique_ptr<ShadowVolumePass> volume_pass_;  // made with the first frame that needs it
+  std::unique_ptr<ExactVisibility> exact_;          // made when first asked for
+  gl::Texture reference_mask_{GL_TEXTURE_2D};       // R8, frame-sized: the reference's lit pixels
+  shadow::Camera camera_;                            // of the last frame
+  shadow::Light light_;                              // of the last frame
   shadow::ShadowSetup setup_;  // of the last frame
   // PSM: the nearest depth the camera saw in the last frame, pushing the near plane of the next
   // (seed 000, Sect. 6); 0 until a frame was drawn.

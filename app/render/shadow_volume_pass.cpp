@@ -7,10 +7,11 @@
 namespace ecoview {
 namespace {
 
-// Pushes the volumes a little away from the eye, so that a triangle's near cap lies behind the
-// triangle as the frame drew it (counted, so the triangle does not shadow itself) whatever the
-// rounding of the two passes.
-constexpr float offset_factor = 1.0f;
+// Pushes the volumes a few depth steps away from the eye, so that a triangle's near cap lies
+// behind the triangle as the frame drew it (counted, so the triangle does not shadow itself)
+// whatever the rounding of the two passes. No slope-scaled part: on volume faces seen at a grazing
+// angle it moved shadow edges by a pixel (floating-box lines, docs/benchmarks.md).
+constexpr float offset_factor = 0.0f;
 constexpr float offset_units = 8.0f;
 
 }  // namespace

@@ -1,0 +1,46 @@
+#pragma once
+#include "app/render/image.hpp"
+#include "pointgen/instance_table.hpp"
+#include "pointgen/triangle_mesh.hpp"
+#include "shadow/camera.hpp"
+#include "shadow/light.hpp"
+
+#include <embree3/rtcore.h>
+
+#include <vector>
+
+namespace ecoview {
+
+// The exact reference of DESIGN.md's `err`: from the surface point seen in each pixel, a ray to
+// the light against the scene's full triangle geometry — plants as their meshes, not as their
+// points — with Embree. Each mesh is one Embree scene; the instances reference it, so the whole
+// ecosystem fits in memory.
+class ExactVisibility {
+ public:
+  // The meshes and the instance tables as a renderer draws them (one geometry per instance).
+  ExactVisibility(const std::vector<pointgen::TriangleMesh>& meshes, const std::vector<pointgen::InstanceTable>& tables);
+  ~ExactVisibility();
+  ExactVisibility(const ExactVisibility&) = delete;
+  ExactVisibility& operator=(const ExactVisibility&) = delete;
+
+  // Moves the instances whose transforms changed (the tables must have the sizes given at
+  // construction): moving objects posed for a frame.
+  void pose(const std::vector<pointgen::InstanceTable>& tables);
+
+  // 255 where the light reaches the surface point seen in a pixel, else 0, and 255 where no
+  // surface is seen (the `shadow` AOV's encoding). `depth` is the frame's linear view depth
+  // (negative: no surface), drawn with `camera` at `aspect`. A point lit from behind its surface
+  // reads as shadowed: its ray leaves through the surface.
+  Image8 trace(const shadow::Camera& camera, float aspect, const shadow::Light& light, const Image<float>& depth) const;
+
+ private:
+  RTCDevice device_ = nullptr;
+  std::vector<RTCScene> mesh_scenes_;  // null for a mesh without triangles
+  RTCScene scene_ = nullptr;
+  // Per table and instance, its instance geometry (RTC_INVALID_GEOMETRY_ID for empty meshes) and
+  // the transform it has.
+  std::vector<std::vector<unsigned>> geometry_ids_;
+  std::vector<std::vector<glm::mat4>> transforms_;
+};
+
+}  // namespace ecoview
