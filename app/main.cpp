@@ -1,4 +1,5 @@
 // ecoview: a viewer and benchmark for large outdoor scenes with shadows.
+#include "app/bench/bench_command.hpp"
 #include "app/bench/density_command.hpp"
 #include "app/capture/capture_command.hpp"
 #include "app/cli/view_command.hpp"
@@ -16,9 +17,11 @@ int main(int argc, char** argv) {
   CaptureOptions capture;
   ViewOptions view;
   DensityOptions density;
+  BenchOptions bench;
   CLI::App* capture_command = add_capture_command(app, capture);
   CLI::App* view_command = add_view_command(app, view);
   CLI::App* density_command = add_density_command(app, density);
+  CLI::App* bench_command = add_bench_command(app, bench);
 
   try {
     app.parse(argc, argv);
@@ -35,6 +38,7 @@ int main(int argc, char** argv) {
     if (capture_command->parsed()) return run_capture(capture);
     if (view_command->parsed()) return run_view(view);
     if (density_command->parsed()) return run_density(density);
+    if (bench_command->parsed()) return run_bench(bench);
   } catch (const InputError& e) {
     std::cerr << "ecoview: " << e.what() << "\n";
     return 2;

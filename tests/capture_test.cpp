@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 namespace ecoview::test {
 namespace {
 
@@ -148,6 +150,29 @@ TEST(Density, QuickRunWritesResultsChartsAndReport) {
                                      [](const nlohmann::json& run) { return run["params"]["sweep"] == "temporal"; });
   ASSERT_NE(temporal, results["runs"].end());
   EXPECT_EQ((*temporal)["figures"]["still_changed"].get<double>(), 0.0);
+}
+
+TEST(Bench, QuickRunWritesResultsChartsCropsAndReport) {
+  const TempDir dir;
+  const CommandResult r = run_ecoview({"bench", "--quick", "--size", "320x180", "--out", dir.path().string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* file : {"results.json", "results.csv", "chart_tradeoff.png", "chart_stability.png", "chart_flythrough.png",
+                           "report.html", "images/crop_field_psm.png", "images/crop_field_reference.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+  }
+  const nlohmann::json results = nlohmann::json::parse(read_bytes(dir / "results.json"));
+  std::set<std::string> sweeps;
+  for (const auto& run : results["runs"]) {
+    sweeps.insert(run["params"]["sweep"].get<std::string>());
+    for (const auto& figure : run["figures"].items()) {
+      EXPECT_TRUE(figure.value().is_number() && std::isfinite(figure.value().get<double>())) << figure.key();
+    }
+    // Shadow volumes are exact for polygons: they agree with the reference.
+    if (run["params"]["method"] == "volumes") {
+      EXPECT_LT(run["figures"]["err"].get<double>(), 1e-3) << run["params"]["scene"];
+    }
+  }
+  EXPECT_EQ(sweeps, (std::set<std::string>{"tradeoff", "stability", "crossing", "flythrough", "flicker"}));
 }
 
 TEST(Capture, RendersARealGltfFile) {

@@ -27,16 +27,6 @@ const char* light_name(shadow::LightType t) {
   return t == shadow::LightType::directional ? "directional" : t == shadow::LightType::point ? "point" : "spot";
 }
 
-const char* method_name(ShadowMethod m) {
-  return m == ShadowMethod::psm        ? "psm"
-         : m == ShadowMethod::lispsm   ? "lispsm"
-         : m == ShadowMethod::cascades ? "cascades"
-         : m == ShadowMethod::dpsm     ? "dpsm"
-         : m == ShadowMethod::ipsm     ? "ipsm"
-         : m == ShadowMethod::volumes  ? "volumes"
-                                       : "uniform";
-}
-
 using Param = std::tuple<std::string, shadow::LightType, ShadowMethod>;
 
 class FloatingBoxShadow : public testing::TestWithParam<Param> {};
@@ -55,11 +45,11 @@ TEST_P(FloatingBoxShadow, ShadowAovMatchesGeometryAwayFromEdges) {
     const TruthComparison c = compare_with_truth(s, renderer.frame().read_visibility(), 2);
     ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     if (const char* dump = std::getenv("ECOVIEW_TRUTH_DUMP")) {
-      std::ofstream(std::string(dump) + "/" + backend + "_" + light_name(type) + "_" + method_name(method) + "_" +
+      std::ofstream(std::string(dump) + "/" + backend + "_" + light_name(type) + "_" + shadow_method_name(method) + "_" +
                         std::to_string(i) + ".png",
                     std::ios::binary) << encode_png(c.mismatches);
     }
-    std::cout << backend << " " << light_name(type) << " " << method_name(method) << " case " << i << ": " << 100.0 * c.agreement()
+    std::cout << backend << " " << light_name(type) << " " << shadow_method_name(method) << " case " << i << ": " << 100.0 * c.agreement()
               << " % of " << c.lit + c.shadowed << " plane pixels agree; lit " << c.lit_agreeing << "/" << c.lit
               << ", shadowed " << c.shadowed_agreeing << "/" << c.shadowed << " (" << renderer.shadow_setup().description << ")\n";
     EXPECT_GE(c.agreement(), 0.995) << "scene:\n" << s.scene_json();
@@ -79,7 +69,7 @@ INSTANTIATE_TEST_SUITE_P(
                                      ShadowMethod::cascades, ShadowMethod::dpsm, ShadowMethod::ipsm,
                                      ShadowMethod::volumes)),
     [](const testing::TestParamInfo<Param>& info) {
-      return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + method_name(std::get<2>(info.param));
+      return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + shadow_method_name(std::get<2>(info.param));
     });
 
 // A low point light whose receivers lie mostly on one side of it: IPSM takes two paraboloids

@@ -41,10 +41,10 @@ std::string run_table(const BenchResults& results) {
 
 }  // namespace
 
-void write_charts(const std::filesystem::path& folder, const BenchResults& results) {
-  const auto script = resources::find("scripts/plots/density_charts.py");
-  const std::filesystem::path script_file = folder / "density_charts.py";
-  write_file_atomically(script_file, *script);
+void draw_charts(const std::filesystem::path& folder, const std::string& script) {
+  const auto text = resources::find("scripts/plots/" + script);
+  const std::filesystem::path script_file = folder / script;
+  write_file_atomically(script_file, *text);
   const std::string command = "/usr/bin/python3 " + shell_quote(script_file.string()) + " " +
                               shell_quote((folder / "results.json").string()) + " " + shell_quote(folder.string());
   const int status = std::system(command.c_str());
@@ -53,16 +53,16 @@ void write_charts(const std::filesystem::path& folder, const BenchResults& resul
     throw RuntimeFailure("charts: /usr/bin/python3 with matplotlib failed (install python3-matplotlib); results.json "
                          "and results.csv are written in " + folder.string());
   }
+}
+
+void write_report(const std::filesystem::path& folder, const std::string& title, const std::string& body,
+                  const BenchResults& results) {
   std::ostringstream html;
-  html << "<!doctype html><html><head><meta charset=\"utf-8\"><title>ecoview density</title><style>"
+  html << "<!doctype html><html><head><meta charset=\"utf-8\"><title>" << title << "</title><style>"
           "body{font-family:sans-serif;margin:2em}td,th{border:1px solid #ccc;padding:3px;font-size:12px}"
           "table{border-collapse:collapse}img{max-width:100%}</style></head><body>\n"
-       << "<h1>ecoview density</h1><p>" << results.machine.dump() << "</p>\n"
-       << "<h2>Charts</h2><img src=\"chart_quality.png\"><img src=\"chart_scale.png\"><img src=\"chart_thirds.png\">\n"
-       << "<h2>Images (k = 1.5, 1-pixel splats)</h2><table><tr><th>polygons</th><th>points</th><th>difference × 4</th></tr>"
-       << "<tr><td><img src=\"images/polygons.png\"></td><td><img src=\"images/points.png\"></td>"
-       << "<td><img src=\"images/difference.png\"></td></tr></table>\n"
-       << "<h2>Runs</h2>\n" << run_table(results) << "</body></html>\n";
+       << "<h1>" << title << "</h1><p>" << results.machine.dump() << "</p>\n"
+       << body << "<h2>Runs</h2>\n" << run_table(results) << "</body></html>\n";
   write_file_atomically(folder / "report.html", html.str());
 }
 

@@ -2,12 +2,18 @@
 #include "app/bench/results.hpp"
 
 #include <filesystem>
+#include <string>
 
 namespace ecoview {
 
-// The PNG charts (drawn by the embedded scripts/plots/density_charts.py with the system's
-// python3 and matplotlib) and report.html, which gathers them with the run table and images.
-// Throws RuntimeFailure when python3-matplotlib is missing.
-void write_charts(const std::filesystem::path& folder, const BenchResults& results);
+// Runs the embedded chart script scripts/plots/<script> on folder/results.json with the
+// system's python3 and matplotlib; it writes its PNG charts into the folder. Throws
+// RuntimeFailure when python3-matplotlib is missing.
+void draw_charts(const std::filesystem::path& folder, const std::string& script);
+
+// folder/report.html: the title, the machine, `body` (HTML: charts, images) and every run's
+// parameters and figures.
+void write_report(const std::filesystem::path& folder, const std::string& title, const std::string& body,
+                  const BenchResults& results);
 
 }  // namespace ecoview

@@ -165,7 +165,13 @@ class DensityBench {
   void finish(const std::string& renderer_name) {
     results_.machine = machine_info(renderer_name, o_.backend);
     write_results(out_, results_);
-    write_charts(out_, results_);
+    draw_charts(out_, "density_charts.py");
+    write_report(out_, "ecoview density",
+                 "<h2>Charts</h2><img src=\"chart_quality.png\"><img src=\"chart_scale.png\"><img src=\"chart_thirds.png\">\n"
+                 "<h2>Images (k = 1.5, 1-pixel splats)</h2><table><tr><th>polygons</th><th>points</th><th>difference × 4</th></tr>"
+                 "<tr><td><img src=\"images/polygons.png\"></td><td><img src=\"images/points.png\"></td>"
+                 "<td><img src=\"images/difference.png\"></td></tr></table>\n",
+                 results_);
   }
 
  private:

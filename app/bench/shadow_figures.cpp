@@ -1,8 +1,17 @@
 #include "app/bench/shadow_figures.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace ecoview {
+namespace {
+
+bool shadowed(std::uint8_t visibility) { return visibility < 128; }
+bool surface(float depth) { return depth > 0.0f; }
+
+double ratio(std::size_t a, std::size_t b) { return b ? static_cast<double>(a) / static_cast<double>(b) : 0.0; }
+
+}  // namespace
 
 double alias_p95(const Image<float>& aliasing, const Image8& visibility) {
   std::vector<float> lit;
@@ -13,6 +22,39 @@ double alias_p95(const Image<float>& aliasing, const Image8& visibility) {
   const auto p95 = lit.begin() + static_cast<std::ptrdiff_t>(0.95 * static_cast<double>(lit.size() - 1));
   std::nth_element(lit.begin(), p95, lit.end());
   return *p95;
+}
+
+ShadowErrors shadow_errors(const Image8& visibility, const Image8& reference, const Image<float>& depth) {
+  float nearest = INFINITY, farthest = 0.0f;
+  for (float d : depth.samples) {
+    if (!surface(d)) continue;
+    nearest = std::min(nearest, d);
+    farthest = std::max(farthest, d);
+  }
+  const float near_limit = nearest + 0.2f * (farthest - nearest);
+  std::size_t pixels = 0, acne = 0, leak = 0, near_pixels = 0, near_errors = 0;
+  for (std::size_t i = 0; i < depth.samples.size(); ++i) {
+    if (!surface(depth.samples[i])) continue;
+    ++pixels;
+    const bool frame = shadowed(visibility.samples[i]), exact = shadowed(reference.samples[i]);
+    acne += frame && !exact;
+    leak += !frame && exact;
+    if (depth.samples[i] <= near_limit) {
+      ++near_pixels;
+      near_errors += frame != exact;
+    }
+  }
+  return {ratio(acne + leak, pixels), ratio(near_errors, near_pixels), ratio(acne, pixels), ratio(leak, pixels)};
+}
+
+double changed_shadow(const Image8& before, const Image8& after, const Image<float>& depth) {
+  std::size_t pixels = 0, changed = 0;
+  for (std::size_t i = 0; i < depth.samples.size(); ++i) {
+    if (!surface(depth.samples[i])) continue;
+    ++pixels;
+    changed += shadowed(before.samples[i]) != shadowed(after.samples[i]);
+  }
+  return ratio(changed, pixels);
 }
 
 }  // namespace ecoview

@@ -7,4 +7,18 @@ namespace ecoview {
 // (a surface drawn, visibility >= 0.5); 0 where there are none.
 double alias_p95(const Image<float>& aliasing, const Image8& visibility);
 
+// The shadow's errors against the exact reference (DESIGN.md), as fractions of the pixels that
+// show a surface (linear view depth > 0): `err` where the binary states (visibility < 0.5)
+// differ, `acne` where the reference is lit and the frame shadowed, `leak` the other way round
+// (err = acne + leak); `err_near` is err over the pixels in the nearest 20 % of the frame's
+// view-depth range (nearest to farthest surface).
+struct ShadowErrors {
+  double err = 0.0, err_near = 0.0, acne = 0.0, leak = 0.0;
+};
+ShadowErrors shadow_errors(const Image8& visibility, const Image8& reference, const Image<float>& depth);
+
+// The fraction of surface pixels whose binary shadow state changed from one frame to the next:
+// the part of DESIGN.md's `flicker` of one frame pair (flicker subtracts the reference's).
+double changed_shadow(const Image8& before, const Image8& after, const Image<float>& depth);
+
 }  // namespace ecoview

@@ -10,9 +10,12 @@
 namespace ecoview {
 namespace {
 
-// The ray starts this share of its distance from the eye back towards the eye, off the surface
-// the frame drew (whose depth is exact only to float precision), and so on the seen side of it.
+// Shares of the distance from the eye: the window around the frame's depth in which the eye ray
+// looks for the drawn surface, and how far off the surface the ray to the light starts.
+constexpr float surface_window = 1e-2f;
 constexpr float origin_offset = 2e-4f;
+
+glm::mat3 normal_matrix(const glm::mat4& transform) { return glm::transpose(glm::inverse(glm::mat3(transform))); }
 
 RTCScene mesh_scene(RTCDevice device, const pointgen::TriangleMesh& mesh) {
   if (mesh.triangle_count() == 0) return nullptr;
@@ -42,7 +45,7 @@ void set_transform(RTCScene scene, unsigned id, const glm::mat4& transform) {
 
 ExactVisibility::ExactVisibility(const std::vector<pointgen::TriangleMesh>& meshes,
                                  const std::vector<pointgen::InstanceTable>& tables)
-    : device_(rtcNewDevice(nullptr)) {
+    : device_(rtcNewDevice(nullptr)), meshes_(meshes) {
   if (device_ == nullptr) throw RuntimeFailure("Embree could not start a device for the exact reference");
   for (const pointgen::TriangleMesh& mesh : meshes) mesh_scenes_.push_back(mesh_scene(device_, mesh));
   scene_ = rtcNewScene(device_);
@@ -60,6 +63,8 @@ ExactVisibility::ExactVisibility(const std::vector<pointgen::TriangleMesh>& mesh
       rtcCommitGeometry(instance);
       ids.push_back(rtcAttachGeometry(scene_, instance));
       rtcReleaseGeometry(instance);
+      if (instances_.size() <= ids.back()) instances_.resize(ids.back() + 1);
+      instances_[ids.back()] = {static_cast<std::uint32_t>(table.mesh), normal_matrix(transform)};
     }
   }
   rtcCommitScene(scene_);
@@ -80,10 +85,26 @@ void ExactVisibility::pose(const std::vector<pointgen::InstanceTable>& tables) {
       if (tables[t].transforms[i] == transforms_[t][i] || geometry_ids_[t][i] == RTC_INVALID_GEOMETRY_ID) continue;
       transforms_[t][i] = tables[t].transforms[i];
       set_transform(scene_, geometry_ids_[t][i], transforms_[t][i]);
+      instances_[geometry_ids_[t][i]].normal_matrix = normal_matrix(transforms_[t][i]);
       moved = true;
     }
   }
   if (moved) rtcCommitScene(scene_);
+}
+
+glm::vec3 ExactVisibility::geometric_normal(const RTCHit& hit) const {
+  return glm::normalize(instances_[hit.instID[0]].normal_matrix * glm::vec3(hit.Ng_x, hit.Ng_y, hit.Ng_z));
+}
+
+// The mesh's vertex normals interpolated as the rasterizer does (Embree's u, v weight the
+// second and third corner).
+glm::vec3 ExactVisibility::shading_normal(const RTCHit& hit) const {
+  const Instance& instance = instances_[hit.instID[0]];
+  const pointgen::TriangleMesh& mesh = meshes_[instance.mesh];
+  if (mesh.normals.size() != mesh.positions.size()) return geometric_normal(hit);
+  const std::uint32_t* corner = &mesh.indices[3 * static_cast<std::size_t>(hit.primID)];
+  const glm::vec3 n = (1.0f - hit.u - hit.v) * mesh.normals[corner[0]] + hit.u * mesh.normals[corner[1]] + hit.v * mesh.normals[corner[2]];
+  return glm::normalize(instance.normal_matrix * n);
 }
 
 Image8 ExactVisibility::trace(const shadow::Camera& camera, float aspect, const shadow::Light& light,
@@ -106,7 +127,28 @@ Image8 ExactVisibility::trace(const shadow::Camera& camera, float aspect, const 
         const glm::vec4 far_point = to_world * glm::vec4(ndc, 1.0f, 1.0f);
         const glm::vec3 view_ray = glm::normalize(glm::vec3(far_point) / far_point.w - camera.position);
         const float distance = d / glm::dot(view_ray, forward);
-        const glm::vec3 p = camera.position + view_ray * (distance * (1.0f - origin_offset));
+        std::uint8_t& visible = out.samples[static_cast<std::size_t>(y) * static_cast<std::size_t>(depth.width) + static_cast<std::size_t>(x)];
+
+        RTCRayHit seen{};
+        seen.ray.org_x = camera.position.x;
+        seen.ray.org_y = camera.position.y;
+        seen.ray.org_z = camera.position.z;
+        seen.ray.dir_x = view_ray.x;
+        seen.ray.dir_y = view_ray.y;
+        seen.ray.dir_z = view_ray.z;
+        seen.ray.tnear = distance * (1.0f - surface_window);
+        seen.ray.tfar = distance * (1.0f + surface_window);
+        seen.ray.mask = 0xFFFFFFFFu;
+        seen.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(scene_, &context, &seen);
+        glm::vec3 p = camera.position + view_ray * (distance * (1.0f - origin_offset));
+        glm::vec3 normal(0.0f);  // shading normal on the seen side; 0 where no triangle was found
+        if (seen.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+          const glm::vec3 facing = geometric_normal(seen.hit);
+          const float side = glm::dot(facing, view_ray) > 0.0f ? -1.0f : 1.0f;  // the side the eye sees
+          normal = side * shading_normal(seen.hit);
+          p = camera.position + view_ray * seen.ray.tfar + side * facing * (origin_offset * distance);
+        }
 
         glm::vec3 to_light = -glm::normalize(light.direction);
         float reach = INFINITY;
@@ -115,8 +157,8 @@ Image8 ExactVisibility::trace(const shadow::Camera& camera, float aspect, const 
           reach = glm::length(to_light);
           to_light /= reach;
         }
-        std::uint8_t& visible = out.samples[static_cast<std::size_t>(y) * static_cast<std::size_t>(depth.width) + static_cast<std::size_t>(x)];
-        if (light.type == shadow::LightType::spot && glm::dot(-to_light, glm::normalize(light.direction)) < cos_cone) {
+        if ((normal != glm::vec3(0.0f) && !(glm::dot(normal, to_light) > 0.0f)) ||
+            (light.type == shadow::LightType::spot && glm::dot(-to_light, glm::normalize(light.direction)) < cos_cone)) {
           visible = 0;
           continue;
         }

@@ -29,8 +29,12 @@ class ExactVisibility {
 
   // 255 where the light reaches the surface point seen in a pixel, else 0, and 255 where no
   // surface is seen (the `shadow` AOV's encoding). `depth` is the frame's linear view depth
-  // (negative: no surface), drawn with `camera` at `aspect`. A point lit from behind its surface
-  // reads as shadowed: its ray leaves through the surface.
+  // (negative: no surface), drawn with `camera` at `aspect`. The eye ray finds the drawn surface
+  // again near that depth. As in the frame's shading, a surface whose shading normal (turned to
+  // the seen side) faces away from the light is unlit; else a ray from just off the surface to the
+  // light decides. So the reference differs from a frame by cast shadows only. Where the eye ray
+  // finds no triangle there (a point splat beside its leaf), the ray to the light starts from the
+  // depth, a little towards the eye.
   Image8 trace(const shadow::Camera& camera, float aspect, const shadow::Light& light, const Image<float>& depth) const;
 
  private:
@@ -41,6 +45,17 @@ class ExactVisibility {
   // the transform it has.
   std::vector<std::vector<unsigned>> geometry_ids_;
   std::vector<std::vector<glm::mat4>> transforms_;
+  // By instance geometry ID: its mesh, and the matrix taking its object-space normals to world
+  // space.
+  struct Instance {
+    std::uint32_t mesh = 0;
+    glm::mat3 normal_matrix{1.0f};
+  };
+  std::vector<Instance> instances_;
+  const std::vector<pointgen::TriangleMesh>& meshes_;
+
+  glm::vec3 geometric_normal(const RTCHit& hit) const;
+  glm::vec3 shading_normal(const RTCHit& hit) const;
 };
 
 }  // namespace ecoview

@@ -44,6 +44,8 @@ class FramePass {
   float nearest_depth() const;
   // The depth-stencil texture (GL_DEPTH32F_STENCIL8) the frame draws into.
   GLuint depth_stencil_texture() const { return depth_buffer_.name(); }
+  // Whether to fill the aliasing target from the next frame on.
+  void set_aliasing(bool wanted) { aliasing_wanted_ = wanted; }
   // Copies the colour to the default framebuffer (a window), scaled to fit.
   void present(int width, int height) const;
 

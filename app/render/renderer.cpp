@@ -28,19 +28,11 @@ double elapsed_ms(const gl::Query& query) {
 // by the next frame.
 constexpr float nearest_visible_margin = 0.8f;
 
-// The frusta the sampler culls a shadow pass's casters against: each projective view's own, and
-// around each paraboloid view, frusta that hold what it maps.
-std::vector<glm::mat4> culling_frusta(const shadow::ShadowSetup& setup) {
-  std::vector<glm::mat4> frusta;
-  for (const shadow::ShadowView& v : setup.views) {
-    if (!v.paraboloid) {
-      frusta.push_back(v.view_projection());
-      continue;
-    }
-    const std::vector<glm::mat4> around = shadow::enclosing_frusta(v);
-    frusta.insert(frusta.end(), around.begin(), around.end());
-  }
-  return frusta;
+// The frusta the sampler culls a shadow view's casters against: a projective view's own, or
+// frusta that hold what a paraboloid view maps.
+std::vector<glm::mat4> culling_frusta(const shadow::ShadowView& view) {
+  if (view.paraboloid) return shadow::enclosing_frusta(view);
+  return {view.view_projection()};
 }
 
 double ms_since(std::chrono::steady_clock::time_point start) {
@@ -49,17 +41,31 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
+std::string shadow_method_name(ShadowMethod method) {
+  switch (method) {
+    case ShadowMethod::none: return "none";
+    case ShadowMethod::uniform: return "uniform";
+    case ShadowMethod::psm: return "psm";
+    case ShadowMethod::lispsm: return "lispsm";
+    case ShadowMethod::cascades: return "cascades";
+    case ShadowMethod::dpsm: return "dpsm";
+    case ShadowMethod::ipsm: return "ipsm";
+    case ShadowMethod::volumes: return "volumes";
+    case ShadowMethod::reference: return "reference";
+  }
+  return "?";
+}
+
 ShadowMethod parse_shadow_method(const std::string& name) {
-  if (name == "uniform") return ShadowMethod::uniform;
-  if (name == "psm") return ShadowMethod::psm;
-  if (name == "lispsm") return ShadowMethod::lispsm;
-  if (name == "cascades") return ShadowMethod::cascades;
-  if (name == "dpsm") return ShadowMethod::dpsm;
-  if (name == "ipsm") return ShadowMethod::ipsm;
-  if (name == "volumes") return ShadowMethod::volumes;
-  if (name == "reference") return ShadowMethod::reference;
-  if (name == "none") return ShadowMethod::none;
-  throw InputError("--method: '" + name + "' is not available in this build (available: uniform, psm, lispsm, cascades, dpsm, ipsm, volumes, reference, none)");
+  const ShadowMethod all[] = {ShadowMethod::uniform, ShadowMethod::psm,     ShadowMethod::lispsm,
+                              ShadowMethod::cascades, ShadowMethod::dpsm,   ShadowMethod::ipsm,
+                              ShadowMethod::volumes, ShadowMethod::reference, ShadowMethod::none};
+  std::string names;
+  for (ShadowMethod m : all) {
+    if (name == shadow_method_name(m)) return m;
+    names += (names.empty() ? "" : ", ") + shadow_method_name(m);
+  }
+  throw InputError("--method: '" + name + "' is not available in this build (available: " + names + ")");
 }
 
 pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSettings& settings, std::vector<glm::mat4> views) {
@@ -160,29 +166,34 @@ shadow::ShadowSetup Renderer::make_shadow_setup(const shadow::Camera& camera, co
 }
 
 // The shadow map for this frame; with points on, far instances of point meshes are splatted into
-// it. Timed from the first GL draw to the last.
+// it. Each view chooses its own points and polygons, so that a view with one frustum keeps the
+// sampler's cap and occlusion (cascades, cube faces). Timed from the first GL draw to the last.
 void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Light& light) {
   setup_ = make_shadow_setup(camera, light);
+  std::vector<pointgen::SampledFrame> selections;
   if (settings_.points) {
     const auto start = std::chrono::steady_clock::now();
-    pointgen::SamplerView view = sampler_view(camera, settings_, culling_frusta(setup_));
-    view.pixels = glm::ivec2(settings_.shadow_size);
-    view.cap_to_pixels = true;
-    // Layer under layer of canopy as the light sees it: counts follow the expected visible share
-    // (docs/benchmarks.md: 30.3 M shadow points down to 8.5 M in the default view, polygon-shadowed
-    // pixels lit 0.34 % against 0.51 %).
-    view.full_count_transmittance = 1.0f;
-    const pointgen::SampledFrame selection = pointgen::sample_view(view, tables_, samples_.meshes());
+    for (const shadow::ShadowView& v : setup_.views) {
+      pointgen::SamplerView view = sampler_view(camera, settings_, culling_frusta(v));
+      view.pixels = glm::ivec2(settings_.shadow_size);
+      view.cap_to_pixels = true;
+      // Layer under layer of canopy as the light sees it: counts follow the expected visible share
+      // (docs/benchmarks.md: 30.3 M shadow points down to 8.5 M in the default view, polygon-shadowed
+      // pixels lit 0.34 % against 0.51 %).
+      view.full_count_transmittance = 1.0f;
+      selections.push_back(pointgen::sample_view(view, tables_, samples_.meshes()));
+      stats_.shadow_points += selections.back().point_count;
+    }
     stats_.sample_ms += ms_since(start);
-    stats_.shadow_points = selection.point_count;
-    upload_polygons(selection);
     if (!shadow_points_) shadow_points_ = std::make_unique<PointSplat>(glm::ivec2(settings_.shadow_size));
-    shadow_points_->upload(selection.points, tables_, samples_);
   }
   glBeginQuery(GL_TIME_ELAPSED, shadow_timer_.name());
-  shadow_pass_.render(gpu_scene_, setup_);
-  for (std::size_t layer = 0; settings_.points && layer < setup_.views.size(); ++layer) {
+  for (std::size_t layer = 0; layer < setup_.views.size(); ++layer) {
+    if (settings_.points) upload_polygons(selections[layer]);
+    shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer));
+    if (!settings_.points) continue;
     const shadow::ShadowView& v = setup_.views[layer];
+    shadow_points_->upload(selections[layer].points, tables_, samples_);
     shadow_points_->splat(v.view_projection(), settings_.shadow_splat_size, shadow_point_bias, false, v.paraboloid_parameters());
     shadow_pass_.add_points(*shadow_points_, static_cast<int>(layer));
   }

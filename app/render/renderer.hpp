@@ -17,6 +17,7 @@ enum class ShadowMethod { none, uniform, psm, lispsm, cascades, dpsm, ipsm, volu
 
 // Parses a --method name; throws InputError listing the methods this build renders.
 ShadowMethod parse_shadow_method(const std::string& name);
+std::string shadow_method_name(ShadowMethod method);
 
 struct RenderSettings {
   int width = 1280;
@@ -61,6 +62,10 @@ class Renderer {
   // The shadow setup of the last frame drawn with shadows.
   const shadow::ShadowSetup& shadow_setup() const { return setup_; }
   const FrameStats& stats() const { return stats_; }
+  // The instance tables as the last frame posed them.
+  const std::vector<pointgen::InstanceTable>& tables() const { return tables_; }
+  // Fill the aliasing target (RenderSettings::aliasing) from the next frame on, or stop.
+  void set_aliasing(bool wanted) { frame_pass_.set_aliasing(wanted); }
   // Points per pixel of the last frame (see PointSplat::count_points).
   Image<std::uint32_t> count_points();
   // The exact visibility of the last frame's surfaces (ExactVisibility::trace), as the `shadow`

@@ -40,7 +40,7 @@ void ShadowPass::allocate(int layers) {
   glNamedFramebufferReadBuffer(framebuffer_.name(), GL_NONE);
 }
 
-void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup) {
+void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer) {
   if (static_cast<int>(setup.views.size()) > layers_) allocate(static_cast<int>(setup.views.size()));
   const GLuint fb = framebuffer_.name();
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
@@ -50,24 +50,22 @@ void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup)
   glDisable(GL_CULL_FACE);  // planes are single-sided but cast shadows from both sides
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(offset_factor, offset_units);
-  glPatchParameteri(GL_PATCH_VERTICES, 3);
-  for (std::size_t layer = 0; layer < setup.views.size(); ++layer) {
-    glNamedFramebufferTextureLayer(fb, GL_DEPTH_ATTACHMENT, depth_.name(), 0, static_cast<GLint>(layer));
-    const float far_depth = 1.0f;
-    glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
-    const shadow::ShadowView& view = setup.views[layer];
-    if (view.paraboloid) {
-      glUseProgram(paraboloid_program_.name());
-      gl::set_uniform(paraboloid_program_, "light_view", view.view);
-      gl::set_uniform(paraboloid_program_, "paraboloid", view.paraboloid_parameters());
-      glEnable(GL_CLIP_DISTANCE0);
-      scene.draw(GL_PATCHES);
-      glDisable(GL_CLIP_DISTANCE0);
-    } else {
-      glUseProgram(program_.name());
-      gl::set_uniform(program_, "light_view_projection", view.view_projection());
-      scene.draw();
-    }
+  glNamedFramebufferTextureLayer(fb, GL_DEPTH_ATTACHMENT, depth_.name(), 0, layer);
+  const float far_depth = 1.0f;
+  glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
+  const shadow::ShadowView& view = setup.views[static_cast<std::size_t>(layer)];
+  if (view.paraboloid) {
+    glUseProgram(paraboloid_program_.name());
+    gl::set_uniform(paraboloid_program_, "light_view", view.view);
+    gl::set_uniform(paraboloid_program_, "paraboloid", view.paraboloid_parameters());
+    glPatchParameteri(GL_PATCH_VERTICES, 3);
+    glEnable(GL_CLIP_DISTANCE0);
+    scene.draw(GL_PATCHES);
+    glDisable(GL_CLIP_DISTANCE0);
+  } else {
+    glUseProgram(program_.name());
+    gl::set_uniform(program_, "light_view_projection", view.view_projection());
+    scene.draw();
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
 }

@@ -13,7 +13,8 @@ namespace ecoview {
 class ShadowPass {
  public:
   explicit ShadowPass(int size);
-  void render(const GpuScene& scene, const shadow::ShadowSetup& setup);
+  // Draws one view of the setup into its layer.
+  void render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer);
   // Adds splatted point depths (a PointSplat of size x size) to one layer, depth-tested against
   // what render() drew there.
   void add_points(const PointSplat& points, int layer) const;

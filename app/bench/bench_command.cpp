@@ -1,0 +1,307 @@
+#include "app/bench/bench_command.hpp"
+
+#include "app/bench/charts.hpp"
+#include "app/bench/frame_timing.hpp"
+#include "app/bench/results.hpp"
+#include "app/bench/shadow_figures.hpp"
+#include "app/capture/png.hpp"
+#include "app/cli/progress.hpp"
+#include "app/file_io.hpp"
+#include "app/gl/context.hpp"
+#include "app/reference/exact_visibility.hpp"
+#include "app/scene/camera_path.hpp"
+#include "app/scene/scene_file.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace ecoview {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<ShadowMethod> directional_methods = {ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::lispsm,
+                                                       ShadowMethod::cascades};
+const std::vector<ShadowMethod> point_methods = {ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::dpsm,
+                                                 ShadowMethod::ipsm};
+
+// What a run does. The scenes: `field` (posts over a 400 m plane, its 13 lights turning 0°–180°
+// from the view in 15° steps; 90° is the PSM paper's favourable case) and the ecosystem with its
+// path; --quick puts the courtyard in the ecosystem's place.
+struct Plan {
+  std::vector<int> sizes;        // shadow-map sizes of the trade-off sweep
+  int warmup, frames;            // timed frames per configuration on the field
+  int big_warmup, big_frames;    // the same on the big scene
+  int angle_step;                // stability: every angle_step-th field light
+  std::vector<float> crossing;   // metres along the view from the camera plane
+  int flight_frames;             // frames spread over the big scene's path
+  int flicker_frames;            // consecutive frames (30 per second) for flicker
+  std::string big_scene;
+};
+
+Plan plan_for(bool quick) {
+  if (quick) return {{512, 1024}, 1, 1, 1, 1, 6, {-5.0f, 5.0f}, 2, 2, "courtyard"};
+  return {{512, 1024, 2048, 4096}, 2, 8, 1, 2, 1, {-20.0f, -8.0f, -3.0f, -1.0f, -0.25f, 0.25f, 1.0f, 3.0f, 8.0f, 20.0f},
+          6, 4, "ecosystem"};
+}
+
+constexpr int favourable_light = 6;       // field: 90° between light and view
+constexpr float field_light_step_deg = 15.0f;
+constexpr int crop_size = 1024;           // the trade-off map size whose frames are cropped
+
+// One view of a scene: where the figures are taken.
+struct View {
+  const Scene& scene;
+  ExactVisibility& exact;
+  shadow::Camera camera;
+  shadow::Light light;
+  double t = 0.0;
+};
+
+class ShadowBench {
+ public:
+  ShadowBench(const BenchOptions& o, const Plan& plan) : o_(o), plan_(plan), out_(o.out) {
+    const glm::ivec2 size = parse_size(o.size);
+    base_.width = size.x;
+    base_.height = size.y;
+    fs::create_directories(out_ / "images");
+  }
+
+  // Speed against accuracy: every method at every map size.
+  void trade_off(const View& view, const std::string& scene_name, bool small, Progress& progress) {
+    const std::vector<ShadowMethod>& methods =
+        view.light.type == shadow::LightType::directional ? directional_methods : point_methods;
+    for (ShadowMethod method : methods) {
+      for (int size : plan_.sizes) {
+        Renderer renderer(view.scene, settings(method, size));
+        BenchRun run = measure(renderer, view, small ? plan_.warmup : plan_.big_warmup, small ? plan_.frames : plan_.big_frames);
+        run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", shadow_method_name(method)}, {"shadow_size", size}});
+        results_.runs.push_back(run);
+        if (size == crop_size) crop(renderer, scene_name, shadow_method_name(method));
+        progress.step();
+      }
+    }
+    Renderer volumes(view.scene, settings(ShadowMethod::volumes, 0));
+    BenchRun run = measure(volumes, view, 1, 1);
+    run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", "volumes"}, {"shadow_size", 0}});
+    results_.runs.push_back(run);
+    crop(volumes, scene_name, "volumes");
+    Renderer reference(view.scene, settings(ShadowMethod::reference, 0));
+    reference.render(view.camera, view.light, view.t);
+    crop(reference, scene_name, "reference");
+    progress.step();
+  }
+
+  // Stability against the light direction: the field's lights from along the view (0°) through
+  // across it (90°) to into the camera (180°).
+  void stability(const Scene& field, ExactVisibility& exact, Progress& progress) {
+    for (std::size_t l = 0; l < field.lights.size(); l += static_cast<std::size_t>(plan_.angle_step)) {
+      for (ShadowMethod method : directional_methods) {
+        Renderer renderer(field, settings(method, crop_size));
+        BenchRun run = measure(renderer, {field, exact, field.camera, field.lights[l]}, 1, 0);
+        run.params.update({{"sweep", "stability"}, {"scene", "field"}, {"method", shadow_method_name(method)},
+                           {"shadow_size", crop_size}, {"light_view_deg", field_light_step_deg * static_cast<float>(l)}});
+        results_.runs.push_back(run);
+        progress.step();
+      }
+    }
+  }
+
+  // A point light 8 m above the camera's eye level, moved along the view through the camera
+  // plane: in front it stays a point light in post-perspective space, behind it is inverted.
+  void crossing(const Scene& field, ExactVisibility& exact, Progress& progress) {
+    for (float offset : plan_.crossing) {
+      shadow::Light lamp;
+      lamp.type = shadow::LightType::point;
+      lamp.position = field.camera.position + offset * field.camera.forward() + glm::vec3(0.0f, 8.0f, 0.0f);
+      for (ShadowMethod method : point_methods) {
+        Renderer renderer(field, settings(method, crop_size));
+        BenchRun run = measure(renderer, {field, exact, field.camera, lamp}, 1, 0);
+        run.params.update({{"sweep", "crossing"}, {"scene", "field"}, {"method", shadow_method_name(method)},
+                           {"shadow_size", crop_size}, {"light_offset_m", offset}});
+        results_.runs.push_back(run);
+        progress.step();
+      }
+    }
+  }
+
+  // The big scene along its path: the error per frame, and flicker over consecutive frames.
+  void flythrough(const Scene& scene, ExactVisibility& exact, const CameraPath& path, const std::string& scene_name,
+                  Progress& progress) {
+    const shadow::Light& light = scene.lights[0];
+    for (ShadowMethod method : directional_methods) {
+      Renderer renderer(scene, settings(method, crop_size));
+      for (int f = 0; f < plan_.flight_frames; ++f) {
+        const double t = path.duration() * f / std::max(1, plan_.flight_frames - 1);
+        BenchRun run = measure(renderer, {scene, exact, path.at(t, scene.camera), light, t}, 0, 0);
+        run.params.update({{"sweep", "flythrough"}, {"scene", scene_name}, {"method", shadow_method_name(method)},
+                           {"shadow_size", crop_size}, {"frame", f}, {"t", t}});
+        results_.runs.push_back(run);
+        progress.step();
+      }
+      results_.runs.push_back(flicker(renderer, scene, exact, path, scene_name, method));
+      progress.step();
+    }
+  }
+
+  void finish(const std::string& renderer_name) {
+    results_.machine = machine_info(renderer_name, o_.backend);
+    write_results(out_, results_);
+    draw_charts(out_, "bench_charts.py");
+    write_report(out_, "ecoview bench", report_body(), results_);
+  }
+
+ private:
+  RenderSettings settings(ShadowMethod method, int shadow_size) const {
+    RenderSettings s = base_;
+    s.method = method;
+    if (shadow_size > 0) s.shadow_size = shadow_size;
+    return s;
+  }
+
+  // `frames` timed frames after `warmup`, then one frame with the aliasing factor, against the
+  // exact reference. Without timed frames the run has no times.
+  BenchRun measure(Renderer& renderer, const View& view, int warmup, int frames) {
+    BenchRun run;
+    if (frames > 0) {
+      const FrameTiming timing = time_frames(renderer, view.camera, view.light, view.t, warmup, frames);
+      run.figures.update({{"frame_ms", timing.frame_ms}, {"sample_ms", timing.sample_ms},
+                          {"shadow_pass_ms", timing.shadow_pass_ms}, {"frame_pass_ms", timing.frame_pass_ms}});
+      run.params["frames"] = frames;
+    } else {
+      for (int i = 0; i < warmup; ++i) renderer.render(view.camera, view.light, view.t);
+    }
+    renderer.set_aliasing(true);
+    renderer.render(view.camera, view.light, view.t);
+    renderer.set_aliasing(false);
+    const Image<float> depth = renderer.frame().read_depth();
+    const Image8 visibility = renderer.frame().read_visibility();
+    const ShadowErrors e = shadow_errors(visibility, reference(renderer, view, depth), depth);
+    run.figures.update({{"err", e.err}, {"err_near", e.err_near}, {"acne", e.acne}, {"leak", e.leak},
+                        {"alias_p95", alias_p95(renderer.frame().read_aliasing(), visibility)},
+                        {"points", renderer.stats().points}, {"triangles", renderer.stats().triangles},
+                        {"shadow_points", renderer.stats().shadow_points}});
+    run.params["shadow_setup"] = renderer.shadow_setup().description;
+    return run;
+  }
+
+  Image8 reference(const Renderer& renderer, const View& view, const Image<float>& depth) const {
+    view.exact.pose(renderer.tables());
+    return view.exact.trace(view.camera, static_cast<float>(base_.width) / static_cast<float>(base_.height), view.light, depth);
+  }
+
+  // flicker (DESIGN.md): the mean share of pixels whose shadow state changes between consecutive
+  // frames at 30 per second from the middle of the path, less the same for the reference.
+  BenchRun flicker(Renderer& renderer, const Scene& scene, ExactVisibility& exact, const CameraPath& path,
+                   const std::string& scene_name, ShadowMethod method) {
+    const double start = 0.5 * path.duration();
+    Image8 last_frame, last_reference;
+    double changed = 0.0, reference_changed = 0.0;
+    for (int f = 0; f < plan_.flicker_frames; ++f) {
+      const double t = start + f / 30.0;
+      const View view{scene, exact, path.at(t, scene.camera), scene.lights[0], t};
+      renderer.render(view.camera, view.light, t);
+      const Image<float> depth = renderer.frame().read_depth();
+      Image8 frame = renderer.frame().read_visibility(), exact_frame = reference(renderer, view, depth);
+      if (f > 0) {
+        changed += changed_shadow(last_frame, frame, depth);
+        reference_changed += changed_shadow(last_reference, exact_frame, depth);
+      }
+      last_frame = std::move(frame);
+      last_reference = std::move(exact_frame);
+    }
+    const double pairs = std::max(1, plan_.flicker_frames - 1);
+    BenchRun run;
+    run.params = {{"sweep", "flicker"}, {"scene", scene_name}, {"method", shadow_method_name(method)}, {"shadow_size", crop_size},
+                  {"frames", plan_.flicker_frames}, {"t", start}};
+    run.figures = {{"flicker", (changed - reference_changed) / pairs}, {"changed", changed / pairs},
+                   {"reference_changed", reference_changed / pairs}};
+    return run;
+  }
+
+  // The middle third of the frame's lower half: near ground, where shadows differ most.
+  void crop(const Renderer& renderer, const std::string& scene_name, const std::string& method) {
+    const Image8 color = renderer.frame().read_color();
+    const int w = color.width / 3, h = color.height / 2, x0 = color.width / 3, y0 = color.height / 2;
+    Image8 part{w, h, 3, {}};
+    part.samples.reserve(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3);
+    for (int y = y0; y < y0 + h; ++y) {
+      for (int x = x0; x < x0 + w; ++x) {
+        for (int c = 0; c < 3; ++c) part.samples.push_back(color.at(x, y, c));
+      }
+    }
+    write_file_atomically(out_ / "images" / ("crop_" + scene_name + "_" + method + ".png"), encode_png(part));
+    crops_[scene_name].push_back(method);
+  }
+
+  std::string report_body() const {
+    std::ostringstream html;
+    html << "<h2>Speed against accuracy</h2><img src=\"chart_tradeoff.png\">\n"
+         << "<h2>Stability</h2><img src=\"chart_stability.png\">\n"
+         << "<h2>Flythrough</h2><img src=\"chart_flythrough.png\">\n"
+         << "<h2>Crops (" << crop_size << "² maps, the middle of the lower half)</h2>\n";
+    for (const auto& [scene_name, methods] : crops_) {
+      html << "<h3>" << scene_name << "</h3><table><tr>";
+      for (const std::string& m : methods) html << "<th>" << m << "</th>";
+      html << "</tr><tr>";
+      for (const std::string& m : methods) html << "<td><img src=\"images/crop_" << scene_name << "_" << m << ".png\"></td>";
+      html << "</tr></table>\n";
+    }
+    return html.str();
+  }
+
+  const BenchOptions& o_;
+  Plan plan_;
+  fs::path out_;
+  RenderSettings base_;
+  BenchResults results_;
+  std::map<std::string, std::vector<std::string>> crops_;
+};
+
+}  // namespace
+
+CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
+  CLI::App* cmd = app.add_subcommand("bench", "Shadow methods, speed against accuracy: every method and map size "
+                                              "against the exact reference on the field and the ecosystem, the light "
+                                              "turned 0-180 degrees from the view, a point light crossing the camera "
+                                              "plane, a flythrough; writes results.json, results.csv, charts, image "
+                                              "crops and report.html");
+  cmd->add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--backend", o.backend, "GL context: egl or osmesa")->capture_default_str();
+  cmd->add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes needing more memory than this, in GiB")
+      ->capture_default_str();
+  cmd->add_flag("--quick", o.quick, "Small scenes and a few configurations, to check that everything works");
+  cmd->add_option("--out", o.out, "Output folder (created if missing)")->required();
+  return cmd;
+}
+
+int run_bench(const BenchOptions& o) {
+  parse_size(o.size);
+  check_backend(o.backend);
+  make_out_folder(o.out);
+  const Plan plan = plan_for(o.quick);
+  const Scene field = load_scene_option("field", o.memory_budget_gib);
+  const Scene big = load_scene_option(plan.big_scene, o.memory_budget_gib);
+  const CameraPath path = CameraPath::load(open_input(plan.big_scene, "paths"));
+
+  const std::unique_ptr<GlContext> context = create_headless_context(o.backend);
+  ExactVisibility field_exact(field.meshes, field.groups), big_exact(big.meshes, big.groups);
+  ShadowBench bench(o, plan);
+  const std::size_t angles = (field.lights.size() + static_cast<std::size_t>(plan.angle_step) - 1) / static_cast<std::size_t>(plan.angle_step);
+  Progress progress("bench: run", 2 * (4 * plan.sizes.size() + 1) + angles * 4 + plan.crossing.size() * 4 +
+                                      4 * static_cast<std::size_t>(plan.flight_frames + 1));
+  bench.trade_off({field, field_exact, field.camera, field.lights[favourable_light]}, "field", true, progress);
+  bench.trade_off({big, big_exact, big.camera, big.lights[0]}, plan.big_scene, false, progress);
+  bench.stability(field, field_exact, progress);
+  bench.crossing(field, field_exact, progress);
+  bench.flythrough(big, big_exact, path, plan.big_scene, progress);
+  progress.finish();
+  bench.finish(context->description());
+  std::cout << "bench: wrote results.json, results.csv, charts, crops and report.html to " << o.out << "\n";
+  return 0;
+}
+
+}  // namespace ecoview

@@ -1,0 +1,24 @@
+#pragma once
+#include "app/cli/options.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace ecoview {
+
+struct BenchOptions {
+  std::string size = "640x360";
+  std::string backend = "egl";
+  bool quick = false;  // small scenes and a few configurations, to check the pipeline (tests)
+  double memory_budget_gib = 4.0;
+  std::string out;
+};
+
+// Registers `ecoview bench`: shadow methods, speed against accuracy against the exact reference
+// (sweeps of map size, light direction, a point light crossing the camera plane, a flythrough);
+// results.json, results.csv, charts, image crops and report.html.
+CLI::App* add_bench_command(CLI::App& app, BenchOptions& options);
+int run_bench(const BenchOptions& options);
+
+}  // namespace ecoview

@@ -1,0 +1,104 @@
+"""Charts of an `ecoview bench` run: python3 bench_charts.py RESULTS_JSON OUT_DIR.
+
+Embedded in the ecoview binary, which runs it with the system interpreter after a run."""
+import json
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+MARKERS = {"uniform": "o", "psm": "s", "lispsm": "^", "cascades": "v", "dpsm": "D", "ipsm": "P", "volumes": "*",
+           "auto": "X"}
+
+
+def runs(results, sweep, **params):
+    return [r for r in results["runs"]
+            if r["params"].get("sweep") == sweep and all(r["params"].get(k) == v for k, v in params.items())]
+
+
+def methods(rs):
+    return sorted({r["params"]["method"] for r in rs}, key=lambda m: list(MARKERS).index(m) if m in MARKERS else 99)
+
+
+def pareto(points):
+    """The points no other point beats in both time and error."""
+    front, best = [], float("inf")
+    for ms, err in sorted(points):
+        if err < best:
+            front.append((ms, err))
+            best = err
+    return front
+
+
+def tradeoff_chart(results, out):
+    scenes = sorted({r["params"]["scene"] for r in runs(results, "tradeoff")})
+    fig, axes = plt.subplots(1, len(scenes), figsize=(6 * len(scenes), 4.5), squeeze=False)
+    for ax, scene in zip(axes[0], scenes):
+        rs = runs(results, "tradeoff", scene=scene)
+        for m in methods(rs):
+            line = sorted((r for r in rs if r["params"]["method"] == m), key=lambda r: r["params"]["shadow_size"])
+            ax.plot([r["figures"]["frame_ms"] for r in line], [100 * r["figures"]["err"] for r in line],
+                    marker=MARKERS.get(m, "o"), label=m)
+            for r in line:
+                if r["params"]["shadow_size"]:
+                    ax.annotate(str(r["params"]["shadow_size"]), (r["figures"]["frame_ms"], 100 * r["figures"]["err"]),
+                                fontsize=6)
+        front = pareto([(r["figures"]["frame_ms"], 100 * r["figures"]["err"]) for r in rs])
+        ax.plot([p[0] for p in front], [p[1] for p in front], color="gray", lw=6, alpha=0.25, label="Pareto front")
+        ax.set(xscale="log", xlabel="frame_ms", ylabel="err (%)", title=f"Speed against accuracy: {scene}")
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(f"{out}/chart_tradeoff.png", dpi=100)
+
+
+def stability_chart(results, out):
+    fig, (err_ax, alias_ax, cross_ax) = plt.subplots(1, 3, figsize=(16, 4.5))
+    rs = runs(results, "stability")
+    for m in methods(rs):
+        line = sorted((r for r in rs if r["params"]["method"] == m), key=lambda r: r["params"]["light_view_deg"])
+        deg = [r["params"]["light_view_deg"] for r in line]
+        err_ax.plot(deg, [100 * r["figures"]["err"] for r in line], marker=MARKERS.get(m, "o"), label=m)
+        lit = [(d, r["figures"]["alias_p95"]) for d, r in zip(deg, line) if r["figures"]["alias_p95"] > 0]
+        alias_ax.plot([d for d, _ in lit], [a for _, a in lit], marker=MARKERS.get(m, "o"), label=m)
+    err_ax.set(xlabel="light-view angle (deg)", ylabel="err (%)", title="Error against the light direction (field)")
+    alias_ax.set(xlabel="light-view angle (deg)", ylabel="alias_p95", yscale="log",
+                 title="Aliasing against the light direction (field; none where nothing is lit)")
+    rs = runs(results, "crossing")
+    for m in methods(rs):
+        line = sorted((r for r in rs if r["params"]["method"] == m), key=lambda r: r["params"]["light_offset_m"])
+        cross_ax.plot([r["params"]["light_offset_m"] for r in line], [100 * r["figures"]["err"] for r in line],
+                      marker=MARKERS.get(m, "o"), label=m)
+    cross_ax.axvline(0, color="gray", ls=":")
+    cross_ax.set(xlabel="point light ahead of the camera plane (m)", ylabel="err (%)", xscale="symlog",
+                 title="A point light crossing the camera plane")
+    for ax in (err_ax, alias_ax, cross_ax):
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(f"{out}/chart_stability.png", dpi=100)
+
+
+def flythrough_chart(results, out):
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    rs = runs(results, "flythrough")
+    for m in methods(rs):
+        line = sorted((r for r in rs if r["params"]["method"] == m), key=lambda r: r["params"]["frame"])
+        ax.plot([r["params"]["t"] for r in line], [100 * r["figures"]["err"] for r in line], marker=MARKERS.get(m, "o"),
+                label=f"{m} (worst {100 * max(r['figures']['err'] for r in line):.2f} %)")
+    scene = rs[0]["params"]["scene"] if rs else ""
+    ax.set(xlabel="t (s)", ylabel="err (%)", title=f"Error along the {scene} path")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(f"{out}/chart_flythrough.png", dpi=100)
+
+
+def main():
+    results = json.load(open(sys.argv[1]))
+    out = sys.argv[2]
+    tradeoff_chart(results, out)
+    stability_chart(results, out)
+    flythrough_chart(results, out)
+
+
+main()
