@@ -85,7 +85,7 @@ class ShadowBench {
       }
     }
     Renderer volumes(view.scene, settings(ShadowMethod::volumes, 0));
-    BenchRun run = measure(volumes, view, 1, 1);
+    BenchRun run = measure(volumes, view, 0, 1);
     run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", "volumes"}, {"shadow_size", 0}});
     results_.runs.push_back(run);
     crop(volumes, scene_name, "volumes");
