@@ -76,5 +76,18 @@ TEST(ReferenceAgainstVolumes, AgreesOnTheCourtyardUnderEveryLight) {
   }
 }
 
+// --method reference shades with the reference's own mask: its `shadow` AOV is the reference
+// (up to the few pixels where the interpolated normal and the mask's turn differ).
+TEST(ReferenceMethod, ShadowAovIsTheReference) {
+  const auto context = create_headless_context("egl");
+  const Scene scene = load_scene(open_input("courtyard", "scenes"));
+  Renderer renderer(scene, {640, 360, 1024, ShadowMethod::reference});
+  for (const shadow::Light& light : scene.lights) {
+    renderer.render(scene.camera, light);
+    const double a = agreement(renderer.frame().read_visibility(), renderer.exact_visibility(), renderer.frame().read_depth());
+    EXPECT_GE(a, 0.9999) << "light type " << static_cast<int>(light.type);
+  }
+}
+
 }  // namespace
 }  // namespace ecoview::test

@@ -68,6 +68,15 @@ ExactVisibility::ExactVisibility(const std::vector<pointgen::TriangleMesh>& mesh
     }
   }
   rtcCommitScene(scene_);
+  check_device();
+}
+
+// Embree reports failures (out of memory in a build) through the device only.
+void ExactVisibility::check_device() const {
+  if (const RTCError error = rtcGetDeviceError(device_); error != RTC_ERROR_NONE) {
+    throw RuntimeFailure("Embree failed building the exact reference (error " + std::to_string(static_cast<int>(error)) +
+                         "); try a smaller scene or --memory-budget");
+  }
 }
 
 ExactVisibility::~ExactVisibility() {
@@ -89,7 +98,10 @@ void ExactVisibility::pose(const std::vector<pointgen::InstanceTable>& tables) {
       moved = true;
     }
   }
-  if (moved) rtcCommitScene(scene_);
+  if (moved) {
+    rtcCommitScene(scene_);
+    check_device();
+  }
 }
 
 glm::vec3 ExactVisibility::geometric_normal(const RTCHit& hit) const {
@@ -140,6 +152,7 @@ Image8 ExactVisibility::trace(const shadow::Camera& camera, float aspect, const 
         seen.ray.tfar = distance * (1.0f + surface_window);
         seen.ray.mask = 0xFFFFFFFFu;
         seen.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        seen.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(scene_, &context, &seen);
         glm::vec3 p = camera.position + view_ray * (distance * (1.0f - origin_offset));
         glm::vec3 normal(0.0f);  // shading normal on the seen side; 0 where no triangle was found

@@ -54,6 +54,7 @@ class ExactVisibility {
   std::vector<Instance> instances_;
   const std::vector<pointgen::TriangleMesh>& meshes_;
 
+  void check_device() const;
   glm::vec3 geometric_normal(const RTCHit& hit) const;
   glm::vec3 shading_normal(const RTCHit& hit) const;
 };

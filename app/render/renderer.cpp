@@ -112,7 +112,14 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       shadow_pass_(settings.shadow_size),
       frame_pass_(settings.width, settings.height, settings.aliasing),
       frame_points_({settings.width, settings.height}) {
-  glTextureStorage2D(reference_mask_.name(), 1, GL_R8, settings.width, settings.height);
+  // Made here, not with the first frame, so that frame times hold no shader compilation.
+  if (settings_.method == ShadowMethod::volumes) {
+    volume_pass_ = std::make_unique<ShadowVolumePass>(settings_.width, settings_.height, frame_pass_.depth_stencil_texture());
+  }
+  if (settings_.method == ShadowMethod::reference) {
+    reference_mask_ = std::make_unique<gl::Texture>(GL_TEXTURE_2D);
+    glTextureStorage2D(reference_mask_->name(), 1, GL_R8, settings_.width, settings_.height);
+  }
   if (settings.point_meshes_only) {
     for (std::size_t g = 0; g < tables_.size(); ++g) {
       if (!scene.point_meshes[tables_[g].mesh]) tables_[g] = {tables_[g].mesh, {}, {}, {}};
@@ -205,9 +212,6 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
 // shadow pass.
 FramePass::ShadowLookup Renderer::render_shadow_volumes(const shadow::Camera& camera, const shadow::Light& light) {
   setup_ = {{}, shadow::ViewSelection::screen_mask, "volumes"};
-  if (!volume_pass_) {
-    volume_pass_ = std::make_unique<ShadowVolumePass>(settings_.width, settings_.height, frame_pass_.depth_stencil_texture());
-  }
   glBeginQuery(GL_TIME_ELAPSED, shadow_timer_.name());
   draw_frame(camera, light, std::nullopt);
   volume_pass_->render(gpu_scene_, view_projection_, light);
@@ -231,14 +235,17 @@ FramePass::ShadowLookup Renderer::render_reference_mask(const shadow::Camera& ca
   const auto start = std::chrono::steady_clock::now();
   draw_frame(camera, light, std::nullopt);
   const Image8 lit = exact_visibility();
-  // GL rows go up from the bottom.
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  for (int y = 0; y < lit.height; ++y) {
-    glTextureSubImage2D(reference_mask_.name(), 0, 0, lit.height - 1 - y, lit.width, 1, GL_RED, GL_UNSIGNED_BYTE,
-                        lit.samples.data() + static_cast<std::ptrdiff_t>(y) * lit.width);
+  std::vector<std::uint8_t> bottom_up;  // GL's rows go up from the bottom
+  bottom_up.reserve(lit.samples.size());
+  for (int y = lit.height - 1; y >= 0; --y) {
+    const auto row = lit.samples.begin() + static_cast<std::ptrdiff_t>(y) * lit.width;
+    bottom_up.insert(bottom_up.end(), row, row + lit.width);
   }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(reference_mask_->name(), 0, 0, 0, lit.width, lit.height, GL_RED, GL_UNSIGNED_BYTE, bottom_up.data());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   stats_.shadow_pass_ms = ms_since(start);
-  return {reference_mask_.name(), setup_, 0};
+  return {reference_mask_->name(), setup_, 0};
 }
 
 void Renderer::draw_frame(const shadow::Camera& camera, const shadow::Light& light,

@@ -102,9 +102,9 @@ class Renderer {
   FramePass frame_pass_;
   PointSplat frame_points_;
   std::unique_ptr<PointSplat> shadow_points_;  // made with the first shadow map that needs it
-  std::unique_ptr<ShadowVolumePass> volume_pass_;  // made with the first frame that needs it
+  std::unique_ptr<ShadowVolumePass> volume_pass_;  // --method volumes
   std::unique_ptr<ExactVisibility> exact_;          // made when first asked for
-  gl::Texture reference_mask_{GL_TEXTURE_2D};       // R8, frame-sized: the reference's lit pixels
+  std::unique_ptr<gl::Texture> reference_mask_;     // --method reference: R8, frame-sized, its lit pixels
   shadow::Camera camera_;                            // of the last frame
   shadow::Light light_;                              // of the last frame
   shadow::ShadowSetup setup_;  // of the last frame

@@ -15,7 +15,7 @@ constexpr float offset_units = 4.0f;
 ShadowPass::ShadowPass(int size)
     : size_(size),
       program_(gl::build_program({"shadow_depth.vert", "shadow_depth.frag"})),
-      paraboloid_program_(gl::build_program({"shadow_paraboloid.vert", "shadow_paraboloid.tesc", "shadow_paraboloid.tese",
+      paraboloid_program_(gl::build_program({"world_position.vert", "shadow_paraboloid.tesc", "shadow_paraboloid.tese",
                                              "shadow_depth.frag"})),
       point_program_(gl::build_program({"fullscreen.vert", "point_shadow.frag"})) {
   allocate(1);

@@ -19,7 +19,7 @@ constexpr float offset_units = 8.0f;
 ShadowVolumePass::ShadowVolumePass(int width, int height, GLuint depth_stencil)
     : width_(width),
       height_(height),
-      volume_program_(gl::build_program({"shadow_volume.vert", "shadow_volume.geom", "shadow_depth.frag"})),
+      volume_program_(gl::build_program({"world_position.vert", "shadow_volume.geom", "shadow_depth.frag"})),
       mask_program_(gl::build_program({"fullscreen.vert", "light_mask.frag"})) {
   glTextureStorage2D(mask_.name(), 1, GL_R8, width, height);
   const GLuint fb = framebuffer_.name();

@@ -9,8 +9,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-MARKERS = {"uniform": "o", "psm": "s", "lispsm": "^", "cascades": "v", "dpsm": "D", "ipsm": "P", "volumes": "*",
-           "auto": "X"}
+MARKERS = {"uniform": "o", "psm": "s", "lispsm": "^", "cascades": "v", "dpsm": "D", "ipsm": "P", "volumes": "*"}
 
 
 def runs(results, sweep, **params):
@@ -71,7 +70,10 @@ def stability_chart(results, out):
         cross_ax.plot([r["params"]["light_offset_m"] for r in line], [100 * r["figures"]["err"] for r in line],
                       marker=MARKERS.get(m, "o"), label=m)
     cross_ax.axvline(0, color="gray", ls=":")
-    cross_ax.set(xlabel="point light ahead of the camera plane (m)", ylabel="err (%)", xscale="symlog",
+    cross_ax.set_xscale("symlog", linthresh=1)
+    offsets = sorted({r["params"]["light_offset_m"] for r in rs})
+    cross_ax.set_xticks(offsets, [f"{o:g}" for o in offsets], fontsize=7)
+    cross_ax.set(xlabel="point light ahead of the camera plane (m)", ylabel="err (%)",
                  title="A point light crossing the camera plane")
     for ax in (err_ax, alias_ax, cross_ax):
         ax.legend(fontsize=7)

@@ -1,6 +1,5 @@
 #version 450 core
-// Depth of the scene in a paraboloid map: world positions go on to the tessellation stages,
-// which project them (a paraboloid bends straight edges, so edges are cut into short pieces).
+// World positions for the stages after this one to project (shadow volumes, paraboloid maps).
 layout(location = 0) in vec3 position;
 layout(location = 3) in mat4 model;
 
