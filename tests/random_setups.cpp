@@ -38,21 +38,4 @@ Light random_light(pointgen::Random& rng, LightType type) {
   return l;
 }
 
-std::size_t layer_of(const ShadowSetup& setup, const Light& light, const glm::vec3& p) {
-  if (setup.selection == ViewSelection::single) return 0;
-  if (setup.selection == ViewSelection::first_containing) {
-    const float inside = 1.0f - 2.0f * cascade_margin_texels / 2048.0f;  // the tests' map size
-    for (std::size_t i = 0; i + 1 < setup.views.size(); ++i) {
-      const glm::vec4 clip = setup.views[i].clip(p);
-      if (std::abs(clip.x) <= inside * clip.w && std::abs(clip.y) <= inside * clip.w && std::abs(clip.z) <= clip.w) return i;
-    }
-    return setup.views.size() - 1;
-  }
-  if (setup.selection == ViewSelection::hemispheres) return (setup.views[0].view * glm::vec4(p, 1.0f)).z <= 0.0f ? 0 : 1;
-  const glm::vec3 d = p - light.position, a = glm::abs(d);
-  if (a.x >= a.y && a.x >= a.z) return d.x >= 0 ? 0 : 1;
-  if (a.y >= a.z) return d.y >= 0 ? 2 : 3;
-  return d.z >= 0 ? 4 : 5;
-}
-
 }  // namespace shadow

@@ -12,7 +12,5 @@ glm::vec3 random_unit(pointgen::Random& rng);
 Box scene_box();
 Camera random_camera(pointgen::Random& rng);
 Light random_light(pointgen::Random& rng, LightType type);
-// The layer a point looks up, as the frame shader chooses it (for maps of 2048 texels).
-std::size_t layer_of(const ShadowSetup& setup, const Light& light, const glm::vec3& p);
 
 }  // namespace shadow

@@ -4,6 +4,7 @@
 // depth growing towards the receiver; the PSM's light cases follow the paper's geometric rule; no
 // configuration, random or degenerate, gives NaN or infinity.
 #include "random_setups.hpp"
+#include "shadow/aliasing.hpp"
 #include "shadow/cascaded_map.hpp"
 #include "shadow/focus_body.hpp"
 #include "shadow/lispsm_map.hpp"
@@ -83,7 +84,7 @@ TEST_P(WarpedMap, RaysFromReceiversToTheLightMapIntoTheCubeCastersFirst) {
     for (int j = 0; j < 20; ++j) {
       const glm::vec3 r = random_point_in(bodies.receivers, rng);
       if (!lit_by_spot(light, r)) continue;
-      const std::size_t layer = layer_of(setup, light, r);
+      const std::size_t layer = view_for(setup, light, r, 2048);
       const ShadowView& view = setup.views[layer];
       const glm::vec4 clip = view.clip(r);
       ASSERT_GT(clip.w, 0.0f) << "camera " << i;
@@ -92,7 +93,7 @@ TEST_P(WarpedMap, RaysFromReceiversToTheLightMapIntoTheCubeCastersFirst) {
       ++receivers;
       for (const glm::vec3& c : ray_to_light(r, light, scene_box())) {
         // A cube face holds only its own directions; a cascade must hold its receivers' casters.
-        if (setup.selection == ViewSelection::cube_faces && layer_of(setup, light, c) != layer) continue;
+        if (setup.selection == ViewSelection::cube_faces && view_for(setup, light, c, 2048) != layer) continue;
         const glm::vec4 cc = view.clip(c);
         ASSERT_GT(cc.w, 0.0f) << "camera " << i;
         const glm::vec3 cn = glm::vec3(cc) / cc.w;

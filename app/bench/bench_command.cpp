@@ -24,9 +24,9 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::vector<ShadowMethod> directional_methods = {ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::lispsm,
-                                                       ShadowMethod::cascades};
+                                                       ShadowMethod::cascades, ShadowMethod::automatic};
 const std::vector<ShadowMethod> point_methods = {ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::dpsm,
-                                                 ShadowMethod::ipsm};
+                                                 ShadowMethod::ipsm, ShadowMethod::automatic};
 
 // What a run does. The scenes: `field` (posts over a 400 m plane, its 13 lights turning 0°–180°
 // from the view in 15° steps; 90° is the PSM paper's favourable case) and the ecosystem with its
@@ -191,7 +191,7 @@ class ShadowBench {
 
   Image8 reference(const Renderer& renderer, const View& view, const Image<float>& depth) const {
     view.exact.pose(renderer.tables());
-    return view.exact.trace(view.camera, static_cast<float>(base_.width) / static_cast<float>(base_.height), view.light, depth);
+    return view.exact.trace(view.camera, view.light, depth);
   }
 
   // flicker (DESIGN.md): the mean share of pixels whose shadow state changes between consecutive
@@ -293,8 +293,10 @@ int run_bench(const BenchOptions& o) {
   ExactVisibility field_exact(field.meshes, field.groups), big_exact(big.meshes, big.groups);
   ShadowBench bench(o, plan);
   const std::size_t angles = (field.lights.size() + static_cast<std::size_t>(plan.angle_step) - 1) / static_cast<std::size_t>(plan.angle_step);
-  Progress progress("bench: run", 2 * (4 * plan.sizes.size() + 1) + angles * 4 + plan.crossing.size() * 4 +
-                                      4 * static_cast<std::size_t>(plan.flight_frames + 1));
+  const std::size_t methods = directional_methods.size(), point_light_methods = point_methods.size();
+  Progress progress("bench: run", 2 * (methods * plan.sizes.size() + 1) + angles * methods +
+                                      plan.crossing.size() * point_light_methods +
+                                      methods * static_cast<std::size_t>(plan.flight_frames + 1));
   bench.trade_off({field, field_exact, field.camera, field.lights[favourable_light]}, "field", true, progress);
   bench.trade_off({big, big_exact, big.camera, big.lights[0]}, plan.big_scene, false, progress);
   bench.stability(field, field_exact, progress);

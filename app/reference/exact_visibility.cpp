@@ -1,6 +1,7 @@
 #include "app/reference/exact_visibility.hpp"
 
 #include "app/errors.hpp"
+#include "app/render/pixel_rays.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -119,10 +120,9 @@ glm::vec3 ExactVisibility::shading_normal(const RTCHit& hit) const {
   return glm::normalize(instance.normal_matrix * n);
 }
 
-Image8 ExactVisibility::trace(const shadow::Camera& camera, float aspect, const shadow::Light& light,
+Image8 ExactVisibility::trace(const shadow::Camera& camera, const shadow::Light& light,
                               const Image<float>& depth) const {
-  const glm::mat4 to_world = glm::inverse(camera.projection(aspect) * camera.view());
-  const glm::vec3 forward = camera.forward();
+  const PixelRays rays(camera, depth.width, depth.height);
   const float cos_cone = std::cos(glm::radians(light.cone_deg));
   Image8 out{depth.width, depth.height, 1, std::vector<std::uint8_t>(depth.samples.size(), 255)};
 
@@ -133,12 +133,8 @@ Image8 ExactVisibility::trace(const shadow::Camera& camera, float aspect, const 
       for (int x = 0; x < depth.width; ++x) {
         const float d = depth.at(x, y);
         if (!(d > 0.0f)) continue;
-        // The pixel centre's ray from the eye, to the surface at view depth d.
-        const glm::vec2 ndc((2.0f * static_cast<float>(x) + 1.0f) / static_cast<float>(depth.width) - 1.0f,
-                            1.0f - (2.0f * static_cast<float>(y) + 1.0f) / static_cast<float>(depth.height));
-        const glm::vec4 far_point = to_world * glm::vec4(ndc, 1.0f, 1.0f);
-        const glm::vec3 view_ray = glm::normalize(glm::vec3(far_point) / far_point.w - camera.position);
-        const float distance = d / glm::dot(view_ray, forward);
+        const glm::vec3 view_ray = rays.direction(x, y);
+        const float distance = rays.distance(view_ray, d);
         std::uint8_t& visible = out.samples[static_cast<std::size_t>(y) * static_cast<std::size_t>(depth.width) + static_cast<std::size_t>(x)];
 
         RTCRayHit seen{};

@@ -29,13 +29,13 @@ class ExactVisibility {
 
   // 255 where the light reaches the surface point seen in a pixel, else 0, and 255 where no
   // surface is seen (the `shadow` AOV's encoding). `depth` is the frame's linear view depth
-  // (negative: no surface), drawn with `camera` at `aspect`. The eye ray finds the drawn surface
+  // (negative: no surface), drawn with `camera` (at the image's aspect). The eye ray finds the drawn surface
   // again near that depth. As in the frame's shading, a surface whose shading normal (turned to
   // the seen side) faces away from the light is unlit; else a ray from just off the surface to the
   // light decides. So the reference differs from a frame by cast shadows only. Where the eye ray
   // finds no triangle there (a point splat beside its leaf), the ray to the light starts from the
   // depth, a little towards the eye.
-  Image8 trace(const shadow::Camera& camera, float aspect, const shadow::Light& light, const Image<float>& depth) const;
+  Image8 trace(const shadow::Camera& camera, const shadow::Light& light, const Image<float>& depth) const;
 
  private:
   RTCDevice device_ = nullptr;

@@ -40,8 +40,6 @@ class FramePass {
   // The aliasing factor (DESIGN.md) of the surface in each pixel; negative where no surface was
   // drawn, 0 without a shadow map.
   Image<float> read_aliasing() const;
-  // The smallest linear view depth drawn; 0 if nothing was drawn.
-  float nearest_depth() const;
   // The depth-stencil texture (GL_DEPTH32F_STENCIL8) the frame draws into.
   GLuint depth_stencil_texture() const { return depth_buffer_.name(); }
   // Whether to fill the aliasing target from the next frame on.

@@ -1,6 +1,8 @@
 #include "app/render/renderer.hpp"
 
 #include "app/errors.hpp"
+#include "app/render/pixel_rays.hpp"
+#include "shadow/aliasing.hpp"
 #include "shadow/cascaded_map.hpp"
 #include "shadow/lispsm_map.hpp"
 #include "shadow/paraboloid_map.hpp"
@@ -52,6 +54,7 @@ std::string shadow_method_name(ShadowMethod method) {
     case ShadowMethod::ipsm: return "ipsm";
     case ShadowMethod::volumes: return "volumes";
     case ShadowMethod::reference: return "reference";
+    case ShadowMethod::automatic: return "auto";
   }
   return "?";
 }
@@ -59,7 +62,8 @@ std::string shadow_method_name(ShadowMethod method) {
 ShadowMethod parse_shadow_method(const std::string& name) {
   const ShadowMethod all[] = {ShadowMethod::uniform, ShadowMethod::psm,     ShadowMethod::lispsm,
                               ShadowMethod::cascades, ShadowMethod::dpsm,   ShadowMethod::ipsm,
-                              ShadowMethod::volumes, ShadowMethod::reference, ShadowMethod::none};
+                              ShadowMethod::volumes, ShadowMethod::reference, ShadowMethod::automatic,
+                              ShadowMethod::none};
   std::string names;
   for (ShadowMethod m : all) {
     if (name == shadow_method_name(m)) return m;
@@ -158,9 +162,11 @@ pointgen::SampledFrame Renderer::measured(const pointgen::SampledFrame& selectio
   return out;
 }
 
-shadow::ShadowSetup Renderer::make_shadow_setup(const shadow::Camera& camera, const shadow::Light& light) const {
+shadow::ShadowSetup Renderer::make_shadow_setup(ShadowMethod method, const shadow::Camera& camera,
+                                                const shadow::Light& light) const {
   const int size = settings_.shadow_size;
-  switch (settings_.method) {
+  switch (method) {
+    case ShadowMethod::automatic: return best_predicted_setup(camera, light);
     case ShadowMethod::psm:
       return shadow::perspective_shadow_map(camera, aspect(), light, scene_bounds_, size,
                                             nearest_visible_margin * nearest_visible_);
@@ -172,11 +178,56 @@ shadow::ShadowSetup Renderer::make_shadow_setup(const shadow::Camera& camera, co
   }
 }
 
+// --method auto: each candidate's alias_p95 predicted from its matrices on the surface the last
+// frame showed; the least wins.
+shadow::ShadowSetup Renderer::best_predicted_setup(const shadow::Camera& camera, const shadow::Light& light) const {
+  const std::vector<ShadowMethod> candidates =
+      light.type == shadow::LightType::directional
+          ? std::vector<ShadowMethod>{ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::lispsm, ShadowMethod::cascades}
+          : std::vector<ShadowMethod>{ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::dpsm, ShadowMethod::ipsm};
+  const shadow::FrameView frame{camera.projection(aspect()) * camera.view(), glm::vec2(settings_.width, settings_.height)};
+  shadow::ShadowSetup best;
+  float least = INFINITY;
+  ShadowMethod chosen = candidates.front();
+  for (ShadowMethod method : candidates) {
+    shadow::ShadowSetup setup = make_shadow_setup(method, camera, light);
+    const float predicted = shadow::predicted_alias_p95(setup, light, settings_.shadow_size, frame, last_surface_);
+    if (predicted < least) {
+      least = predicted;
+      best = std::move(setup);
+      chosen = method;
+    }
+  }
+  char figure[32];
+  std::snprintf(figure, sizeof figure, "%.2f", least);
+  best.description = "auto: " + shadow_method_name(chosen) + ", predicted alias_p95 " + figure + " (" + best.description + ")";
+  return best;
+}
+
+// Surface points of a frame on a grid of every `step`-th pixel, with normals from the
+// neighbouring pixels' points; none where a neighbour is missing or much farther (an edge).
+static std::vector<shadow::SurfacePoint> surface_points(const Image<float>& depth, const PixelRays& rays, int step) {
+  std::vector<shadow::SurfacePoint> points;
+  for (int y = step / 2; y + 1 < depth.height; y += step) {
+    for (int x = step / 2; x + 1 < depth.width; x += step) {
+      const float d = depth.at(x, y), dx = depth.at(x + 1, y), dy = depth.at(x, y + 1);
+      if (!(d > 0.0f && dx > 0.0f && dy > 0.0f) || std::abs(dx - d) > 0.05f * d || std::abs(dy - d) > 0.05f * d) continue;
+      const glm::vec3 p = rays.point(x, y, d);
+      glm::vec3 n = glm::cross(rays.point(x + 1, y, dx) - p, rays.point(x, y + 1, dy) - p);
+      if (!(glm::length(n) > 0.0f)) continue;
+      n = glm::normalize(n);
+      if (glm::dot(n, rays.eye() - p) < 0.0f) n = -n;
+      points.push_back({p, n});
+    }
+  }
+  return points;
+}
+
 // The shadow map for this frame; with points on, far instances of point meshes are splatted into
 // it. Each view chooses its own points and polygons, so that a view with one frustum keeps the
 // sampler's cap and occlusion (cascades, cube faces). Timed from the first GL draw to the last.
 void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Light& light) {
-  setup_ = make_shadow_setup(camera, light);
+  setup_ = make_shadow_setup(settings_.method, camera, light);
   std::vector<pointgen::SampledFrame> selections;
   if (settings_.points) {
     const auto start = std::chrono::steady_clock::now();
@@ -226,7 +277,7 @@ ExactVisibility& Renderer::exact() {
   return *exact_;
 }
 
-Image8 Renderer::exact_visibility() { return exact().trace(camera_, aspect(), light_, frame_pass_.read_depth()); }
+Image8 Renderer::exact_visibility() { return exact().trace(camera_, light_, frame_pass_.read_depth()); }
 
 // The frame drawn without shadows gives the depth the rays start from; the reference is CPU work,
 // timed by the wall clock as the shadow pass.
@@ -271,12 +322,27 @@ void Renderer::pose(double t) {
 }
 
 void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, double t) {
-  const bool psm = settings_.method == ShadowMethod::psm;
-  // The first PSM frame has no last frame to take its near plane from: a frame without shadows
-  // gives it.
-  if (psm && !(nearest_visible_ > 0.0f)) draw(camera, light, t, false);
+  // The PSM takes its near plane from the last frame, auto its surface: the first frame draws
+  // once without shadows to have one.
+  const bool needs_last_frame = settings_.method == ShadowMethod::psm || settings_.method == ShadowMethod::automatic;
+  if (needs_last_frame && !(nearest_visible_ > 0.0f)) {
+    draw(camera, light, t, false);
+    remember_last_frame();
+  }
   draw(camera, light, t, settings_.method != ShadowMethod::none);
-  if (psm) nearest_visible_ = frame_pass_.nearest_depth();
+  if (needs_last_frame) remember_last_frame();
+}
+
+// Read back and scanned on the CPU: on llvmpipe that takes 3–5 ms for 960×540, where a compute
+// reduction (atomicMin per workgroup) took 8–10 ms. On a GPU the reduction would win.
+void Renderer::remember_last_frame() {
+  const Image<float> depth = frame_pass_.read_depth();
+  float nearest = INFINITY;
+  for (float d : depth.samples) {
+    if (d > 0.0f) nearest = std::min(nearest, d);
+  }
+  nearest_visible_ = std::isfinite(nearest) ? nearest : 0.0f;
+  if (settings_.method == ShadowMethod::automatic) last_surface_ = surface_points(depth, PixelRays(camera_, depth.width, depth.height), 16);
 }
 
 void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows) {

@@ -7,13 +7,15 @@
 #include "app/reference/exact_visibility.hpp"
 #include "app/render/shadow_volume_pass.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
+#include "shadow/aliasing.hpp"
 
 #include <memory>
 #include <string>
 
 namespace ecoview {
 
-enum class ShadowMethod { none, uniform, psm, lispsm, cascades, dpsm, ipsm, volumes, reference };
+// `automatic` is --method auto.
+enum class ShadowMethod { none, uniform, psm, lispsm, cascades, dpsm, ipsm, volumes, reference, automatic };
 
 // Parses a --method name; throws InputError listing the methods this build renders.
 ShadowMethod parse_shadow_method(const std::string& name);
@@ -80,7 +82,10 @@ class Renderer {
   void upload_polygons(const pointgen::SampledFrame& selection);
   // One frame, with or without the shadow map.
   void draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows);
-  shadow::ShadowSetup make_shadow_setup(const shadow::Camera& camera, const shadow::Light& light) const;
+  shadow::ShadowSetup make_shadow_setup(ShadowMethod method, const shadow::Camera& camera, const shadow::Light& light) const;
+  shadow::ShadowSetup best_predicted_setup(const shadow::Camera& camera, const shadow::Light& light) const;
+  // Keeps what the next frame needs of this one: its nearest depth (PSM) and its surface (auto).
+  void remember_last_frame();
   void render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
   // Shadow volumes in place of a map: the lit-pixel mask of this frame.
   FramePass::ShadowLookup render_shadow_volumes(const shadow::Camera& camera, const shadow::Light& light);
@@ -111,6 +116,7 @@ class Renderer {
   // PSM: the nearest depth the camera saw in the last frame, pushing the near plane of the next
   // (seed 000, Sect. 6); 0 until a frame was drawn.
   float nearest_visible_ = 0.0f;
+  std::vector<shadow::SurfacePoint> last_surface_;  // auto: sampled from the last frame
   glm::mat4 view_projection_{1.0f};  // of the last frame
   FrameStats stats_;
   gl::Query shadow_timer_{GL_TIME_ELAPSED}, frame_timer_{GL_TIME_ELAPSED};

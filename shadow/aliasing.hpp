@@ -1,0 +1,35 @@
+#pragma once
+#include "shadow/light.hpp"
+#include "shadow/shadow_setup.hpp"
+
+#include <vector>
+
+// The aliasing factor of DESIGN.md on the CPU, from a setup's matrices alone: what the frame's
+// shader computes per pixel (shaders/lighting.glsl), for predicting a method's alias_p95 before
+// it renders (`--method auto`).
+namespace shadow {
+
+// The view of `setup` whose map holds p's shadow, as the frame's shader picks it.
+std::size_t view_for(const ShadowSetup& setup, const Light& light, const glm::vec3& p, int map_size);
+
+// The camera side: its world → clip matrix and the frame's size in pixels.
+struct FrameView {
+  glm::mat4 view_projection{1.0f};
+  glm::vec2 pixels{1.0f};
+};
+
+// The size in frame pixels of one shadow-map texel on the surface at p with normal n (the largest
+// singular value of pixels per texel along the surface); a huge number where the light grazes it.
+float aliasing_factor(const ShadowSetup& setup, const Light& light, int map_size, const FrameView& frame,
+                      const glm::vec3& p, const glm::vec3& n);
+
+struct SurfacePoint {
+  glm::vec3 position;
+  glm::vec3 normal;  // turned to the eye
+};
+
+// alias_p95 predicted over surface points the light faces (0 when it faces none).
+float predicted_alias_p95(const ShadowSetup& setup, const Light& light, int map_size, const FrameView& frame,
+                          const std::vector<SurfacePoint>& surface);
+
+}  // namespace shadow
