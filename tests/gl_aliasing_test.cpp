@@ -2,6 +2,7 @@
 // straight down on a plane, where a uniform map spreads its texels evenly over what the camera sees.
 #include "app/bench/shadow_figures.hpp"
 #include "app/gl/context.hpp"
+#include "app/render/pixel_rays.hpp"
 #include "app/render/renderer.hpp"
 #include "app/scene/scene_file.hpp"
 
@@ -49,6 +50,28 @@ TEST(AliasingFactor, IsZeroWithoutAShadowMapAndNegativeWhereNothingIsDrawn) {
   scene.camera.up = glm::vec3(0, 0, 1);
   renderer.render(scene.camera, scene.lights[0]);
   EXPECT_LT(renderer.frame().read_aliasing().at(width / 2, height / 2), 0.0f);
+}
+
+// What --method auto chooses by: alias_p95 predicted on the CPU from a setup's matrices and the
+// frame's surface against the aliasing AOV the frame shader computed, on the deep field under a
+// light across the view.
+TEST(PredictedAliasing, MatchesTheFramesAliasP95) {
+  const auto context = create_headless_context("egl");
+  const Scene scene = load_scene(open_input("field", "scenes"));
+  const shadow::Light& light = scene.lights[6];
+  for (ShadowMethod method : {ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::lispsm, ShadowMethod::cascades}) {
+    RenderSettings settings{width, height, 1024, method};
+    settings.aliasing = true;
+    Renderer renderer(scene, settings);
+    renderer.render(scene.camera, light);
+    const Image<float> depth = renderer.frame().read_depth();
+    const shadow::FrameView frame{scene.camera.projection(static_cast<float>(width) / height) * scene.camera.view(),
+                                  glm::vec2(width, height)};
+    const float predicted = shadow::predicted_alias_p95(renderer.shadow_setup(), light, 1024, frame,
+                                                        surface_points(depth, PixelRays(scene.camera, width, height), 8));
+    const double measured = alias_p95(renderer.frame().read_aliasing(), renderer.frame().read_visibility());
+    EXPECT_NEAR(predicted, measured, 0.15 * measured) << shadow_method_name(method);
+  }
 }
 
 }  // namespace

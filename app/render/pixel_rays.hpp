@@ -1,4 +1,6 @@
 #pragma once
+#include "app/render/image.hpp"
+#include "shadow/aliasing.hpp"
 #include "shadow/camera.hpp"
 
 #include <glm/glm.hpp>
@@ -35,5 +37,10 @@ class PixelRays {
   glm::mat4 to_world_;
   int width_, height_;
 };
+
+// Surface points of a frame (its linear view depth) on a grid of every `step`-th pixel, with
+// normals from the neighbouring pixels' points turned to the eye; none where a neighbour shows no
+// surface or one much farther (an edge).
+std::vector<shadow::SurfacePoint> surface_points(const Image<float>& depth, const PixelRays& rays, int step);
 
 }  // namespace ecoview

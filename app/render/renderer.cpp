@@ -204,25 +204,6 @@ shadow::ShadowSetup Renderer::best_predicted_setup(const shadow::Camera& camera,
   return best;
 }
 
-// Surface points of a frame on a grid of every `step`-th pixel, with normals from the
-// neighbouring pixels' points; none where a neighbour is missing or much farther (an edge).
-static std::vector<shadow::SurfacePoint> surface_points(const Image<float>& depth, const PixelRays& rays, int step) {
-  std::vector<shadow::SurfacePoint> points;
-  for (int y = step / 2; y + 1 < depth.height; y += step) {
-    for (int x = step / 2; x + 1 < depth.width; x += step) {
-      const float d = depth.at(x, y), dx = depth.at(x + 1, y), dy = depth.at(x, y + 1);
-      if (!(d > 0.0f && dx > 0.0f && dy > 0.0f) || std::abs(dx - d) > 0.05f * d || std::abs(dy - d) > 0.05f * d) continue;
-      const glm::vec3 p = rays.point(x, y, d);
-      glm::vec3 n = glm::cross(rays.point(x + 1, y, dx) - p, rays.point(x, y + 1, dy) - p);
-      if (!(glm::length(n) > 0.0f)) continue;
-      n = glm::normalize(n);
-      if (glm::dot(n, rays.eye() - p) < 0.0f) n = -n;
-      points.push_back({p, n});
-    }
-  }
-  return points;
-}
-
 // The shadow map for this frame; with points on, far instances of point meshes are splatted into
 // it. Each view chooses its own points and polygons, so that a view with one frustum keeps the
 // sampler's cap and occlusion (cascades, cube faces). Timed from the first GL draw to the last.
