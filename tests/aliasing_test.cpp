@@ -32,11 +32,7 @@ TEST(AliasingFactor, MatchesATexelSizeWorkedOutByHand) {
 // Seed 000, Sect. 3.3: with the light across the view over a deep scene the PSM's texels near the
 // eye are far smaller; the prediction must see it.
 TEST(PredictedAliasing, FavoursThePsmForALightAcrossADeepView) {
-  Camera camera;
-  camera.position = glm::vec3(0, 2, 45);
-  camera.target = glm::vec3(0, 1, 0);
-  camera.near = 0.5f;
-  camera.far = 300.0f;
+  const Camera camera = deep_view_camera();
   const float aspect = 16.0f / 9.0f;
   const Light sun{LightType::directional, {}, glm::normalize(glm::vec3(1, -1, 0)), 30};
   const FrameView frame{camera.projection(aspect) * camera.view(), {960, 540}};

@@ -243,6 +243,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"size_zero", "", {"--size", "0x0"}, {"--size"}},
         BadInput{"frames_backwards", "", {"--frames", "5:2"}, {"--frames"}},
         BadInput{"unknown_method", "", {"--method", "magic"}, {"--method"}},
+        BadInput{"shadowmap_without_map", "", {"--method", "volumes", "--aov", "color,shadowmap"}, {"--aov", "volumes"}},
         BadInput{"unknown_aov", "", {"--aov", "color,normals"}, {"--aov", "normals"}},
         BadInput{"unknown_scene", "", {"--scene", "no-such-scene"}, {"no-such-scene", "courtyard"}},
         BadInput{"light_index", "", {"--scene", "courtyard", "--light", "7"}, {"--light"}},

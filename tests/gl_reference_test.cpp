@@ -62,31 +62,33 @@ TEST(ReferenceAgainstVolumes, AgreesOnFloatingBoxesUnderEveryLight) {
   }
 }
 
+// The courtyard under each of its lights drawn with `method`: the share of surface pixels whose
+// shadow state agrees with the reference, per light.
+std::vector<double> agreement_on_the_courtyard(ShadowMethod method) {
+  const Scene scene = load_scene(open_input("courtyard", "scenes"));
+  Renderer renderer(scene, {640, 360, 1024, method});
+  std::vector<double> per_light;
+  for (const shadow::Light& light : scene.lights) {
+    renderer.render(scene.camera, light);
+    per_light.push_back(agreement(renderer.frame().read_visibility(), renderer.exact_visibility(), renderer.frame().read_depth()));
+    std::cout << shadow_method_name(method) << ", light type " << static_cast<int>(light.type) << ": "
+              << 100.0 * per_light.back() << " % of surface pixels agree\n";
+  }
+  return per_light;
+}
+
 // The courtyard adds a sphere and a knot with smooth normals: the reference takes the frame's
 // shading normals for the side a surface turns to the light, so they agree there too.
 TEST(ReferenceAgainstVolumes, AgreesOnTheCourtyardUnderEveryLight) {
   const auto context = create_headless_context("egl");
-  const Scene scene = load_scene(open_input("courtyard", "scenes"));
-  Renderer renderer(scene, {640, 360, 1024, ShadowMethod::volumes});
-  for (const shadow::Light& light : scene.lights) {
-    renderer.render(scene.camera, light);
-    const double a = agreement(renderer.frame().read_visibility(), renderer.exact_visibility(), renderer.frame().read_depth());
-    std::cout << "light type " << static_cast<int>(light.type) << ": " << 100.0 * a << " % of surface pixels agree\n";
-    EXPECT_GE(a, 0.999);
-  }
+  for (double a : agreement_on_the_courtyard(ShadowMethod::volumes)) EXPECT_GE(a, 0.999);
 }
 
 // --method reference shades with the reference's own mask: its `shadow` AOV is the reference
 // (up to the few pixels where the interpolated normal and the mask's turn differ).
 TEST(ReferenceMethod, ShadowAovIsTheReference) {
   const auto context = create_headless_context("egl");
-  const Scene scene = load_scene(open_input("courtyard", "scenes"));
-  Renderer renderer(scene, {640, 360, 1024, ShadowMethod::reference});
-  for (const shadow::Light& light : scene.lights) {
-    renderer.render(scene.camera, light);
-    const double a = agreement(renderer.frame().read_visibility(), renderer.exact_visibility(), renderer.frame().read_depth());
-    EXPECT_GE(a, 0.9999) << "light type " << static_cast<int>(light.type);
-  }
+  for (double a : agreement_on_the_courtyard(ShadowMethod::reference)) EXPECT_GE(a, 0.9999);
 }
 
 }  // namespace

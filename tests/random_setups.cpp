@@ -38,4 +38,13 @@ Light random_light(pointgen::Random& rng, LightType type) {
   return l;
 }
 
+Camera deep_view_camera() {
+  Camera camera;
+  camera.position = glm::vec3(0, 2, 45);
+  camera.target = glm::vec3(0, 1, 0);
+  camera.near = 0.5f;
+  camera.far = 300.0f;
+  return camera;
+}
+
 }  // namespace shadow

@@ -12,5 +12,8 @@ glm::vec3 random_unit(pointgen::Random& rng);
 Box scene_box();
 Camera random_camera(pointgen::Random& rng);
 Light random_light(pointgen::Random& rng, LightType type);
+// The PSM paper's best case (seed 000, Sect. 3.3): a camera 2 m up looking far along the ground,
+// for a light across the view.
+Camera deep_view_camera();
 
 }  // namespace shadow

@@ -167,11 +167,7 @@ TEST(PostPerspectiveLight, FollowsThePapersGeometricRule) {
 // Seed 000, Sect. 3.3: a directional light perpendicular to the view is the best case. Near the
 // eye the warped maps' texels on the ground must be far smaller than the uniform map's.
 TEST(WarpedMap, NearTexelsAreSmallerThanTheUniformMapsForALightAcrossTheView) {
-  Camera camera;
-  camera.position = glm::vec3(0, 2, 45);
-  camera.target = glm::vec3(0, 1, 0);
-  camera.near = 0.5f;
-  camera.far = 300.0f;
+  const Camera camera = deep_view_camera();
   const Light sun{LightType::directional, {}, glm::normalize(glm::vec3(1, -1, 0)), 30};
   // The ground's texel area at p: the determinant of the map's (u, v) against the ground's (x, z).
   auto texel_area = [](const glm::mat4& m, const glm::vec3& p) {
