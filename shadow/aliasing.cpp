@@ -73,9 +73,13 @@ float predicted_alias_p95(const ShadowSetup& setup, const Light& light, int map_
       factors.push_back(aliasing_factor(setup, light, map_size, frame, s.position, s.normal));
     }
   }
-  if (factors.empty()) return 0.0f;
-  const auto p95 = factors.begin() + static_cast<std::ptrdiff_t>(0.95 * static_cast<double>(factors.size() - 1));
-  std::nth_element(factors.begin(), p95, factors.end());
+  return percentile_95(std::move(factors));
+}
+
+float percentile_95(std::vector<float> values) {
+  if (values.empty()) return 0.0f;
+  const auto p95 = values.begin() + static_cast<std::ptrdiff_t>(0.95 * static_cast<double>(values.size() - 1));
+  std::nth_element(values.begin(), p95, values.end());
   return *p95;
 }
 

@@ -28,6 +28,9 @@ struct SurfacePoint {
   glm::vec3 normal;  // turned to the eye
 };
 
+// The 95th percentile of some values (0 for none): alias_p95's statistic.
+float percentile_95(std::vector<float> values);
+
 // alias_p95 predicted over surface points the light faces (0 when it faces none).
 float predicted_alias_p95(const ShadowSetup& setup, const Light& light, int map_size, const FrameView& frame,
                           const std::vector<SurfacePoint>& surface);

@@ -63,8 +63,8 @@ struct View {
 
 class ShadowBench {
  public:
-  ShadowBench(const BenchOptions& o, const Plan& plan) : o_(o), plan_(plan), out_(o.out) {
-    const glm::ivec2 size = parse_size(o.size);
+  ShadowBench(const BenchOptions& o, const Plan& plan) : o_(o), plan_(plan), out_(o.run.out) {
+    const glm::ivec2 size = parse_size(o.run.size);
     base_.width = size.x;
     base_.height = size.y;
     fs::create_directories(out_ / "images");
@@ -149,7 +149,7 @@ class ShadowBench {
   }
 
   void finish(const std::string& renderer_name) {
-    results_.machine = machine_info(renderer_name, o_.backend);
+    results_.machine = machine_info(renderer_name, o_.run.backend);
     write_results(out_, results_);
     draw_charts(out_, "bench_charts.py");
     write_report(out_, "ecoview bench", report_body(), results_);
@@ -271,25 +271,20 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
                                               "turned 0-180 degrees from the view, a point light crossing the camera "
                                               "plane, a flythrough; writes results.json, results.csv, charts, image "
                                               "crops and report.html");
-  cmd->add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
-  cmd->add_option("--backend", o.backend, "GL context: egl or osmesa")->capture_default_str();
-  cmd->add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes needing more memory than this, in GiB")
-      ->capture_default_str();
-  cmd->add_flag("--quick", o.quick, "Small scenes and a few configurations, to check that everything works");
-  cmd->add_option("--out", o.out, "Output folder (created if missing)")->required();
+  add_benchmark_options(*cmd, o.run, "Small scenes and a few configurations, to check that everything works");
   return cmd;
 }
 
 int run_bench(const BenchOptions& o) {
-  parse_size(o.size);
-  check_backend(o.backend);
-  make_out_folder(o.out);
-  const Plan plan = plan_for(o.quick);
-  const Scene field = load_scene_option("field", o.memory_budget_gib);
-  const Scene big = load_scene_option(plan.big_scene, o.memory_budget_gib);
+  parse_size(o.run.size);
+  check_backend(o.run.backend);
+  make_out_folder(o.run.out);
+  const Plan plan = plan_for(o.run.quick);
+  const Scene field = load_scene_option("field", o.run.memory_budget_gib);
+  const Scene big = load_scene_option(plan.big_scene, o.run.memory_budget_gib);
   const CameraPath path = CameraPath::load(open_input(plan.big_scene, "paths"));
 
-  const std::unique_ptr<GlContext> context = create_headless_context(o.backend);
+  const std::unique_ptr<GlContext> context = create_headless_context(o.run.backend);
   ExactVisibility field_exact(field.meshes, field.groups), big_exact(big.meshes, big.groups);
   ShadowBench bench(o, plan);
   const std::size_t angles = (field.lights.size() + static_cast<std::size_t>(plan.angle_step) - 1) / static_cast<std::size_t>(plan.angle_step);
@@ -304,7 +299,7 @@ int run_bench(const BenchOptions& o) {
   bench.flythrough(big, big_exact, path, plan.big_scene, progress);
   progress.finish();
   bench.finish(context->description());
-  std::cout << "bench: wrote results.json, results.csv, charts, crops and report.html to " << o.out << "\n";
+  std::cout << "bench: wrote results.json, results.csv, charts, crops and report.html to " << o.run.out << "\n";
   return 0;
 }
 

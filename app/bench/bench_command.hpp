@@ -8,11 +8,7 @@
 namespace ecoview {
 
 struct BenchOptions {
-  std::string size = "640x360";
-  std::string backend = "egl";
-  bool quick = false;  // small scenes and a few configurations, to check the pipeline (tests)
-  double memory_budget_gib = 4.0;
-  std::string out;
+  BenchmarkOptions run{"640x360"};  // --quick: small scenes and a few configurations
 };
 
 // Registers `ecoview bench`: shadow methods, speed against accuracy against the exact reference

@@ -78,8 +78,8 @@ double changed_fraction(const Image8& a, const Image8& b) {
 
 class DensityBench {
  public:
-  DensityBench(const DensityOptions& o, const Plan& plan) : o_(o), plan_(plan), out_(o.out) {
-    const glm::ivec2 size = parse_size(o.size);
+  DensityBench(const DensityOptions& o, const Plan& plan) : o_(o), plan_(plan), out_(o.run.out) {
+    const glm::ivec2 size = parse_size(o.run.size);
     base_.width = size.x;
     base_.height = size.y;
   }
@@ -131,7 +131,7 @@ class DensityBench {
   void scale(Progress& progress) {
     for (int count : plan_.instance_counts) {
       const Scene scene = load_scene({"stand", stand_scene(count), [](const std::string&) { return std::nullopt; }},
-                                     {o_.memory_budget_gib * 1024.0 * 1024.0 * 1024.0});
+                                     {o_.run.memory_budget_gib * 1024.0 * 1024.0 * 1024.0});
       time_both_ways("scale", scene, "stand", count, progress);
     }
   }
@@ -163,7 +163,7 @@ class DensityBench {
   }
 
   void finish(const std::string& renderer_name) {
-    results_.machine = machine_info(renderer_name, o_.backend);
+    results_.machine = machine_info(renderer_name, o_.run.backend);
     write_results(out_, results_);
     draw_charts(out_, "density_charts.py");
     write_report(out_, "ecoview density",
@@ -221,24 +221,19 @@ CLI::App* add_density_command(CLI::App& app, DensityOptions& o) {
                                                 "size, points and time against instance count, temporal noise; writes "
                                                 "results.json, results.csv, charts and report.html");
   cmd->add_option("--scene", o.scene, "Scene for the quality, speed and temporal runs (default: the default scene)");
-  cmd->add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
-  cmd->add_option("--backend", o.backend, "GL context: egl or osmesa")->capture_default_str();
-  cmd->add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes needing more memory than this, in GiB")
-      ->capture_default_str();
-  cmd->add_flag("--quick", o.quick, "A few short runs, to check that everything works");
-  cmd->add_option("--out", o.out, "Output folder (created if missing)")->required();
+  add_benchmark_options(*cmd, o.run, "A few short runs, to check that everything works");
   return cmd;
 }
 
 int run_density(const DensityOptions& o) {
-  parse_size(o.size);
-  check_backend(o.backend);
-  const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
+  parse_size(o.run.size);
+  check_backend(o.run.backend);
+  const Scene scene = load_scene_option(o.scene, o.run.memory_budget_gib);
   const std::string scene_name = o.scene.empty() ? default_scene_name : o.scene;
-  make_out_folder(o.out);
+  make_out_folder(o.run.out);
 
-  const Plan plan = plan_for(o.quick);
-  const std::unique_ptr<GlContext> context = create_headless_context(o.backend);
+  const Plan plan = plan_for(o.run.quick);
+  const std::unique_ptr<GlContext> context = create_headless_context(o.run.backend);
   DensityBench bench(o, plan);
   Progress progress("density: run", plan.ks.size() * plan.splats.size() + 2 + 2 * plan.instance_counts.size() + 2);
   bench.quality(scene, scene_name, progress);
@@ -248,7 +243,7 @@ int run_density(const DensityOptions& o) {
   bench.paths(scene, scene_name, progress);
   progress.finish();
   bench.finish(context->description());
-  std::cout << "density: wrote results.json, results.csv, charts and report.html to " << o.out << "\n";
+  std::cout << "density: wrote results.json, results.csv, charts and report.html to " << o.run.out << "\n";
   return 0;
 }
 

@@ -9,11 +9,7 @@ namespace ecoview {
 
 struct DensityOptions {
   std::string scene;
-  std::string size = "960x540";
-  std::string backend = "egl";
-  bool quick = false;  // a few short runs, to check the pipeline (tests)
-  double memory_budget_gib = 4.0;
-  std::string out;
+  BenchmarkOptions run{"960x540"};
 };
 
 // Registers `ecoview density`: the point-density benchmark (sweeps of k, splat size and instance

@@ -1,5 +1,7 @@
 #include "app/bench/shadow_figures.hpp"
 
+#include "shadow/aliasing.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -18,10 +20,7 @@ double alias_p95(const Image<float>& aliasing, const Image8& visibility) {
   for (std::size_t i = 0; i < aliasing.samples.size(); ++i) {
     if (aliasing.samples[i] > 0.0f && visibility.samples[i] >= 128) lit.push_back(aliasing.samples[i]);
   }
-  if (lit.empty()) return 0.0;
-  const auto p95 = lit.begin() + static_cast<std::ptrdiff_t>(0.95 * static_cast<double>(lit.size() - 1));
-  std::nth_element(lit.begin(), p95, lit.end());
-  return *p95;
+  return shadow::percentile_95(std::move(lit));
 }
 
 ShadowErrors shadow_errors(const Image8& visibility, const Image8& reference, const Image<float>& depth) {

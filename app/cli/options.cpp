@@ -123,4 +123,13 @@ const shadow::Light& select_light(const Scene& scene, int index) {
   return scene.lights[static_cast<std::size_t>(index)];
 }
 
+void add_benchmark_options(CLI::App& command, BenchmarkOptions& o, const std::string& quick_help) {
+  command.add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
+  command.add_option("--backend", o.backend, "GL context: egl or osmesa")->capture_default_str();
+  command.add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes needing more memory than this, in GiB")
+      ->capture_default_str();
+  command.add_flag("--quick", o.quick, quick_help);
+  command.add_option("--out", o.out, "Output folder (created if missing)")->required();
+}
+
 }  // namespace ecoview

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include <string>
+#include <utility>
 
 // Validation of command-line values shared by the subcommands; each throws InputError naming
 // the option.
@@ -38,6 +39,17 @@ void add_render_options(CLI::App& command, RenderOptions& options);
 // Validated settings; throws InputError naming the option.
 RenderSettings render_settings(const RenderOptions& options);
 double check_fps(double fps);
+
+// What `density` and `bench` share: --size, --backend, --memory-budget, --quick, --out.
+struct BenchmarkOptions {
+  explicit BenchmarkOptions(std::string default_size) : size(std::move(default_size)) {}
+  std::string size;
+  std::string backend = "egl";
+  bool quick = false;  // a few short runs, to check the pipeline (tests)
+  double memory_budget_gib = 4.0;
+  std::string out;
+};
+void add_benchmark_options(CLI::App& command, BenchmarkOptions& options, const std::string& quick_help);
 
 // Checks a --backend name (egl or osmesa) before any work is done.
 const std::string& check_backend(const std::string& backend);
