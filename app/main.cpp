@@ -2,7 +2,7 @@
 #include "app/bench/bench_command.hpp"
 #include "app/bench/density_command.hpp"
 #include "app/capture/capture_command.hpp"
-#include "app/cli/view_command.hpp"
+#include "app/view/view_command.hpp"
 #include "app/errors.hpp"
 
 #include <CLI/CLI.hpp>

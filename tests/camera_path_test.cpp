@@ -37,6 +37,18 @@ TEST(CameraPath, IsSmoothAcrossKeys) {
   EXPECT_LT(glm::length(before - after), 0.05f * glm::length(before));
 }
 
+TEST(CameraPath, WrittenKeysReadBackExactly) {
+  const CameraPath path({{0.0, {0.1f, 1e-7f, -3.3f}, {1.0f / 3.0f, 2.0f, 0.7f}, {0.0f, 1.0f, 0.0f}},
+                         {0.0333, {1.23456789f, 5.0f, -3.0f}, {2.0f, 2.0f, 2.0f}, {0.0f, 0.0f, 1.0f}}});
+  const CameraPath again = load_path(path.json());
+  for (double t : {0.0, 0.0333, 0.02}) {
+    const shadow::Camera a = path.at(t, shadow::Camera{}), b = again.at(t, shadow::Camera{});
+    EXPECT_EQ(a.position, b.position);
+    EXPECT_EQ(a.target, b.target);
+    EXPECT_EQ(a.up, b.up);
+  }
+}
+
 TEST(CameraPath, BadKeysAreNamed) {
   auto expect_error = [](const std::string& json, const char* field) {
     try {

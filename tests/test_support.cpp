@@ -9,15 +9,12 @@
 #include <stdexcept>
 
 namespace ecoview::test {
-namespace {
 
 std::string shell_quote(const std::string& s) {
   std::string out = "'";
   for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
 }
-
-}  // namespace
 
 TempDir::TempDir() {
   std::string pattern = (std::filesystem::temp_directory_path() / "ecoview_test_XXXXXX").string();
@@ -50,10 +47,15 @@ std::vector<std::string> files_in(const std::filesystem::path& folder) {
 }
 
 CommandResult run_ecoview(const std::vector<std::string>& args) {
-  const TempDir streams;
-  std::string command = shell_quote(ECOVIEW_BINARY);
+  std::string command = "ecoview";
   for (const std::string& a : args) command += " " + shell_quote(a);
-  command += " >" + shell_quote((streams / "out").string()) + " 2>" + shell_quote((streams / "err").string());
+  return run_shell(command);
+}
+
+CommandResult run_shell(const std::string& script) {
+  const TempDir streams;
+  const std::string command = "ecoview() { " + shell_quote(ECOVIEW_BINARY) + " \"$@\"; }\n(" + script + ") >" +
+                              shell_quote((streams / "out").string()) + " 2>" + shell_quote((streams / "err").string());
   const int status = std::system(command.c_str());
   CommandResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

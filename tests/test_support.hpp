@@ -32,6 +32,10 @@ struct CommandResult {
 };
 // Runs the ecoview binary built with these tests.
 CommandResult run_ecoview(const std::vector<std::string>& args);
+// Runs a /bin/sh script; `ecoview` in it is the binary built with these tests.
+CommandResult run_shell(const std::string& script);
+// `s` quoted for /bin/sh.
+std::string shell_quote(const std::string& s);
 
 // The repository's root folder, and the shared test data beside it (which a user's clone lacks).
 std::filesystem::path source_dir();

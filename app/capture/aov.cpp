@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace ecoview {
@@ -38,9 +39,13 @@ std::vector<Aov> parse_aov_list(const std::string& list) {
   return aovs;
 }
 
-namespace {
+std::filesystem::path aov_file(const std::filesystem::path& out, Aov aov, int frame) {
+  char name[64];
+  std::snprintf(name, sizeof name, "%s_%05d.png", aov_name(aov).c_str(), frame);
+  return out / name;
+}
 
-Image8 heat_map(const Image<float>& aliasing) {
+Image8 aliasing_heat_map(const Image<float>& aliasing) {
   Image8 image{aliasing.width, aliasing.height, 3, {}};
   image.samples.reserve(aliasing.samples.size() * 3);
   for (float a : aliasing.samples) {
@@ -52,14 +57,12 @@ Image8 heat_map(const Image<float>& aliasing) {
   return image;
 }
 
-Image8 gray(const Image<float>& depth) {
+Image8 depth_gray(const Image<float>& depth) {
   Image8 image{depth.width, depth.height, 1, {}};
   image.samples.reserve(depth.samples.size());
   for (float d : depth.samples) image.samples.push_back(static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(d, 0.0f, 1.0f))));
   return image;
 }
-
-}  // namespace
 
 std::string encode_aov(Aov aov, Renderer& renderer, float far) {
   const FramePass& frame = renderer.frame();
@@ -76,8 +79,8 @@ std::string encode_aov(Aov aov, Renderer& renderer, float far) {
       }
       return encode_png(encoded);
     }
-    case Aov::aliasing: return encode_png(heat_map(frame.read_aliasing()));
-    case Aov::shadowmap: return encode_png(gray(renderer.shadow_map().read_layer(0)));
+    case Aov::aliasing: return encode_png(aliasing_heat_map(frame.read_aliasing()));
+    case Aov::shadowmap: return encode_png(depth_gray(renderer.shadow_map().read_layer(0)));
     case Aov::reference: return encode_png(renderer.exact_visibility());
   }
   return {};

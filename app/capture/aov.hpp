@@ -1,6 +1,7 @@
 #pragma once
 #include "app/render/renderer.hpp"
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -21,5 +22,12 @@ std::vector<Aov> parse_aov_list(const std::string& list);
 // from blue (a texel 1/8 of a pixel) through green (1 pixel) to red (8 pixels and more), black
 // where no surface was drawn or there is no shadow map.
 std::string encode_aov(Aov aov, Renderer& renderer, float far);
+// Where capture writes an AOV of a frame: DIR/<aov>_<frame, 5 digits>.png.
+std::filesystem::path aov_file(const std::filesystem::path& out, Aov aov, int frame);
+
+// The aliasing heat map as above, RGB.
+Image8 aliasing_heat_map(const Image<float>& aliasing);
+// Depths 0..1 as gray 0..255 (the shadowmap AOV).
+Image8 depth_gray(const Image<float>& depth);
 
 }  // namespace ecoview

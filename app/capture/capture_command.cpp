@@ -25,12 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path frame_file(const fs::path& out, Aov aov, int frame) {
-  char name[64];
-  std::snprintf(name, sizeof name, "%s_%05d.png", aov_name(aov).c_str(), frame);
-  return out / name;
-}
-
 FrameRange default_frames(const std::optional<CameraPath>& path, double fps) {
   if (!path) return {0, 1};
   const double frames = std::floor(path->duration() * fps + 1e-9) + 1.0;  // every t in [0, duration]
@@ -112,7 +106,7 @@ int run_capture(const CaptureOptions& o) {
   std::vector<int> todo;
   for (int frame = frames.begin; frame < frames.end; ++frame) {
     bool done = !o.force;
-    for (Aov aov : aovs) done = done && fs::exists(frame_file(out, aov, frame));
+    for (Aov aov : aovs) done = done && fs::exists(aov_file(out, aov, frame));
     if (!done) todo.push_back(frame);
   }
   const int total = frames.end - frames.begin;
@@ -134,7 +128,7 @@ int run_capture(const CaptureOptions& o) {
     glFinish();
     const double render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - render_start).count();
     for (Aov aov : aovs) {
-      write_file_atomically(frame_file(out, aov, frame), encode_aov(aov, renderer, camera.far));
+      write_file_atomically(aov_file(out, aov, frame), encode_aov(aov, renderer, camera.far));
     }
     if (!o.stats.empty()) stats.push_back(frame_stats(frame, t, render_ms, o.render, renderer));
     progress.step();

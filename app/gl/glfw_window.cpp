@@ -28,6 +28,9 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
   }
   glfwMakeContextCurrent(window_);
   glfwSwapInterval(0);
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetKeyCallback(window_, &GlfwWindow::on_key);
+  glfwSetScrollCallback(window_, &GlfwWindow::on_scroll);
   try {
     renderer_ = load_gl_functions(&glfw_proc, nullptr, "GLFW backend");
   } catch (...) {
@@ -44,9 +47,31 @@ GlfwWindow::~GlfwWindow() {
 
 bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_) != 0; }
 
+void GlfwWindow::close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+
 void GlfwWindow::swap_and_poll() {
   glfwSwapBuffers(window_);
+  keys_pressed_.clear();
+  scrolled_ = 0.0;
   glfwPollEvents();
+}
+
+void GlfwWindow::on_key(GLFWwindow* window, int key, int, int action, int) {
+  if (action == GLFW_PRESS) static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window))->keys_pressed_.push_back(key);
+}
+
+void GlfwWindow::on_scroll(GLFWwindow* window, double, double y) {
+  static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window))->scrolled_ += y;
+}
+
+bool GlfwWindow::key_down(int key) const { return glfwGetKey(window_, key) == GLFW_PRESS; }
+
+bool GlfwWindow::mouse_button_down(int button) const { return glfwGetMouseButton(window_, button) == GLFW_PRESS; }
+
+glm::dvec2 GlfwWindow::cursor() const {
+  glm::dvec2 position;
+  glfwGetCursorPos(window_, &position.x, &position.y);
+  return position;
 }
 
 glm::ivec2 GlfwWindow::framebuffer_size() const {

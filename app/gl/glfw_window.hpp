@@ -3,6 +3,8 @@
 
 #include <glm/glm.hpp>
 
+#include <vector>
+
 struct GLFWwindow;
 
 namespace ecoview {
@@ -18,12 +20,26 @@ class GlfwWindow final : public GlContext {
 
   std::string description() const override { return "GLFW window, " + renderer_; }
   bool should_close() const;
+  void close();
   void swap_and_poll();
   glm::ivec2 framebuffer_size() const;
+  GLFWwindow* handle() const { return window_; }
+
+  // Input since the last swap_and_poll: keys pressed (GLFW key codes, in order) and scrolling.
+  const std::vector<int>& keys_pressed() const { return keys_pressed_; }
+  double scrolled() const { return scrolled_; }
+  bool key_down(int key) const;
+  bool mouse_button_down(int button) const;
+  glm::dvec2 cursor() const;
 
  private:
+  static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
+  static void on_scroll(GLFWwindow* window, double x, double y);
+
   GLFWwindow* window_ = nullptr;
   std::string renderer_;
+  std::vector<int> keys_pressed_;
+  double scrolled_ = 0.0;
 };
 
 }  // namespace ecoview

@@ -116,20 +116,39 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       shadow_pass_(settings.shadow_size),
       frame_pass_(settings.width, settings.height, settings.aliasing),
       frame_points_({settings.width, settings.height}) {
-  // Made here, not with the first frame, so that frame times hold no shader compilation.
-  if (settings_.method == ShadowMethod::volumes) {
-    volume_pass_ = std::make_unique<ShadowVolumePass>(settings_.width, settings_.height, frame_pass_.depth_stencil_texture());
-  }
-  if (settings_.method == ShadowMethod::reference) {
-    reference_mask_ = std::make_unique<gl::Texture>(GL_TEXTURE_2D);
-    glTextureStorage2D(reference_mask_->name(), 1, GL_R8, settings_.width, settings_.height);
-  }
+  make_method_passes();
   if (settings.point_meshes_only) {
     for (std::size_t g = 0; g < tables_.size(); ++g) {
       if (!scene.point_meshes[tables_[g].mesh]) tables_[g] = {tables_[g].mesh, {}, {}, {}};
       gpu_scene_.update(g, tables_[g]);
     }
   }
+}
+
+// Made with the renderer, not with the first frame, so that frame times hold no shader compilation.
+void Renderer::make_method_passes() {
+  if (settings_.method == ShadowMethod::volumes && !volume_pass_) {
+    volume_pass_ = std::make_unique<ShadowVolumePass>(settings_.width, settings_.height, frame_pass_.depth_stencil_texture());
+  }
+  if (settings_.method == ShadowMethod::reference && !reference_mask_) {
+    reference_mask_ = std::make_unique<gl::Texture>(GL_TEXTURE_2D);
+    glTextureStorage2D(reference_mask_->name(), 1, GL_R8, settings_.width, settings_.height);
+  }
+}
+
+void Renderer::change(ShadowMethod method, int shadow_size, float k) {
+  RenderSettings wanted = settings_;
+  wanted.method = method;
+  wanted.shadow_size = shadow_size;
+  wanted.k = k;
+  wanted = within_limits(wanted);
+  if (wanted.shadow_size != settings_.shadow_size) {
+    shadow_pass_ = ShadowPass(wanted.shadow_size);
+    shadow_points_.reset();
+  }
+  if (wanted.method != settings_.method) nearest_visible_ = 0.0f;  // PSM and auto start again from a frame without shadows
+  settings_ = wanted;
+  make_method_passes();
 }
 
 Image<std::uint32_t> Renderer::count_points() { return frame_points_.count_points(view_projection_); }

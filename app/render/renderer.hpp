@@ -59,6 +59,9 @@ class Renderer {
   Renderer(const Scene& scene, const RenderSettings& settings);
   // The frame at time t (seconds): moving objects are posed for t first.
   void render(const shadow::Camera& camera, const shadow::Light& light, double t = 0.0);
+  // Live changes (ecoview view): shadow method, map size and points per pixel, from the next frame on.
+  void change(ShadowMethod method, int shadow_size, float k);
+  const RenderSettings& settings() const { return settings_; }
   const FramePass& frame() const { return frame_pass_; }
   const ShadowPass& shadow_map() const { return shadow_pass_; }
   // The shadow setup of the last frame drawn with shadows.
@@ -76,6 +79,8 @@ class Renderer {
 
  private:
   float aspect() const;
+  // What the method needs besides a shadow map: the volume pass, the reference's mask.
+  void make_method_passes();
   // Moves the moving objects to time t.
   void pose(double t);
   // Loads the GPU instance buffers of point meshes with the instances `selection` draws as polygons.

@@ -39,6 +39,17 @@ CameraPath CameraPath::load(const InputSource& source) {
   return CameraPath(std::move(keys));
 }
 
+std::string CameraPath::json() const {
+  auto array = [](const glm::vec3& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); };
+  nlohmann::ordered_json keys = nlohmann::ordered_json::array();
+  for (const Key& key : keys_) {
+    keys.push_back({{"t", key.t}, {"position", array(key.position)}, {"target", array(key.target)}, {"up", array(key.up)}});
+  }
+  std::string text = "[\n";
+  for (std::size_t i = 0; i < keys.size(); ++i) text += "  " + keys[i].dump() + (i + 1 < keys.size() ? ",\n" : "\n");
+  return text + "]\n";
+}
+
 shadow::Camera CameraPath::at(double t, const shadow::Camera& base) const {
   shadow::Camera camera = base;
   auto place_at = [&](const Key& key) {

@@ -2,6 +2,7 @@
 #include "app/scene/scene_file.hpp"
 #include "shadow/camera.hpp"
 
+#include <string>
 #include <vector>
 
 namespace ecoview {
@@ -19,6 +20,8 @@ class CameraPath {
   explicit CameraPath(std::vector<Key> keys) : keys_(std::move(keys)) {}
 
   double duration() const { return keys_.back().t; }
+  // The keys as load() reads them; floats are written so that they read back exactly.
+  std::string json() const;
   // The camera at time t: `base` (field of view, near, far) moved along the path.
   shadow::Camera at(double t, const shadow::Camera& base) const;
 

@@ -1,0 +1,72 @@
+#include "app/view/view_command.hpp"
+
+#include "app/cli/scene_info.hpp"
+#include "app/errors.hpp"
+#include "app/gl/glfw_window.hpp"
+#include "app/view/viewer.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+namespace ecoview {
+
+CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "view", "Fly through a scene in a window. WASD move, Q/E down/up, drag the mouse to look, wheel or +/- "
+              "change the speed, O orbits the point in view, R starts and stops recording a camera path, P writes "
+              "the frame as capture does, H hides the HUD, Esc quits");
+  cmd->add_option("--scene", o.scene, "Scene JSON file, or the name of a shipped scene");
+  add_render_options(*cmd, o.render);
+  cmd->add_option("--light", o.light, "Index of the scene light that shines and casts shadows")->capture_default_str();
+  cmd->add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes that would need more memory than this, in GiB")
+      ->capture_default_str();
+  cmd->add_option("--play", o.play, "Camera path (file or shipped name) to follow from t = 0; flight is free after "
+                                    "its last key");
+  cmd->add_option("--record", o.record, "File R writes the recorded camera path to (the path format capture --path "
+                                        "reads; written when recording stops or the window closes)")
+      ->capture_default_str();
+  cmd->add_option("--fps", o.fps, "Step time by 1/fps per frame, as capture does, instead of the clock "
+                                  "(a path then replays frame for frame as in capture)");
+  cmd->add_option("--exit-after", o.exit_after, "Close after this many frames (0: when the window is closed)");
+  cmd->add_option("--screenshot", o.screenshot, "After the last frame, write the window as shown (HUD included) "
+                                                "to this PNG file");
+  cmd->add_option("--out", o.out, "Folder P writes frames to, named as capture names them (color_<frame>.png)")
+      ->capture_default_str();
+  cmd->add_flag("--no-hud", o.no_hud, "Start with the HUD hidden (H shows it)");
+  return cmd;
+}
+
+int run_view(const ViewOptions& o) {
+  Viewer::Settings settings;
+  settings.render = render_settings(o.render);
+  if (o.exit_after < 0) throw InputError("--exit-after: must be 0 or more");
+  if (!o.screenshot.empty() && o.exit_after == 0) throw InputError("--screenshot: needs --exit-after N (the frame it shows)");
+  if (o.fps != 0.0) settings.fps = check_fps(o.fps);
+  if (!std::filesystem::is_directory(o.out)) throw InputError("--out: " + o.out + ": not a folder");
+  for (const std::string* file : {&o.record, &o.screenshot}) {
+    if (!file->empty() && !std::filesystem::is_directory(std::filesystem::absolute(*file).parent_path())) {
+      throw InputError((file == &o.record ? "--record: " : "--screenshot: ") + *file + ": its folder does not exist");
+    }
+  }
+  const auto load_start = std::chrono::steady_clock::now();
+  const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
+  settings.scene_line = describe_scene(scene, std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count());
+  std::cout << settings.scene_line << std::endl;
+  settings.light = select_light(scene, o.light);
+  if (!o.play.empty()) settings.play = CameraPath::load(open_input(o.play, "paths"));
+  settings.record_file = o.record;
+  settings.out = o.out;
+  settings.hud = !o.no_hud;
+
+  GlfwWindow window(settings.render.width, settings.render.height, "ecoview — " + scene.name);
+  Viewer viewer(scene, settings, window);
+  for (int frame = 0; !window.should_close() && (o.exit_after == 0 || frame < o.exit_after); ++frame) {
+    viewer.frame(o.exit_after != 0 && frame + 1 == o.exit_after && !o.screenshot.empty() ? o.screenshot : "");
+  }
+  viewer.finish();
+  std::cout << viewer.summary() << " on " << window.description() << std::endl;
+  return 0;
+}
+
+}  // namespace ecoview

@@ -1,0 +1,29 @@
+#pragma once
+#include "app/cli/options.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace ecoview {
+
+struct ViewOptions {
+  std::string scene;
+  RenderOptions render;
+  int light = 0;
+  int exit_after = 0;  // frames; 0 runs until the window is closed
+  double memory_budget_gib = 4.0;
+  std::string play;                 // camera path to follow from t = 0
+  std::string record = "path.json";  // where R writes the recorded path
+  double fps = 0.0;                  // 0: real time; otherwise frame i is at time i / fps, as in capture
+  std::string screenshot;            // the window as shown after the last frame
+  std::string out = ".";             // where P writes frames as capture does
+  bool no_hud = false;
+};
+
+// Registers `ecoview view` on `app`.
+CLI::App* add_view_command(CLI::App& app, ViewOptions& options);
+// Shows the scene in a window until it is closed (or --exit-after); returns the exit code.
+int run_view(const ViewOptions& options);
+
+}  // namespace ecoview

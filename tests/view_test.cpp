@@ -1,0 +1,210 @@
+// `ecoview view` as a user runs it, in a window on a virtual X display (Xvfb): a path played and
+// shown with the shadow the geometry casts, replayed frame for frame by capture; keys moving the
+// camera and recording a path; no display.
+#include "floating_box.hpp"
+#include "test_support.hpp"
+
+#include <glm/glm.hpp>
+#include <stb/stb_image.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+namespace ecoview::test {
+namespace {
+
+// An Xvfb server for the tests of this file; DISPLAY names it while it runs.
+class VirtualDisplay : public ::testing::Environment {
+ public:
+  void SetUp() override {
+    int fds[2];
+    ASSERT_EQ(::pipe(fds), 0);
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      ::close(fds[0]);
+      const int null = ::open("/dev/null", O_WRONLY);
+      ::dup2(null, 1);
+      ::dup2(null, 2);
+      const std::string fd = std::to_string(fds[1]);
+      ::execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x800x24", "-nolisten", "tcp", nullptr);
+      ::_exit(127);
+    }
+    ::close(fds[1]);
+    std::string number;
+    char c = 0;
+    while (::read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+    ::close(fds[0]);
+    ASSERT_FALSE(number.empty()) << "Xvfb did not start (scripts/setup.sh installs it)";
+    ::setenv("DISPLAY", (":" + number).c_str(), 1);
+  }
+  void TearDown() override {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGTERM);
+    ::waitpid(pid_, nullptr, 0);
+  }
+
+ private:
+  pid_t pid_ = -1;
+};
+const auto* const display = ::testing::AddGlobalTestEnvironment(new VirtualDisplay);
+
+struct Rgb {
+  int width = 0, height = 0;
+  std::vector<unsigned char> pixels;
+  float luminance(std::size_t i) const { return 0.2126f * pixels[3 * i] + 0.7152f * pixels[3 * i + 1] + 0.0722f * pixels[3 * i + 2]; }
+};
+
+Rgb load_rgb(const std::filesystem::path& png) {
+  Rgb image;
+  int channels = 0;
+  unsigned char* data = stbi_load(png.string().c_str(), &image.width, &image.height, &channels, 3);
+  if (data == nullptr) return image;
+  image.pixels.assign(data, data + static_cast<std::ptrdiff_t>(image.width) * image.height * 3);
+  stbi_image_free(data);
+  return image;
+}
+
+// A box over the plane, the camera above looking down at a slant, the light from the side.
+FloatingBox box_scene() {
+  FloatingBox s;
+  s.box_min = {-1.5f, 3.0f, -1.5f};
+  s.box_max = {1.5f, 5.0f, 1.5f};
+  s.light.type = shadow::LightType::directional;
+  s.light.direction = glm::normalize(glm::vec3(0.7f, -1.0f, 0.2f));
+  s.camera.position = {0.0f, 22.0f, 16.0f};
+  s.camera.target = {3.0f, 0.0f, 0.0f};
+  return s;
+}
+
+// Two keys a second apart, the last at the scene's camera.
+std::string path_to(const shadow::Camera& camera) {
+  char text[512];
+  std::snprintf(text, sizeof text,
+                R"([{"t": 0, "position": [%g, %g, %g], "target": [%g, %g, %g]}, {"t": 1, "position": [%g, %g, %g], "target": [%g, %g, %g]}])",
+                camera.position.x - 6.0, camera.position.y, camera.position.z, camera.target.x - 6.0, camera.target.y,
+                camera.target.z, camera.position.x, camera.position.y, camera.position.z, camera.target.x, camera.target.y,
+                camera.target.z);
+  return text;
+}
+
+// The path at 5 frames per second for `frames` frames, the last one's window into `shot`.
+std::vector<std::string> play_args(const TempDir& dir, const std::string& method, int frames, const std::string& shot) {
+  return {"view", "--scene", (dir / "box.json").string(), "--play", (dir / "path.json").string(), "--fps", "5", "--exit-after", std::to_string(frames),
+          "--size", "320x240", "--method", method, "--no-hud", "--screenshot", (dir / shot).string()};
+}
+
+TEST(View, PlaysAPathAndShowsTheShadowTheGeometryCasts) {
+  const TempDir dir;
+  const FloatingBox scene = box_scene();
+  write_text(dir / "box.json", scene.scene_json());
+  write_text(dir / "path.json", path_to(scene.camera));
+  // Frame 5 is at t = 1 s, the last key: the scene's camera.
+  CommandResult r = run_ecoview(play_args(dir, "uniform", 6, "shadowed.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("view: 6 frames"), std::string::npos) << r.out;
+  r = run_ecoview(play_args(dir, "none", 6, "unshadowed.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Rgb shadowed = load_rgb(dir / "shadowed.png"), unshadowed = load_rgb(dir / "unshadowed.png");
+  ASSERT_EQ(shadowed.width, 320);
+  ASSERT_EQ(shadowed.height, 240);
+  ASSERT_EQ(unshadowed.pixels.size(), shadowed.pixels.size());
+
+  // In shadow where the frame is darker than the same frame without shadows.
+  Image8 visibility{320, 240, 1, {}};
+  for (std::size_t i = 0; i < shadowed.pixels.size() / 3; ++i) {
+    visibility.samples.push_back(shadowed.luminance(i) < 0.9f * unshadowed.luminance(i) ? 0 : 255);
+  }
+  const TruthComparison c = compare_with_truth(scene, visibility, 2);
+  EXPECT_GE(c.shadowed, 500u) << "the shadow is not in view";
+  EXPECT_GE(c.lit_agreement(), 0.995);
+  EXPECT_GE(c.shadowed_agreement(), 0.99);
+}
+
+TEST(View, PathReplaysInCaptureFrameForFrame) {
+  const TempDir dir;
+  const FloatingBox scene = box_scene();
+  write_text(dir / "box.json", scene.scene_json());
+  write_text(dir / "path.json", path_to(scene.camera));
+  for (const char* method : {"uniform", "psm"}) {
+    // Frame 3, at t = 0.6 s: between the keys, where the spline interpolates.
+    const CommandResult v = run_ecoview(play_args(dir, method, 4, "view.png"));
+    ASSERT_EQ(v.exit_code, 0) << v.err;
+    const CommandResult c = run_ecoview({"capture", "--scene", (dir / "box.json").string(), "--path", (dir / "path.json").string(),
+                                         "--fps", "5", "--frames", "0:4", "--size", "320x240", "--method", method, "--force",
+                                         "--out", (dir / "capture").string()});
+    ASSERT_EQ(c.exit_code, 0) << c.err;
+    EXPECT_EQ(read_bytes(dir / "view.png"), read_bytes(dir / "capture" / "color_00003.png")) << method;
+  }
+}
+
+// The window's camera after the run, from the summary line.
+glm::vec3 final_position(const std::string& out) {
+  glm::vec3 p(NAN);
+  const auto at = out.find("camera at (");
+  if (at != std::string::npos) std::sscanf(out.c_str() + at, "camera at (%f, %f, %f)", &p.x, &p.y, &p.z);
+  return p;
+}
+
+// Keys typed into the window through the X server (xdotool): R starts recording, W held for a
+// second flies forward, R stops, Esc closes.
+TEST(View, KeysFlyTheCameraAndRecordAPath) {
+  const TempDir dir;
+  const FloatingBox scene = box_scene();
+  write_text(dir / "box.json", scene.scene_json());
+  const std::string path = (dir / "recorded.json").string();
+  const CommandResult r = run_shell(
+      "ecoview view --scene " + shell_quote((dir / "box.json").string()) + " --size 320x240 --no-hud --record " + shell_quote(path) +
+      " & pid=$!\n"
+      "window=$(timeout 60 xdotool search --sync --name '^ecoview') || { kill $pid; exit 3; }\n"
+      "xdotool windowfocus --sync $window && sleep 0.3\n"
+      "xdotool key r && sleep 0.3 && xdotool keydown w && sleep 1 && xdotool keyup w && sleep 0.3 && xdotool key r\n"
+      "sleep 0.3 && xdotool key Escape\n"
+      "wait $pid");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  // Forward along the view at the flight speed (a tenth of the far plane per second) for about a second.
+  const glm::vec3 moved = final_position(r.out) - scene.camera.position;
+  const float speed = 0.1f * scene.camera.far;
+  EXPECT_GT(glm::dot(glm::normalize(moved), scene.camera.forward()), 0.999f) << r.out;
+  EXPECT_GT(glm::length(moved), 0.7f * speed) << r.out;
+  EXPECT_LT(glm::length(moved), 2.0f * speed) << r.out;
+
+  // The recorded path starts at the scene's camera and ends where the window's camera stopped.
+  const CommandResult replay = run_ecoview({"view", "--scene", (dir / "box.json").string(), "--play", path, "--fps", "1",
+                                            "--exit-after", "5", "--size", "64x48"});
+  ASSERT_EQ(replay.exit_code, 0) << replay.err;
+  EXPECT_LT(glm::length(final_position(replay.out) - final_position(r.out)), 1e-3f) << replay.out;
+  const std::string keys = read_bytes(path);
+  EXPECT_NE(keys.find("\"t\":0.0"), std::string::npos) << "the recording does not start at t = 0";
+}
+
+TEST(View, WithoutADisplayPointsToCapture) {
+  const CommandResult r = run_shell("unset DISPLAY WAYLAND_DISPLAY; ecoview view --scene courtyard --exit-after 1");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("ecoview capture"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+TEST(View, BadOptionsAreNamed) {
+  const TempDir dir;
+  CommandResult r = run_ecoview({"view", "--scene", "courtyard", "--screenshot", (dir / "a.png").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--screenshot"), std::string::npos) << r.err;
+  r = run_ecoview({"view", "--scene", "courtyard", "--play", (dir / "missing.json").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("missing.json"), std::string::npos) << r.err;
+  write_text(dir / "bad.json", R"([{"t": 0, "position": [0, 1, 2], "target": [0, 1, 2]}])");
+  r = run_ecoview({"view", "--scene", "courtyard", "--play", (dir / "bad.json").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("bad.json"), std::string::npos) << r.err;
+  EXPECT_TRUE(files_in(dir.path()) == (std::vector<std::string>{"bad.json"}));
+}
+
+}  // namespace
+}  // namespace ecoview::test
