@@ -101,5 +101,26 @@ TEST(ParaboloidSeam, AShadowInTheBackParaboloidMatchesGeometry) {
   EXPECT_GE(c.shadowed, 300u);
 }
 
+// ecoview view changes the method and the map size of a running renderer: its next frames are
+// those of a renderer made with the new settings.
+TEST(RendererChange, FramesAfterAChangeAreThoseOfAFreshRenderer) {
+  const auto context = create_headless_context("egl");
+  pointgen::Random rng(77);
+  const FloatingBox s = random_floating_box(rng, shadow::LightType::directional);
+  const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
+  Renderer changed(scene, {320, 240, 1024, ShadowMethod::uniform});
+  changed.render(scene.camera, scene.lights[0]);
+  for (const auto& [method, size] : {std::pair{ShadowMethod::psm, 2048}, std::pair{ShadowMethod::volumes, 2048},
+                                     std::pair{ShadowMethod::cascades, 512}}) {
+    changed.change(method, size, 3.0f);
+    changed.render(scene.camera, scene.lights[0]);
+    Renderer fresh(scene, {320, 240, size, method, true, 3.0f});
+    fresh.render(scene.camera, scene.lights[0]);
+    EXPECT_EQ(changed.frame().read_color().samples, fresh.frame().read_color().samples) << shadow_method_name(method);
+    EXPECT_EQ(changed.shadow_setup().description, fresh.shadow_setup().description);
+    EXPECT_EQ(changed.settings().k, 3.0f);
+  }
+}
+
 }  // namespace
 }  // namespace ecoview::test

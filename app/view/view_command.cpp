@@ -34,6 +34,9 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
   cmd->add_option("--out", o.out, "Folder P writes frames to, named as capture names them (color_<frame>.png)")
       ->capture_default_str();
   cmd->add_flag("--no-hud", o.no_hud, "Start with the HUD hidden (H shows it)");
+  cmd->add_flag("--shadow-map-inset", o.shadow_map_inset, "Start with the HUD's inset of the shadow map (its first view) on");
+  cmd->add_flag("--aliasing-overlay", o.aliasing_overlay, "Start with the aliasing heat map over the frame (as the aliasing "
+                                                          "AOV: blue 1/8 texel per pixel, green 1, red 8 and more)");
   return cmd;
 }
 
@@ -58,6 +61,8 @@ int run_view(const ViewOptions& o) {
   settings.record_file = o.record;
   settings.out = o.out;
   settings.hud = !o.no_hud;
+  settings.shadow_map_inset = o.shadow_map_inset;
+  settings.aliasing_overlay = o.aliasing_overlay;
 
   GlfwWindow window(settings.render.width, settings.render.height, "ecoview — " + scene.name);
   Viewer viewer(scene, settings, window);

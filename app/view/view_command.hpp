@@ -19,6 +19,8 @@ struct ViewOptions {
   std::string screenshot;            // the window as shown after the last frame
   std::string out = ".";             // where P writes frames as capture does
   bool no_hud = false;
+  bool shadow_map_inset = false;
+  bool aliasing_overlay = false;
 };
 
 // Registers `ecoview view` on `app`.

@@ -35,6 +35,8 @@ Viewer::Viewer(const Scene& scene, Settings settings, GlfwWindow& window)
   controls_.shadow_size = settings_.render.shadow_size;
   controls_.k = settings_.render.k;
   controls_.light = settings_.light;
+  controls_.shadow_map_inset = settings_.shadow_map_inset;
+  controls_.aliasing_overlay = settings_.aliasing_overlay;
 }
 
 double Viewer::scene_time(Clock::time_point now) {

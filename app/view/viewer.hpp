@@ -25,6 +25,8 @@ class Viewer {
     std::string record_file;
     std::string out;  // folder of P's frames
     bool hud = true;
+    bool shadow_map_inset = false;
+    bool aliasing_overlay = false;
   };
   Viewer(const Scene& scene, Settings settings, GlfwWindow& window);
 
