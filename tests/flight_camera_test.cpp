@@ -34,6 +34,13 @@ TEST(FlightCamera, MotionDoesNotDependOnTheFrameRate) {
   for (int i = 0; i < 60; ++i) fast.update(input, 1.0 / 60.0);
   slow.update(input, 1.0);
   expect_near(fast.camera().position, slow.camera().position, 1e-3f);
+  // Zooming an orbit scales the distance by e^-t whatever the steps.
+  fast.orbit(20.0f);
+  slow.orbit(20.0f);
+  input.move = {0.0f, 0.0f, 1.0f};
+  for (int i = 0; i < 60; ++i) fast.update(input, 1.0 / 60.0);
+  slow.update(input, 1.0);
+  expect_near(fast.camera().position, slow.camera().position, 1e-3f);
   // Forward for a second goes speed metres along the view.
   FlightCamera forward(start_camera());
   forward.update({{0.0f, 0.0f, 1.0f}, {0.0f, 0.0f}}, 1.0);
@@ -57,17 +64,23 @@ TEST(FlightCamera, MouseTurnsAndPitchStopsShortOfVertical) {
 TEST(FlightCamera, OrbitKeepsThePointInViewAndItsDistance) {
   const shadow::Camera start = start_camera();
   FlightCamera camera(start);
-  camera.set_orbit(true);
+  const float distance = 0.5f * glm::length(start.target - start.position);
+  const glm::vec3 center = start.position + distance * start.forward();
+  camera.orbit(distance);
   camera.update({{1.0f, 0.0f, 0.0f}, {250.0f, 80.0f}}, 0.7);
   const shadow::Camera c = camera.camera();
-  const float distance = glm::length(start.target - start.position);
   EXPECT_NEAR(glm::length(c.target - c.position), distance, 1e-3f * distance);
-  expect_near(c.target, start.target, 1e-3f * distance);
+  expect_near(c.target, center, 1e-3f * distance);
   EXPECT_GT(glm::length(c.position - start.position), 1.0f);
   // Forward moves nearer, in proportion: e^-1 of the distance after a second.
   camera.update({{0.0f, 0.0f, 1.0f}, {}}, 1.0);
   EXPECT_NEAR(glm::length(camera.camera().target - camera.camera().position), distance * std::exp(-1.0f), 1e-3f * distance);
-  expect_near(camera.camera().target, start.target, 1e-3f * distance);
+  expect_near(camera.camera().target, center, 1e-3f * distance);
+  // Back to flight: the camera flies from where the orbit left it.
+  camera.fly();
+  const shadow::Camera before = camera.camera();
+  camera.update({{0.0f, 0.0f, 1.0f}, {}}, 1.0);
+  expect_near(camera.camera().position, before.position + camera.speed() * before.forward(), 1e-3f);
 }
 
 TEST(FlightCamera, SpeedStepsAndPlace) {

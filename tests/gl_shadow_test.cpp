@@ -110,8 +110,10 @@ TEST(RendererChange, FramesAfterAChangeAreThoseOfAFreshRenderer) {
   const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
   Renderer changed(scene, {320, 240, 1024, ShadowMethod::uniform});
   changed.render(scene.camera, scene.lights[0]);
-  for (const auto& [method, size] : {std::pair{ShadowMethod::psm, 2048}, std::pair{ShadowMethod::volumes, 2048},
-                                     std::pair{ShadowMethod::cascades, 512}}) {
+  // Method alone, size alone, both, and back to methods that keep state between frames.
+  for (const auto& [method, size] : {std::pair{ShadowMethod::psm, 1024}, std::pair{ShadowMethod::psm, 2048},
+                                     std::pair{ShadowMethod::volumes, 2048}, std::pair{ShadowMethod::cascades, 512},
+                                     std::pair{ShadowMethod::automatic, 512}, std::pair{ShadowMethod::lispsm, 512}}) {
     changed.change(method, size, 3.0f);
     changed.render(scene.camera, scene.lights[0]);
     Renderer fresh(scene, {320, 240, size, method, true, 3.0f});

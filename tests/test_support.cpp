@@ -54,7 +54,8 @@ CommandResult run_ecoview(const std::vector<std::string>& args) {
 
 CommandResult run_shell(const std::string& script) {
   const TempDir streams;
-  const std::string command = "ecoview() { " + shell_quote(ECOVIEW_BINARY) + " \"$@\"; }\n(" + script + ") >" +
+  const std::string command = "ecoview_binary=" + shell_quote(ECOVIEW_BINARY) + "\necoview() { \"$ecoview_binary\" \"$@\"; }\n(" +
+                              script + ") >" +
                               shell_quote((streams / "out").string()) + " 2>" + shell_quote((streams / "err").string());
   const int status = std::system(command.c_str());
   CommandResult result;

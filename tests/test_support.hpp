@@ -32,7 +32,8 @@ struct CommandResult {
 };
 // Runs the ecoview binary built with these tests.
 CommandResult run_ecoview(const std::vector<std::string>& args);
-// Runs a /bin/sh script; `ecoview` in it is the binary built with these tests.
+// Runs a /bin/sh script; `ecoview` in it runs the binary built with these tests, whose path is
+// $ecoview_binary.
 CommandResult run_shell(const std::string& script);
 // `s` quoted for /bin/sh.
 std::string shell_quote(const std::string& s);

@@ -151,37 +151,39 @@ glm::vec3 final_position(const std::string& out) {
   return p;
 }
 
-// Keys typed into the window through the X server (xdotool): R starts recording, W held for a
-// second flies forward, R stops, Esc closes.
+// Keys typed into the window through the X server (xdotool), once it shows its first frame: R
+// starts recording, W held for a second flies forward, R stops, Esc closes.
 TEST(View, KeysFlyTheCameraAndRecordAPath) {
   const TempDir dir;
   const FloatingBox scene = box_scene();
   write_text(dir / "box.json", scene.scene_json());
-  const std::string path = (dir / "recorded.json").string();
+  const std::string path = (dir / "recorded.json").string(), out = (dir / "out.txt").string();
   const CommandResult r = run_shell(
-      "ecoview view --scene " + shell_quote((dir / "box.json").string()) + " --size 320x240 --no-hud --record " + shell_quote(path) +
-      " & pid=$!\n"
-      "window=$(timeout 60 xdotool search --sync --name '^ecoview') || { kill $pid; exit 3; }\n"
+      "timeout 120 \"$ecoview_binary\" view --scene " + shell_quote((dir / "box.json").string()) + " --size 320x240 --no-hud --record " +
+      shell_quote(path) + " >" + shell_quote(out) + " & pid=$!\n"
+      "for i in $(seq 600); do grep -q 'first frame' " + shell_quote(out) + " && break; sleep 0.1; done\n"
+      "window=$(timeout 30 xdotool search --sync --name '^ecoview') || { kill $pid; exit 3; }\n"
       "xdotool windowfocus --sync $window && sleep 0.3\n"
       "xdotool key r && sleep 0.3 && xdotool keydown w && sleep 1 && xdotool keyup w && sleep 0.3 && xdotool key r\n"
       "sleep 0.3 && xdotool key Escape\n"
-      "wait $pid");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
+      "wait $pid; status=$?; cat " + shell_quote(out) + "; exit $status");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
 
   // Forward along the view at the flight speed (a tenth of the far plane per second) for about a second.
   const glm::vec3 moved = final_position(r.out) - scene.camera.position;
   const float speed = 0.1f * scene.camera.far;
-  EXPECT_GT(glm::dot(glm::normalize(moved), scene.camera.forward()), 0.999f) << r.out;
-  EXPECT_GT(glm::length(moved), 0.7f * speed) << r.out;
+  ASSERT_GT(glm::length(moved), 0.7f * speed) << r.out;
   EXPECT_LT(glm::length(moved), 2.0f * speed) << r.out;
+  EXPECT_GT(glm::dot(glm::normalize(moved), scene.camera.forward()), 0.999f) << r.out;
 
-  // The recorded path starts at the scene's camera and ends where the window's camera stopped.
+  // The recorded path starts at t = 0 and ends where the window's camera stopped; played in the
+  // viewer, it takes the camera there again.
+  const std::string keys = read_bytes(path);
+  EXPECT_EQ(keys.find("{\"t\":0.0,"), 4u) << keys.substr(0, 200);
   const CommandResult replay = run_ecoview({"view", "--scene", (dir / "box.json").string(), "--play", path, "--fps", "1",
                                             "--exit-after", "5", "--size", "64x48"});
   ASSERT_EQ(replay.exit_code, 0) << replay.err;
   EXPECT_LT(glm::length(final_position(replay.out) - final_position(r.out)), 1e-3f) << replay.out;
-  const std::string keys = read_bytes(path);
-  EXPECT_NE(keys.find("\"t\":0.0"), std::string::npos) << "the recording does not start at t = 0";
 }
 
 TEST(View, WithoutADisplayPointsToCapture) {
@@ -203,7 +205,6 @@ TEST(View, BadOptionsAreNamed) {
   r = run_ecoview({"view", "--scene", "courtyard", "--play", (dir / "bad.json").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("bad.json"), std::string::npos) << r.err;
-  EXPECT_TRUE(files_in(dir.path()) == (std::vector<std::string>{"bad.json"}));
 }
 
 }  // namespace

@@ -89,9 +89,7 @@ int run_capture(const CaptureOptions& o) {
   check_backend(o.backend);
   const bool frames_asked = !o.frames.empty();
   const FrameRange asked_frames = frames_asked ? parse_frames(o.frames) : FrameRange{};
-  if (!o.stats.empty() && !fs::is_directory(fs::absolute(o.stats).parent_path())) {
-    throw InputError("--stats: " + o.stats + ": its folder does not exist");
-  }
+  check_parent_folder("--stats", o.stats);
   const auto load_start = std::chrono::steady_clock::now();
   const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
   std::cout << describe_scene(scene, std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count())

@@ -96,6 +96,12 @@ const std::string& check_backend(const std::string& backend) {
   return backend;
 }
 
+void check_parent_folder(const std::string& option, const std::string& file) {
+  if (!file.empty() && !std::filesystem::is_directory(std::filesystem::absolute(file).parent_path())) {
+    throw InputError(option + ": " + file + ": its folder does not exist");
+  }
+}
+
 void make_out_folder(const std::string& out) {
   namespace fs = std::filesystem;
   std::error_code ec;

@@ -54,6 +54,9 @@ void add_benchmark_options(CLI::App& command, BenchmarkOptions& options, const s
 // Checks a --backend name (egl or osmesa) before any work is done.
 const std::string& check_backend(const std::string& backend);
 
+// Checks that the folder a file option (`--stats FILE`) names exists; an empty file passes.
+void check_parent_folder(const std::string& option, const std::string& file);
+
 // Makes the --out folder; throws InputError when it names a file or nothing, RuntimeFailure when
 // it cannot be made.
 void make_out_folder(const std::string& out);

@@ -43,6 +43,11 @@ struct TextureKind {
   static GLuint create(GLenum target) { GLuint n = 0; glCreateTextures(target, 1, &n); return n; }
   static void destroy(GLuint n) { glDeleteTextures(1, &n); }
 };
+// A texture name never bound, which glTextureView needs.
+struct TextureViewKind {
+  static GLuint create() { GLuint n = 0; glGenTextures(1, &n); return n; }
+  static void destroy(GLuint n) { glDeleteTextures(1, &n); }
+};
 struct FramebufferKind {
   static GLuint create() { GLuint n = 0; glCreateFramebuffers(1, &n); return n; }
   static void destroy(GLuint n) { glDeleteFramebuffers(1, &n); }
@@ -72,6 +77,7 @@ void store(const Buffer& buffer, const std::vector<T>& data, GLbitfield flags = 
 }
 using VertexArray = Object<VertexArrayKind>;
 using Texture = Object<TextureKind>;
+using TextureView = Object<TextureViewKind>;
 using Framebuffer = Object<FramebufferKind>;
 using Program = Object<ProgramKind>;
 using Shader = Object<ShaderKind>;

@@ -20,6 +20,7 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
   window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (window_ == nullptr) {
     glfwTerminate();
@@ -48,6 +49,8 @@ GlfwWindow::~GlfwWindow() {
 bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_) != 0; }
 
 void GlfwWindow::close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+
+void GlfwWindow::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 
 void GlfwWindow::swap_and_poll() {
   glfwSwapBuffers(window_);

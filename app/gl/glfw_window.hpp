@@ -9,7 +9,8 @@ struct GLFWwindow;
 
 namespace ecoview {
 
-// A window with an OpenGL 4.5 core context, for `ecoview view`.
+// A window with an OpenGL 4.5 core context, for `ecoview view`; not resizable, as the frame has a
+// fixed size (--size).
 class GlfwWindow final : public GlContext {
  public:
   // Throws RuntimeFailure (pointing to `ecoview capture`) when no display can be opened.
@@ -21,6 +22,7 @@ class GlfwWindow final : public GlContext {
   std::string description() const override { return "GLFW window, " + renderer_; }
   bool should_close() const;
   void close();
+  void set_title(const std::string& title);
   void swap_and_poll();
   glm::ivec2 framebuffer_size() const;
   GLFWwindow* handle() const { return window_; }

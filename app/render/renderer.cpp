@@ -1,5 +1,6 @@
 #include "app/render/renderer.hpp"
 
+#include "app/clock.hpp"
 #include "app/errors.hpp"
 #include "app/render/pixel_rays.hpp"
 #include "shadow/aliasing.hpp"
@@ -37,10 +38,6 @@ std::vector<glm::mat4> culling_frusta(const shadow::ShadowView& view) {
   return {view.view_projection()};
 }
 
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace
 
 std::string shadow_method_name(ShadowMethod method) {
@@ -59,13 +56,17 @@ std::string shadow_method_name(ShadowMethod method) {
   return "?";
 }
 
+const std::vector<ShadowMethod>& all_shadow_methods() {
+  static const std::vector<ShadowMethod> all = {ShadowMethod::uniform,  ShadowMethod::psm,     ShadowMethod::lispsm,
+                                                ShadowMethod::cascades, ShadowMethod::dpsm,    ShadowMethod::ipsm,
+                                                ShadowMethod::volumes,  ShadowMethod::reference, ShadowMethod::automatic,
+                                                ShadowMethod::none};
+  return all;
+}
+
 ShadowMethod parse_shadow_method(const std::string& name) {
-  const ShadowMethod all[] = {ShadowMethod::uniform, ShadowMethod::psm,     ShadowMethod::lispsm,
-                              ShadowMethod::cascades, ShadowMethod::dpsm,   ShadowMethod::ipsm,
-                              ShadowMethod::volumes, ShadowMethod::reference, ShadowMethod::automatic,
-                              ShadowMethod::none};
   std::string names;
-  for (ShadowMethod m : all) {
+  for (ShadowMethod m : all_shadow_methods()) {
     if (name == shadow_method_name(m)) return m;
     names += (names.empty() ? "" : ", ") + shadow_method_name(m);
   }

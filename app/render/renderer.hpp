@@ -11,12 +11,15 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace ecoview {
 
 // `automatic` is --method auto.
 enum class ShadowMethod { none, uniform, psm, lispsm, cascades, dpsm, ipsm, volumes, reference, automatic };
 
+// Every method, in the order --help and the viewer list them.
+const std::vector<ShadowMethod>& all_shadow_methods();
 // Parses a --method name; throws InputError listing the methods this build renders.
 ShadowMethod parse_shadow_method(const std::string& name);
 std::string shadow_method_name(ShadowMethod method);

@@ -31,7 +31,10 @@ glm::vec3 FlightCamera::forward() const {
   return {std::cos(pitch_) * std::sin(yaw_), std::sin(pitch_), -std::cos(pitch_) * std::cos(yaw_)};
 }
 
-void FlightCamera::set_orbit(bool on) { orbiting_ = on; }
+void FlightCamera::orbit(float distance) {
+  orbiting_ = true;
+  if (distance > 0.0f) orbit_distance_ = distance;
+}
 
 void FlightCamera::scale_speed(float steps) { speed_ = std::clamp(speed_ * std::pow(1.25f, steps), 0.01f, 1e5f); }
 
@@ -41,7 +44,7 @@ void FlightCamera::update(const FlightInput& input, double seconds) {
   yaw_ += radians_per_pixel * input.look.x;
   pitch_ = std::clamp(pitch_ - radians_per_pixel * input.look.y, -max_pitch, max_pitch);
   if (orbiting_) {
-    // Circling at the flight speed along the orbit; nearer and farther in proportion to the distance.
+    // Circling at the flight speed (on the orbit's horizontal circle at the camera's height).
     yaw_ -= input.move.x * speed_ * dt / orbit_distance_;
     orbit_distance_ = std::max(orbit_distance_ * std::exp(-input.move.z * dt), 0.1f);
     position_ = center - orbit_distance_ * forward() + glm::vec3(0.0f, input.move.y * speed_ * dt, 0.0f);

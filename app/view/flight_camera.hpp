@@ -16,10 +16,11 @@ class FlightCamera {
   explicit FlightCamera(const shadow::Camera& start);
 
   void update(const FlightInput& input, double seconds);
-  // Orbit: the mouse turns the camera around the point it looks at (at the distance of the
-  // scene camera's target when orbiting starts), forward and back move nearer and farther,
-  // right and left circle around it.
-  void set_orbit(bool on);
+  // Orbit around the point `distance` ahead (the surface in view): the mouse turns the camera
+  // around it, forward and back move nearer and farther in proportion to the distance, right and
+  // left circle around it, up and down move it and the camera up and down.
+  void orbit(float distance);
+  void fly() { orbiting_ = false; }
   bool orbiting() const { return orbiting_; }
   // Flight speed in metres per second, scaled by 1.25 per step.
   void scale_speed(float steps);
@@ -38,7 +39,7 @@ class FlightCamera {
   float yaw_ = 0.0f, pitch_ = 0.0f;  // radians; yaw 0 looks along -Z
   float speed_;
   bool orbiting_ = false;
-  float orbit_distance_;
+  float orbit_distance_;  // to the point the camera looks at: the scene camera's target, or the orbit's centre
 };
 
 }  // namespace ecoview

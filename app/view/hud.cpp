@@ -12,12 +12,10 @@
 namespace ecoview {
 namespace {
 
-const std::array<ShadowMethod, 10> methods = {ShadowMethod::uniform, ShadowMethod::psm,     ShadowMethod::lispsm,
-                                               ShadowMethod::cascades, ShadowMethod::dpsm,  ShadowMethod::ipsm,
-                                               ShadowMethod::volumes, ShadowMethod::reference, ShadowMethod::automatic,
-                                               ShadowMethod::none};
 const std::array<int, 4> shadow_sizes = {512, 1024, 2048, 4096};
 constexpr float inset_pixels = 256.0f;
+
+ImTextureID imgui_texture(GLuint texture) { return reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture)); }
 
 std::string millions(std::size_t n) {
   char text[32];
@@ -38,36 +36,25 @@ void edit_direction(glm::vec3& direction) {
   }
 }
 
-}  // namespace
-
-void Hud::ImageTexture::upload(const Image8& image, std::uint8_t alpha, bool black_clear) {
-  if (image.width != width || image.height != height) {
-    texture = gl::Texture(GL_TEXTURE_2D);
-    glTextureStorage2D(texture.name(), 1, GL_RGBA8, image.width, image.height);
-    glTextureParameteri(texture.name(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    width = image.width;
-    height = image.height;
-  }
+// The heat map as RGBA, transparent where it is black (no surface or no shadow map).
+std::vector<std::uint8_t> translucent(const Image8& heat_map, std::uint8_t alpha) {
   std::vector<std::uint8_t> rgba;
-  rgba.reserve(static_cast<std::size_t>(width) * height * 4);
-  for (std::size_t p = 0; p < static_cast<std::size_t>(width) * height; ++p) {
-    bool black = true;
-    for (int c = 0; c < 3; ++c) {
-      const std::uint8_t v = image.samples[p * image.channels + (image.channels == 1 ? 0 : c)];
-      black = black && v == 0;
-      rgba.push_back(v);
-    }
-    rgba.push_back(black && black_clear ? 0 : alpha);
+  rgba.reserve(heat_map.samples.size() / 3 * 4);
+  for (std::size_t p = 0; p < heat_map.samples.size(); p += 3) {
+    const std::uint8_t r = heat_map.samples[p], g = heat_map.samples[p + 1], b = heat_map.samples[p + 2];
+    rgba.insert(rgba.end(), {r, g, b, r == 0 && g == 0 && b == 0 ? std::uint8_t{0} : alpha});
   }
-  glTextureSubImage2D(texture.name(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  return rgba;
 }
 
-Hud::Hud(const GlfwWindow& window) {
+}  // namespace
+
+Hud::Hud(GlfwWindow& window) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the user's folder
   ImGui::StyleColorsDark();
-  ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);  // chains to the window's own callbacks
+  ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
   ImGui_ImplOpenGL3_Init("#version 450 core");
 }
 
@@ -84,12 +71,11 @@ void Hud::draw(const ViewStatus& status, const Renderer& renderer, ViewControls&
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
-  if (controls.aliasing_overlay) draw_aliasing_overlay(renderer);
+  const bool has_map = renderer.settings().method != ShadowMethod::none &&
+                       renderer.shadow_setup().selection != shadow::ViewSelection::screen_mask;
+  if (controls.aliasing_overlay && has_map) draw_aliasing_overlay(renderer);
   draw_panel(status, renderer, controls);
-  if (controls.shadow_map_inset && renderer.settings().method != ShadowMethod::none &&
-      renderer.shadow_setup().selection != shadow::ViewSelection::screen_mask) {
-    draw_shadow_map_inset(renderer);
-  }
+  if (controls.shadow_map_inset && has_map) draw_shadow_map_inset(renderer);
   ImGui::Render();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -111,7 +97,7 @@ void Hud::draw_panel(const ViewStatus& status, const Renderer& renderer, ViewCon
   ImGui::Separator();
 
   if (ImGui::BeginCombo("method", shadow_method_name(controls.method).c_str())) {
-    for (ShadowMethod m : methods) {
+    for (ShadowMethod m : all_shadow_methods()) {
       if (ImGui::Selectable(shadow_method_name(m).c_str(), m == controls.method)) controls.method = m;
     }
     ImGui::EndCombo();
@@ -128,26 +114,44 @@ void Hud::draw_panel(const ViewStatus& status, const Renderer& renderer, ViewCon
   ImGui::Checkbox("shadow map inset", &controls.shadow_map_inset);
   ImGui::SameLine();
   ImGui::Checkbox("aliasing overlay", &controls.aliasing_overlay);
-  ImGui::TextDisabled("%s", renderer.shadow_setup().description.c_str());
+  if (renderer.settings().method != ShadowMethod::none) ImGui::TextDisabled("%s", renderer.shadow_setup().description.c_str());
   ImGui::Separator();
   ImGui::TextDisabled("WASD move, Q/E down/up, drag to look, wheel or +/- speed, O orbit,");
-  ImGui::TextDisabled("R record path, P screenshot, H hide this, Esc quit");
+  ImGui::TextDisabled("R record path, P write frame, H hide this, Esc quit");
   ImGui::End();
 }
 
+// A view of the map's first layer, read as plain depth (no comparison) shown in gray: no copy.
+// Made again each frame, as the pass makes a new map when a setup needs more layers.
 void Hud::draw_shadow_map_inset(const Renderer& renderer) {
-  inset_.upload(depth_gray(renderer.shadow_map().read_layer(0)), 255, false);
+  shadow_map_layer_ = gl::TextureView();
+  const GLuint view = shadow_map_layer_.name();
+  glTextureView(view, GL_TEXTURE_2D, renderer.shadow_map().depth_texture(), GL_DEPTH_COMPONENT32F, 0, 1, 0, 1);
+  glTextureParameteri(view, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  glTextureParameteri(view, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(view, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  const GLint gray[4] = {GL_RED, GL_RED, GL_RED, GL_ONE};
+  glTextureParameteriv(view, GL_TEXTURE_SWIZZLE_RGBA, gray);
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x - inset_pixels - 24.0f, 8.0f), ImGuiCond_FirstUseEver);
   ImGui::Begin("shadow map (first view)", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(inset_.texture.name())), ImVec2(inset_pixels, inset_pixels));
+  // GL's rows go up from the bottom: the map's top row at the top.
+  ImGui::Image(imgui_texture(view), ImVec2(inset_pixels, inset_pixels), ImVec2(0, 1), ImVec2(1, 0));
   ImGui::End();
 }
 
 void Hud::draw_aliasing_overlay(const Renderer& renderer) {
-  overlay_.upload(aliasing_heat_map(renderer.frame().read_aliasing()), 160, true);
-  ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(overlay_.texture.name())),
-                                           ImVec2(0, 0), ImGui::GetIO().DisplaySize);
+  const Image8 heat = aliasing_heat_map(renderer.frame().read_aliasing());
+  if (overlay_size_ != glm::ivec2(heat.width, heat.height)) {
+    overlay_ = gl::Texture(GL_TEXTURE_2D);
+    glTextureStorage2D(overlay_.name(), 1, GL_RGBA8, heat.width, heat.height);
+    glTextureParameteri(overlay_.name(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    overlay_size_ = {heat.width, heat.height};
+  }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(overlay_.name(), 0, 0, 0, heat.width, heat.height, GL_RGBA, GL_UNSIGNED_BYTE, translucent(heat, 160).data());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  ImGui::GetBackgroundDrawList()->AddImage(imgui_texture(overlay_.name()), ImVec2(0, 0), ImGui::GetIO().DisplaySize);
 }
 
 }  // namespace ecoview

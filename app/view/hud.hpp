@@ -10,12 +10,12 @@ namespace ecoview {
 
 // What the HUD lets the user change while the viewer runs.
 struct ViewControls {
-  ShadowMethod method = ShadowMethod::uniform;
-  int shadow_size = 2048;
-  float k = 1.5f;
+  ShadowMethod method;
+  int shadow_size;
+  float k;
   shadow::Light light;
-  bool shadow_map_inset = false;
-  bool aliasing_overlay = false;
+  bool shadow_map_inset;
+  bool aliasing_overlay;
 };
 
 // What the HUD shows besides the renderer's own figures.
@@ -25,22 +25,23 @@ struct ViewStatus {
   glm::vec3 position{0.0f};   // the camera's
   float speed = 0.0f;         // flight speed, m/s
   bool orbiting = false;
-  std::string activity;       // recording, playing, the last screenshot written
+  std::string activity;       // recording, playing, the last file written, an error
 };
 
 // The heads-up display of ecoview view (Dear ImGui): figures of the last frame, the live controls,
 // an inset of the shadow map and the aliasing heat map over the frame.
 class Hud {
  public:
-  explicit Hud(const GlfwWindow& window);
+  // Installs ImGui's input callbacks on the window, chained to the window's own.
+  explicit Hud(GlfwWindow& window);
   ~Hud();
   Hud(const Hud&) = delete;
   Hud& operator=(const Hud&) = delete;
 
-  // Whether the last frame's panel took the keyboard or the mouse (typing, dragging a slider).
+  // Whether the last frame's panel took the keyboard or the mouse (a field or a slider in use).
   bool wants_keyboard() const;
   bool wants_mouse() const;
-  // Draws the panel over the window's default framebuffer; the user's edits go into `controls`.
+  // Draws the panel into the window's framebuffer; the user's edits go into `controls`.
   void draw(const ViewStatus& status, const Renderer& renderer, ViewControls& controls);
 
  private:
@@ -48,14 +49,9 @@ class Hud {
   void draw_shadow_map_inset(const Renderer& renderer);
   void draw_aliasing_overlay(const Renderer& renderer);
 
-  // An RGBA texture for ImGui, made again when the image size changes.
-  struct ImageTexture {
-    gl::Texture texture{GL_TEXTURE_2D};
-    int width = 0, height = 0;
-    // `alpha` for every pixel but black ones, which become transparent when `black_clear`.
-    void upload(const Image8& image, std::uint8_t alpha, bool black_clear);
-  };
-  ImageTexture inset_, overlay_;
+  gl::TextureView shadow_map_layer_;  // the map's first layer as a plain gray texture
+  gl::Texture overlay_{GL_TEXTURE_2D};  // the aliasing heat map, RGBA
+  glm::ivec2 overlay_size_{0};
 };
 
 }  // namespace ecoview

@@ -1,11 +1,11 @@
 #include "app/view/view_command.hpp"
 
 #include "app/cli/scene_info.hpp"
+#include "app/clock.hpp"
 #include "app/errors.hpp"
 #include "app/gl/glfw_window.hpp"
 #include "app/view/viewer.hpp"
 
-#include <chrono>
 #include <filesystem>
 #include <iostream>
 
@@ -47,16 +47,8 @@ int run_view(const ViewOptions& o) {
   if (!o.screenshot.empty() && o.exit_after == 0) throw InputError("--screenshot: needs --exit-after N (the frame it shows)");
   if (o.fps != 0.0) settings.fps = check_fps(o.fps);
   if (!std::filesystem::is_directory(o.out)) throw InputError("--out: " + o.out + ": not a folder");
-  for (const std::string* file : {&o.record, &o.screenshot}) {
-    if (!file->empty() && !std::filesystem::is_directory(std::filesystem::absolute(*file).parent_path())) {
-      throw InputError((file == &o.record ? "--record: " : "--screenshot: ") + *file + ": its folder does not exist");
-    }
-  }
-  const auto load_start = std::chrono::steady_clock::now();
-  const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
-  settings.scene_line = describe_scene(scene, std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count());
-  std::cout << settings.scene_line << std::endl;
-  settings.light = select_light(scene, o.light);
+  check_parent_folder("--record", o.record);
+  check_parent_folder("--screenshot", o.screenshot);
   if (!o.play.empty()) settings.play = CameraPath::load(open_input(o.play, "paths"));
   settings.record_file = o.record;
   settings.out = o.out;
@@ -64,10 +56,27 @@ int run_view(const ViewOptions& o) {
   settings.shadow_map_inset = o.shadow_map_inset;
   settings.aliasing_overlay = o.aliasing_overlay;
 
-  GlfwWindow window(settings.render.width, settings.render.height, "ecoview — " + scene.name);
+  // The window first: without a display, say so before loading a large scene.
+  GlfwWindow window(settings.render.width, settings.render.height, "ecoview");
+  const auto load_start = Clock::now();
+  const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
+  settings.scene_line = describe_scene(scene, ms_since(load_start) / 1000.0);
+  std::cout << settings.scene_line << std::endl;
+  settings.light = select_light(scene, o.light);
+  window.set_title("ecoview — " + scene.name);
+
   Viewer viewer(scene, settings, window);
-  for (int frame = 0; !window.should_close() && (o.exit_after == 0 || frame < o.exit_after); ++frame) {
-    viewer.frame(o.exit_after != 0 && frame + 1 == o.exit_after && !o.screenshot.empty() ? o.screenshot : "");
+  try {
+    for (int frame = 0; !window.should_close() && (o.exit_after == 0 || frame < o.exit_after); ++frame) {
+      viewer.frame(frame + 1 == o.exit_after ? o.screenshot : "");
+      if (frame == 0) {
+        std::cout << "view: first frame after " << static_cast<int>(ms_since(load_start) / 100.0) / 10.0
+                  << " s; WASD and Q/E fly, drag to look, O orbits, R records, P writes the frame, Esc quits" << std::endl;
+      }
+    }
+  } catch (...) {
+    viewer.finish();  // a path being recorded is kept
+    throw;
   }
   viewer.finish();
   std::cout << viewer.summary() << " on " << window.description() << std::endl;

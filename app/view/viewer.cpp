@@ -1,5 +1,6 @@
 #include "app/view/viewer.hpp"
 
+#include "app/bench/frame_timing.hpp"
 #include "app/capture/aov.hpp"
 #include "app/capture/png.hpp"
 #include "app/errors.hpp"
@@ -11,13 +12,6 @@
 #include <cstdio>
 
 namespace ecoview {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
-
-}  // namespace
 
 Viewer::Viewer(const Scene& scene, Settings settings, GlfwWindow& window)
     : scene_(scene),
@@ -25,73 +19,71 @@ Viewer::Viewer(const Scene& scene, Settings settings, GlfwWindow& window)
       window_(window),
       renderer_(scene, settings_.render),
       hud_(window),
+      controls_{settings_.render.method, settings_.render.shadow_size, settings_.render.k, settings_.light,
+                settings_.shadow_map_inset, settings_.aliasing_overlay},
       flight_(scene.camera),
       camera_(scene.camera),
       following_path_(settings_.play.has_value()),
       hud_shown_(settings_.hud),
       origin_(Clock::now()),
-      last_cursor_(window.cursor()) {
-  controls_.method = settings_.render.method;
-  controls_.shadow_size = settings_.render.shadow_size;
-  controls_.k = settings_.render.k;
-  controls_.light = settings_.light;
-  controls_.shadow_map_inset = settings_.shadow_map_inset;
-  controls_.aliasing_overlay = settings_.aliasing_overlay;
-}
+      last_frame_start_(origin_),
+      last_cursor_(window.cursor()) {}
 
-double Viewer::scene_time(Clock::time_point now) {
-  if (restart_time_) {
-    origin_ = now;
-    origin_frame_ = frame_;
-    restart_time_ = false;
-  }
+double Viewer::scene_time(Clock::time_point now) const {
   if (settings_.fps > 0.0) return (frame_ - origin_frame_) / settings_.fps;
   return std::chrono::duration<double>(now - origin_).count();
 }
 
 void Viewer::frame(const std::string& screenshot) {
   const auto start = Clock::now();
+  const double seconds = std::chrono::duration<double>(start - last_frame_start_).count();
+  last_frame_start_ = start;
   handle_keys();
   apply_controls();
-  const double t = scene_time(Clock::now());
-  camera_ = place_camera(t, std::max(t - last_time_, 0.0));
-  last_time_ = t;
+  if (restart_time_) {  // recording starts at t = 0
+    origin_ = start;
+    origin_frame_ = frame_;
+    restart_time_ = false;
+  }
+  const double t = scene_time(start);
+  camera_ = place_camera(t, seconds);
   if (recording_ && (recorded_.empty() || t > recorded_.back().t)) recorded_.push_back({t, camera_.position, camera_.target, camera_.up});
 
   renderer_.render(camera_, controls_.light, t);
   const glm::ivec2 size = window_.framebuffer_size();
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, size.x, size.y);
   renderer_.frame().present(size.x, size.y);
-  if (hud_shown_) {
-    ViewStatus status{frame_ms_.empty() ? 0.0 : frame_ms_.back(), settings_.scene_line, camera_.position, flight_.speed(),
-                      flight_.orbiting(), activity_};
-    if (recording_) status.activity = "recording " + settings_.record_file + " (R stops)";
-    if (following_path_) status.activity = "playing the camera path";
-    hud_.draw(status, renderer_, controls_);
-  }
+  if (write_frame_) write_capture_frame();
+  if (hud_shown_) hud_.draw(status(), renderer_, controls_);
   if (!screenshot.empty()) write_window(screenshot);
   window_.swap_and_poll();
   frame_ms_.push_back(ms_since(start));
   ++frame_;
 }
 
-// Keys pressed since the last frame; ignored while the HUD is typing into a field.
+ViewStatus Viewer::status() const {
+  ViewStatus s{frame_ms_.empty() ? 0.0 : frame_ms_.back(), settings_.scene_line, camera_.position, flight_.speed(),
+               flight_.orbiting(), activity_};
+  if (recording_) s.activity = "recording " + settings_.record_file + " (R stops)";
+  if (following_path_) s.activity = "playing the camera path" + (activity_.empty() ? "" : "; " + activity_);
+  return s;
+}
+
+// Keys pressed since the last frame; none while the HUD has the keyboard (a field or slider in use).
 void Viewer::handle_keys() {
+  if (!(hud_shown_ && hud_.wants_mouse())) flight_.scale_speed(static_cast<float>(window_.scrolled()));
   if (hud_shown_ && hud_.wants_keyboard()) return;
   for (int key : window_.keys_pressed()) {
     switch (key) {
       case GLFW_KEY_ESCAPE: window_.close(); break;
       case GLFW_KEY_H: hud_shown_ = !hud_shown_; break;
-      case GLFW_KEY_O: flight_.set_orbit(!flight_.orbiting()); break;
+      case GLFW_KEY_O: toggle_orbit(); break;
       case GLFW_KEY_R: toggle_recording(); break;
-      case GLFW_KEY_P: write_capture_frame(); break;
+      case GLFW_KEY_P: write_frame_ = true; break;
       case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: flight_.scale_speed(1.0f); break;
       case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: flight_.scale_speed(-1.0f); break;
       default: break;
     }
   }
-  flight_.scale_speed(static_cast<float>(window_.scrolled()));
 }
 
 FlightInput Viewer::flight_input() {
@@ -113,10 +105,23 @@ shadow::Camera Viewer::place_camera(double t, double seconds) {
     const shadow::Camera on_path = settings_.play->at(t, scene_.camera);
     if (t <= settings_.play->duration()) return on_path;
     following_path_ = false;
+    activity_.clear();
     flight_.place(on_path);
   }
   flight_.update(input, seconds);
   return flight_.camera();
+}
+
+// Orbits around the surface in the middle of the last frame (or the point the camera looks at,
+// where the middle shows sky).
+void Viewer::toggle_orbit() {
+  if (flight_.orbiting()) {
+    flight_.fly();
+    return;
+  }
+  const Image<float> depth = renderer_.frame().read_depth();
+  const float centre = depth.at(depth.width / 2, depth.height / 2);
+  flight_.orbit(centre);
 }
 
 // Recording starts the scene's time at 0, so that capture --path replays moving objects with it.
@@ -129,7 +134,6 @@ void Viewer::toggle_recording() {
     recording_ = true;
     recorded_.clear();
     restart_time_ = true;
-    last_time_ = 0.0;
     return;
   }
   finish();
@@ -143,10 +147,16 @@ void Viewer::finish() {
   activity_ = "wrote " + std::to_string(recorded_.size()) + " keys to " + settings_.record_file;
 }
 
+// P: the frame as capture writes its color AOV, named by this frame's number.
 void Viewer::write_capture_frame() {
+  write_frame_ = false;
   const std::filesystem::path file = aov_file(settings_.out, Aov::color, frame_);
-  write_file_atomically(file, encode_aov(Aov::color, renderer_, camera_.far));
-  activity_ = "wrote " + file.string();
+  try {
+    write_file_atomically(file, encode_aov(Aov::color, renderer_, camera_.far));
+    activity_ = "wrote " + file.string();
+  } catch (const RuntimeFailure& e) {
+    activity_ = e.what();
+  }
 }
 
 void Viewer::write_window(const std::string& file) const {
@@ -156,11 +166,10 @@ void Viewer::write_window(const std::string& file) const {
   glReadBuffer(GL_BACK);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, size.x, size.y, GL_RGB, GL_UNSIGNED_BYTE, bottom_up.data());
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
   write_file_atomically(file, encode_png(from_bottom_up(size.x, size.y, 3, bottom_up)));
 }
 
-// The HUD's edits reach the renderer from the next frame on.
+// The HUD's edits reach the renderer from this frame on.
 void Viewer::apply_controls() {
   const RenderSettings& now = renderer_.settings();
   if (controls_.method != now.method || controls_.shadow_size != now.shadow_size || controls_.k != now.k) {
@@ -175,13 +184,11 @@ void Viewer::apply_controls() {
 }
 
 std::string Viewer::summary() const {
-  // The first frame holds the warm-up (shader compilation by the driver, the PSM's first depth).
-  std::vector<double> times(frame_ms_.size() > 1 ? frame_ms_.begin() + 1 : frame_ms_.begin(), frame_ms_.end());
-  std::sort(times.begin(), times.end());
-  const double median = times.empty() ? 0.0 : times[times.size() / 2];
+  // The first frame holds the warm-up (the driver's shader compilation, the PSM's first depth).
+  const double median_ms = median(std::vector<double>(frame_ms_.begin() + (frame_ms_.size() > 1 ? 1 : 0), frame_ms_.end()));
   char text[256];
   std::snprintf(text, sizeof text, "view: %d frames, median %.1f ms (%.1f fps); camera at (%.3f, %.3f, %.3f) looking at (%.3f, %.3f, %.3f)",
-                frame_, median, median > 0.0 ? 1000.0 / median : 0.0, camera_.position.x, camera_.position.y,
+                frame_, median_ms, median_ms > 0.0 ? 1000.0 / median_ms : 0.0, camera_.position.x, camera_.position.y,
                 camera_.position.z, camera_.target.x, camera_.target.y, camera_.target.z);
   return text;
 }

@@ -1,11 +1,11 @@
 #pragma once
+#include "app/clock.hpp"
 #include "app/gl/glfw_window.hpp"
 #include "app/render/renderer.hpp"
 #include "app/scene/camera_path.hpp"
 #include "app/view/flight_camera.hpp"
 #include "app/view/hud.hpp"
 
-#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,14 +13,14 @@
 namespace ecoview {
 
 // The frame loop of ecoview view: input, camera (flight, orbit or a path playing), the renderer,
-// the HUD, path recording and screenshots.
+// the HUD, path recording and written frames.
 class Viewer {
  public:
   struct Settings {
     RenderSettings render;
-    double fps = 0.0;  // 0: the clock's time; otherwise frame i is at time i / fps
-    std::string scene_line;
     shadow::Light light;
+    double fps = 0.0;  // 0: scene time is the clock's; otherwise frame i is at time i / fps
+    std::string scene_line;
     std::optional<CameraPath> play;
     std::string record_file;
     std::string out;  // folder of P's frames
@@ -32,21 +32,23 @@ class Viewer {
 
   // One frame, from input to swap; with `screenshot`, the window as shown goes to that file.
   void frame(const std::string& screenshot = "");
-  // Writes a path still being recorded.
+  // Writes the path being recorded, if any.
   void finish();
   // Frames shown, their median time, and where the camera is.
   std::string summary() const;
 
  private:
-  // Scene time at `now`: seconds since the start (or since recording started), or frames / fps.
-  double scene_time(std::chrono::steady_clock::time_point now);
+  // Scene time: seconds since the start (or since recording started), or frames / fps.
+  double scene_time(Clock::time_point now) const;
   void handle_keys();
   FlightInput flight_input();
   shadow::Camera place_camera(double t, double seconds);
+  void toggle_orbit();
   void toggle_recording();
   void write_capture_frame();
   void write_window(const std::string& file) const;
   void apply_controls();
+  ViewStatus status() const;
 
   const Scene& scene_;
   Settings settings_;
@@ -59,13 +61,15 @@ class Viewer {
   bool following_path_;
   bool hud_shown_;
   int frame_ = 0;
+  // Scene time starts at origin_ (origin_frame_ with --fps); recording moves it to its first frame.
+  Clock::time_point origin_;
   int origin_frame_ = 0;
-  std::chrono::steady_clock::time_point origin_;
-  bool restart_time_ = false;  // at the next frame, which is then at t = 0
-  double last_time_ = 0.0;
+  bool restart_time_ = false;
+  Clock::time_point last_frame_start_;  // flight moves by the clock's time, whatever --fps says
   glm::dvec2 last_cursor_{0.0};
   bool recording_ = false;
   std::vector<CameraPath::Key> recorded_;
+  bool write_frame_ = false;  // P: write this frame once it is drawn
   std::vector<double> frame_ms_;
   std::string activity_;
 };
