@@ -151,22 +151,37 @@ glm::vec3 final_position(const std::string& out) {
   return p;
 }
 
+// Runs the viewer on the box scene at 320x240 with `options`, and once it shows its first frame,
+// the xdotool commands of `keys` (one per line, in its window); returns the viewer's output.
+CommandResult view_with_keys(const TempDir& dir, const std::string& options, const std::string& keys) {
+  write_text(dir / "box.json", box_scene().scene_json());
+  const std::string out = (dir / "out.txt").string();
+  return run_shell("timeout 120 \"$ecoview_binary\" view --scene " + shell_quote((dir / "box.json").string()) +
+                   " --size 320x240 --no-hud " + options + " >" + shell_quote(out) + " & pid=$!\n"
+                   "for i in $(seq 600); do grep -q 'first frame' " + shell_quote(out) + " && break; sleep 0.1; done\n"
+                   "window=$(timeout 30 xdotool search --sync --name '^ecoview') || { kill $pid; exit 3; }\n"
+                   "xdotool windowfocus --sync $window && sleep 0.3\n" + keys +
+                   "\nsleep 0.3 && xdotool key Escape\n"
+                   "wait $pid; status=$?; cat " + shell_quote(out) + "; exit $status");
+}
+
+// The camera's target after the run, from the summary line.
+glm::vec3 final_target(const std::string& out) {
+  glm::vec3 p(NAN);
+  const auto at = out.find("looking at (");
+  if (at != std::string::npos) std::sscanf(out.c_str() + at, "looking at (%f, %f, %f)", &p.x, &p.y, &p.z);
+  return p;
+}
+
 // Keys typed into the window through the X server (xdotool), once it shows its first frame: R
 // starts recording, W held for a second flies forward, R stops, Esc closes.
 TEST(View, KeysFlyTheCameraAndRecordAPath) {
   const TempDir dir;
   const FloatingBox scene = box_scene();
-  write_text(dir / "box.json", scene.scene_json());
-  const std::string path = (dir / "recorded.json").string(), out = (dir / "out.txt").string();
-  const CommandResult r = run_shell(
-      "timeout 120 \"$ecoview_binary\" view --scene " + shell_quote((dir / "box.json").string()) + " --size 320x240 --no-hud --record " +
-      shell_quote(path) + " >" + shell_quote(out) + " & pid=$!\n"
-      "for i in $(seq 600); do grep -q 'first frame' " + shell_quote(out) + " && break; sleep 0.1; done\n"
-      "window=$(timeout 30 xdotool search --sync --name '^ecoview') || { kill $pid; exit 3; }\n"
-      "xdotool windowfocus --sync $window && sleep 0.3\n"
-      "xdotool key r && sleep 0.3 && xdotool keydown w && sleep 1 && xdotool keyup w && sleep 0.3 && xdotool key r\n"
-      "sleep 0.3 && xdotool key Escape\n"
-      "wait $pid; status=$?; cat " + shell_quote(out) + "; exit $status");
+  const std::string path = (dir / "recorded.json").string();
+  const CommandResult r = view_with_keys(dir, "--record " + shell_quote(path),
+                                         "xdotool key r && sleep 0.3 && xdotool keydown w && sleep 1 && xdotool keyup w && "
+                                         "sleep 0.3 && xdotool key r");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
 
   // Forward along the view at the flight speed (a tenth of the far plane per second) for about a second.
@@ -184,6 +199,32 @@ TEST(View, KeysFlyTheCameraAndRecordAPath) {
                                             "--exit-after", "5", "--size", "64x48"});
   ASSERT_EQ(replay.exit_code, 0) << replay.err;
   EXPECT_LT(glm::length(final_position(replay.out) - final_position(r.out)), 1e-3f) << replay.out;
+}
+
+// O orbits around the surface in the middle of the frame: the plane at the scene camera's target
+// (the box is off that line of sight). D circles; the camera keeps looking at that point from
+// the same distance. P writes the frame shown as capture names it.
+TEST(View, OrbitCirclesTheSurfaceInViewAndPWritesTheFrame) {
+  const TempDir dir;
+  const FloatingBox scene = box_scene();
+  const CommandResult r = view_with_keys(dir, "--out " + shell_quote(dir.path().string()),
+                                         "xdotool key o && sleep 0.3 && xdotool keydown d && sleep 0.5 && xdotool keyup d && "
+                                         "sleep 0.3 && xdotool key p && sleep 0.5");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const glm::vec3 position = final_position(r.out), target = final_target(r.out);
+  const float distance = glm::length(scene.camera.target - scene.camera.position);
+  EXPECT_LT(glm::length(target - scene.camera.target), 0.01f * distance) << r.out;
+  EXPECT_NEAR(glm::length(target - position), distance, 0.01f * distance) << r.out;
+  EXPECT_GT(glm::length(position - scene.camera.position), 1.0f) << "the camera did not circle: " << r.out;
+
+  std::vector<std::string> written;
+  for (const std::string& f : files_in(dir.path())) {
+    if (f.rfind("color_", 0) == 0) written.push_back(f);
+  }
+  ASSERT_EQ(written.size(), 1u) << r.out;
+  const Rgb frame = load_rgb(dir / written.front());
+  EXPECT_EQ(frame.width, 320);
+  EXPECT_EQ(frame.height, 240);
 }
 
 TEST(View, WithoutADisplayPointsToCapture) {

@@ -51,8 +51,7 @@ nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOp
 CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
   CLI::App* cmd = app.add_subcommand("capture", "Render frames headless and write them as PNG files: "
                                                 "DIR/<aov>_<frame, 5 digits>.png");
-  cmd->add_option("--scene", o.scene, "Scene JSON file, or the name of a shipped scene (default: the embedded "
-                                      "default scene)");
+  add_scene_options(*cmd, o.scene);
   cmd->add_option("--path", o.path, "Camera path JSON file, or the name of a shipped path; without one every "
                                     "frame uses the scene's camera");
   add_render_options(*cmd, o.render);
@@ -64,9 +63,6 @@ CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
   cmd->add_option("--aov", o.aov, "Comma-separated images per frame: color, shadow, depth, aliasing "
                                   "(heat map of shadow-map texels per pixel), shadowmap (the map itself), reference (exact "
                                   "visibility by ray tracing, encoded as shadow)")->capture_default_str();
-  cmd->add_option("--light", o.light, "Index of the scene light that shines and casts shadows")->capture_default_str();
-  cmd->add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes that would need more memory than this, in GiB")
-      ->capture_default_str();
   cmd->add_flag("--force", o.force, "Render frames again even where their files exist (by default a capture "
                                     "resumes, skipping finished frames)");
   cmd->add_option("--stats", o.stats, "Also write each rendered frame's figures as JSON to this file: alias_p95, "
@@ -91,10 +87,10 @@ int run_capture(const CaptureOptions& o) {
   const FrameRange asked_frames = frames_asked ? parse_frames(o.frames) : FrameRange{};
   check_parent_folder("--stats", o.stats);
   const auto load_start = std::chrono::steady_clock::now();
-  const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
+  const Scene scene = load_scene_option(o.scene.name, o.scene.memory_budget_gib);
   std::cout << describe_scene(scene, std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count())
             << std::endl;
-  const shadow::Light& light = select_light(scene, o.light);
+  const shadow::Light& light = select_light(scene, o.scene.light);
   std::optional<CameraPath> path;
   if (!o.path.empty()) path = CameraPath::load(open_input(o.path, "paths"));
   const FrameRange frames = frames_asked ? asked_frames : default_frames(path, fps);

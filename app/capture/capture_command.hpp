@@ -8,16 +8,14 @@
 namespace ecoview {
 
 struct CaptureOptions {
-  std::string scene;
+  SceneOptions scene;
   std::string path;
   RenderOptions render;
   std::string backend = "egl";
   std::string frames;
   double fps = 30.0;
   std::string aov = "color";
-  int light = 0;
   bool force = false;
-  double memory_budget_gib = 4.0;
   std::string stats;  // per-frame figures as JSON, when not empty
   std::string out;
 };

@@ -43,6 +43,14 @@ int check_shadow_size(int size) {
   return size;
 }
 
+void add_scene_options(CLI::App& command, SceneOptions& o) {
+  command.add_option("--scene", o.name, "Scene JSON file, or the name of a shipped scene (default: the embedded default "
+                                        "scene)");
+  command.add_option("--light", o.light, "Index of the scene light that shines and casts shadows")->capture_default_str();
+  command.add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes that would need more memory than this, in GiB")
+      ->capture_default_str();
+}
+
 void add_render_options(CLI::App& command, RenderOptions& o) {
   command.add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
   command.add_option("--shadow-size", o.shadow_size, "Shadow map size in texels (square)")->capture_default_str();

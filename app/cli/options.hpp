@@ -25,6 +25,14 @@ FrameRange parse_frames(const std::string& text);  // "A:B", frames A … B-1, B
 
 int check_shadow_size(int size);
 
+// The scene options capture and view share: --scene, --light, --memory-budget.
+struct SceneOptions {
+  std::string name;  // a file or a shipped scene; empty: the default scene
+  int light = 0;
+  double memory_budget_gib = 4.0;
+};
+void add_scene_options(CLI::App& command, SceneOptions& options);
+
 // The rendering options capture and view share: --size, --shadow-size, --method, --geometry,
 // --k, --splat.
 struct RenderOptions {

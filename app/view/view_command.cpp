@@ -16,11 +16,8 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
       "view", "Fly through a scene in a window. WASD move, Q/E down/up, drag the mouse to look, wheel or +/- "
               "change the speed, O orbits the point in view, R starts and stops recording a camera path, P writes "
               "the frame as capture does, H hides the HUD, Esc quits");
-  cmd->add_option("--scene", o.scene, "Scene JSON file, or the name of a shipped scene");
+  add_scene_options(*cmd, o.scene);
   add_render_options(*cmd, o.render);
-  cmd->add_option("--light", o.light, "Index of the scene light that shines and casts shadows")->capture_default_str();
-  cmd->add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes that would need more memory than this, in GiB")
-      ->capture_default_str();
   cmd->add_option("--play", o.play, "Camera path (file or shipped name) to follow from t = 0; flight is free after "
                                     "its last key");
   cmd->add_option("--record", o.record, "File R writes the recorded camera path to (the path format capture --path "
@@ -59,10 +56,10 @@ int run_view(const ViewOptions& o) {
   // The window first: without a display, say so before loading a large scene.
   GlfwWindow window(settings.render.width, settings.render.height, "ecoview");
   const auto load_start = Clock::now();
-  const Scene scene = load_scene_option(o.scene, o.memory_budget_gib);
+  const Scene scene = load_scene_option(o.scene.name, o.scene.memory_budget_gib);
   settings.scene_line = describe_scene(scene, ms_since(load_start) / 1000.0);
   std::cout << settings.scene_line << std::endl;
-  settings.light = select_light(scene, o.light);
+  settings.light = select_light(scene, o.scene.light);
   window.set_title("ecoview — " + scene.name);
 
   Viewer viewer(scene, settings, window);

@@ -8,11 +8,9 @@
 namespace ecoview {
 
 struct ViewOptions {
-  std::string scene;
+  SceneOptions scene;
   RenderOptions render;
-  int light = 0;
   int exit_after = 0;  // frames; 0 runs until the window is closed
-  double memory_budget_gib = 4.0;
   std::string play;                 // camera path to follow from t = 0
   std::string record = "path.json";  // where R writes the recorded path
   double fps = 0.0;                  // 0: real time; otherwise frame i is at time i / fps, as in capture
