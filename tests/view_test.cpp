@@ -192,13 +192,20 @@ TEST(View, KeysFlyTheCameraAndRecordAPath) {
   EXPECT_GT(glm::dot(glm::normalize(moved), scene.camera.forward()), 0.999f) << r.out;
 
   // The recorded path starts at t = 0 and ends where the window's camera stopped; played in the
-  // viewer, it takes the camera there again.
+  // viewer, it takes the camera there again, and its frames are capture's.
   const std::string keys = read_bytes(path);
   EXPECT_EQ(keys.find("{\"t\":0.0,"), 4u) << keys.substr(0, 200);
   const CommandResult replay = run_ecoview({"view", "--scene", (dir / "box.json").string(), "--play", path, "--fps", "1",
                                             "--exit-after", "5", "--size", "64x48"});
   ASSERT_EQ(replay.exit_code, 0) << replay.err;
   EXPECT_LT(glm::length(final_position(replay.out) - final_position(r.out)), 1e-3f) << replay.out;
+  const CommandResult shown = run_ecoview({"view", "--scene", (dir / "box.json").string(), "--play", path, "--fps", "10",
+                                           "--exit-after", "6", "--size", "64x48", "--no-hud", "--screenshot", (dir / "shown.png").string()});
+  ASSERT_EQ(shown.exit_code, 0) << shown.err;
+  const CommandResult captured = run_ecoview({"capture", "--scene", (dir / "box.json").string(), "--path", path, "--fps", "10",
+                                              "--frames", "5:6", "--size", "64x48", "--out", (dir / "capture").string()});
+  ASSERT_EQ(captured.exit_code, 0) << captured.err;
+  EXPECT_EQ(read_bytes(dir / "shown.png"), read_bytes(dir / "capture" / "color_00005.png"));
 }
 
 // O orbits around the surface in the middle of the frame: the plane at the scene camera's target
@@ -225,6 +232,41 @@ TEST(View, OrbitCirclesTheSurfaceInViewAndPWritesTheFrame) {
   const Rgb frame = load_rgb(dir / written.front());
   EXPECT_EQ(frame.width, 320);
   EXPECT_EQ(frame.height, 240);
+}
+
+// The HUD draws its panel, the shadow-map inset and the aliasing overlay where they belong: each
+// changes its part of the window and leaves the rest as the frame alone shows it.
+TEST(View, HudDrawsThePanelTheInsetAndTheOverlay) {
+  const TempDir dir;
+  write_text(dir / "box.json", box_scene().scene_json());
+  auto shot = [&](const std::string& name, std::vector<std::string> options) {
+    std::vector<std::string> args = {"view", "--scene", (dir / "box.json").string(), "--size", "640x480", "--exit-after", "2",
+                                     "--screenshot", (dir / name).string()};
+    args.insert(args.end(), options.begin(), options.end());
+    const CommandResult r = run_ecoview(args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return load_rgb(dir / name);
+  };
+  const Rgb bare = shot("bare.png", {"--no-hud"}), panel = shot("panel.png", {});
+  const Rgb inset = shot("inset.png", {"--shadow-map-inset"}), overlay = shot("overlay.png", {"--aliasing-overlay"});
+  ASSERT_EQ(bare.pixels.size(), 640u * 480u * 3u);
+  // The share of pixels in [x0, x1) x [y0, y1) (rows from the top) where two shots differ.
+  auto changed = [](const Rgb& a, const Rgb& b, int x0, int y0, int x1, int y1) {
+    int n = 0;
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        const std::size_t i = 3 * (static_cast<std::size_t>(y) * 640 + x);
+        n += a.pixels[i] != b.pixels[i] || a.pixels[i + 1] != b.pixels[i + 1] || a.pixels[i + 2] != b.pixels[i + 2];
+      }
+    }
+    return static_cast<double>(n) / ((x1 - x0) * (y1 - y0));
+  };
+  EXPECT_GT(changed(bare, panel, 10, 10, 300, 100), 0.9) << "no panel at the top left";
+  EXPECT_EQ(changed(bare, panel, 0, 440, 640, 480), 0.0) << "the panel reaches the bottom";
+  EXPECT_GT(changed(panel, inset, 520, 40, 630, 260), 0.9) << "no inset at the top right";
+  EXPECT_EQ(changed(panel, inset, 0, 440, 640, 480), 0.0);
+  // The overlay tints every surface below the panel; the sky above the horizon keeps its colour.
+  EXPECT_GT(changed(panel, overlay, 0, 440, 640, 480), 0.9) << "no aliasing overlay";
 }
 
 TEST(View, WithoutADisplayPointsToCapture) {

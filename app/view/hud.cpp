@@ -90,7 +90,10 @@ void Hud::draw_panel(const ViewStatus& status, const Renderer& renderer, ViewCon
   ImGui::Text("shadow pass %.0f ms, frame pass %.0f ms, sampling %.0f ms", s.shadow_pass_ms, s.frame_pass_ms, s.sample_ms);
   ImGui::Text("points %s, triangles %s, shadow points %s", millions(s.points).c_str(), millions(s.triangles).c_str(),
               millions(s.shadow_points).c_str());
-  ImGui::TextWrapped("%s", status.scene.c_str());
+  // A fixed wrap width: wrapping at the window's own in an auto-sized window takes frames to settle.
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 34.0f);
+  ImGui::TextUnformatted(status.scene.c_str());
+  ImGui::PopTextWrapPos();
   ImGui::Text("camera (%.1f, %.1f, %.1f), %s, speed %.1f m/s", status.position.x, status.position.y, status.position.z,
               status.orbiting ? "orbit" : "flight", status.speed);
   if (!status.activity.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", status.activity.c_str());
