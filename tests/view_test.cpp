@@ -284,6 +284,10 @@ TEST(View, BadOptionsAreNamed) {
   r = run_ecoview({"view", "--scene", "courtyard", "--play", (dir / "missing.json").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("missing.json"), std::string::npos) << r.err;
+  write_text(dir / "scene.json", R"({"camera": {"position": [0, 1, 2], "target": [0, 1, 2]}})");
+  r = run_shell("unset DISPLAY WAYLAND_DISPLAY; ecoview view --scene " + shell_quote((dir / "scene.json").string()));
+  EXPECT_EQ(r.exit_code, 2) << "a bad scene is bad input, display or not";
+  EXPECT_NE(r.err.find("scene.json"), std::string::npos) << r.err;
   write_text(dir / "bad.json", R"([{"t": 0, "position": [0, 1, 2], "target": [0, 1, 2]}])");
   r = run_ecoview({"view", "--scene", "courtyard", "--play", (dir / "bad.json").string()});
   EXPECT_EQ(r.exit_code, 2);

@@ -50,8 +50,6 @@ bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_) !=
 
 void GlfwWindow::close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 
-void GlfwWindow::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
-
 void GlfwWindow::swap_and_poll() {
   glfwSwapBuffers(window_);
   keys_pressed_.clear();

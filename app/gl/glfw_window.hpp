@@ -22,7 +22,6 @@ class GlfwWindow final : public GlContext {
   std::string description() const override { return "GLFW window, " + renderer_; }
   bool should_close() const;
   void close();
-  void set_title(const std::string& title);
   void swap_and_poll();
   glm::ivec2 framebuffer_size() const;
   GLFWwindow* handle() const { return window_; }

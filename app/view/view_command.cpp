@@ -53,14 +53,13 @@ int run_view(const ViewOptions& o) {
   settings.shadow_map_inset = o.shadow_map_inset;
   settings.aliasing_overlay = o.aliasing_overlay;
 
-  // The window first: without a display, say so before loading a large scene.
-  GlfwWindow window(settings.render.width, settings.render.height, "ecoview");
+  // The scene before the window, so that a bad scene is bad input (exit 2) with or without a display.
   const auto load_start = Clock::now();
   const Scene scene = load_scene_option(o.scene.name, o.scene.memory_budget_gib);
   settings.scene_line = describe_scene(scene, ms_since(load_start) / 1000.0);
   std::cout << settings.scene_line << std::endl;
   settings.light = select_light(scene, o.scene.light);
-  window.set_title("ecoview — " + scene.name);
+  GlfwWindow window(settings.render.width, settings.render.height, "ecoview — " + scene.name);
 
   Viewer viewer(scene, settings, window);
   try {
