@@ -143,13 +143,15 @@ TEST(View, PathReplaysInCaptureFrameForFrame) {
   }
 }
 
-// The window's camera after the run, from the summary line.
-glm::vec3 final_position(const std::string& out) {
+// A point of the summary line ("camera at (x, y, z) looking at (x, y, z)") after `label`.
+glm::vec3 summary_point(const std::string& out, const std::string& label) {
   glm::vec3 p(NAN);
-  const auto at = out.find("camera at (");
-  if (at != std::string::npos) std::sscanf(out.c_str() + at, "camera at (%f, %f, %f)", &p.x, &p.y, &p.z);
+  const auto at = out.find(label + " (");
+  if (at != std::string::npos) std::sscanf(out.c_str() + at + label.size(), " (%f, %f, %f)", &p.x, &p.y, &p.z);
   return p;
 }
+glm::vec3 final_position(const std::string& out) { return summary_point(out, "camera at"); }
+glm::vec3 final_target(const std::string& out) { return summary_point(out, "looking at"); }
 
 // Runs the viewer on the box scene at 320x240 with `options`, and once it shows its first frame,
 // the xdotool commands of `keys` (one per line, in its window); returns the viewer's output.
@@ -159,18 +161,11 @@ CommandResult view_with_keys(const TempDir& dir, const std::string& options, con
   return run_shell("timeout 120 \"$ecoview_binary\" view --scene " + shell_quote((dir / "box.json").string()) +
                    " --size 320x240 --no-hud " + options + " >" + shell_quote(out) + " & pid=$!\n"
                    "for i in $(seq 600); do grep -q 'first frame' " + shell_quote(out) + " && break; sleep 0.1; done\n"
+                   "grep -q 'first frame' " + shell_quote(out) + " || { kill $pid; echo 'no first frame in 60 s' >&2; exit 4; }\n"
                    "window=$(timeout 30 xdotool search --sync --name '^ecoview') || { kill $pid; exit 3; }\n"
                    "xdotool windowfocus --sync $window && sleep 0.3\n" + keys +
                    "\nsleep 0.3 && xdotool key Escape\n"
                    "wait $pid; status=$?; cat " + shell_quote(out) + "; exit $status");
-}
-
-// The camera's target after the run, from the summary line.
-glm::vec3 final_target(const std::string& out) {
-  glm::vec3 p(NAN);
-  const auto at = out.find("looking at (");
-  if (at != std::string::npos) std::sscanf(out.c_str() + at, "looking at (%f, %f, %f)", &p.x, &p.y, &p.z);
-  return p;
 }
 
 // Keys typed into the window through the X server (xdotool), once it shows its first frame: R
@@ -249,7 +244,7 @@ TEST(View, HudDrawsThePanelTheInsetAndTheOverlay) {
   };
   const Rgb bare = shot("bare.png", {"--no-hud"}), panel = shot("panel.png", {});
   const Rgb inset = shot("inset.png", {"--shadow-map-inset"}), overlay = shot("overlay.png", {"--aliasing-overlay"});
-  ASSERT_EQ(bare.pixels.size(), 640u * 480u * 3u);
+  for (const Rgb* shot : {&bare, &panel, &inset, &overlay}) ASSERT_EQ(shot->pixels.size(), 640u * 480u * 3u);
   // The share of pixels in [x0, x1) x [y0, y1) (rows from the top) where two shots differ.
   auto changed = [](const Rgb& a, const Rgb& b, int x0, int y0, int x1, int y1) {
     int n = 0;

@@ -57,12 +57,17 @@ Image8 aliasing_heat_map(const Image<float>& aliasing) {
   return image;
 }
 
+namespace {
+
+// Depths 0..1 as gray 0..255.
 Image8 depth_gray(const Image<float>& depth) {
   Image8 image{depth.width, depth.height, 1, {}};
   image.samples.reserve(depth.samples.size());
   for (float d : depth.samples) image.samples.push_back(static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(d, 0.0f, 1.0f))));
   return image;
 }
+
+}  // namespace
 
 std::string encode_aov(Aov aov, Renderer& renderer, float far) {
   const FramePass& frame = renderer.frame();

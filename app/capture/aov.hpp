@@ -27,7 +27,5 @@ std::filesystem::path aov_file(const std::filesystem::path& out, Aov aov, int fr
 
 // The aliasing heat map as above, RGB.
 Image8 aliasing_heat_map(const Image<float>& aliasing);
-// Depths 0..1 as gray 0..255 (the shadowmap AOV).
-Image8 depth_gray(const Image<float>& depth);
 
 }  // namespace ecoview

@@ -1,6 +1,7 @@
 #include "app/view/hud.hpp"
 
 #include "app/capture/aov.hpp"
+#include "app/errors.hpp"
 
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
@@ -54,8 +55,12 @@ Hud::Hud(GlfwWindow& window) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the user's folder
   ImGui::StyleColorsDark();
-  ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
-  ImGui_ImplOpenGL3_Init("#version 450 core");
+  const bool window_ok = ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
+  if (!window_ok || !ImGui_ImplOpenGL3_Init("#version 450 core")) {
+    if (window_ok) ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    throw RuntimeFailure("the HUD (Dear ImGui) cannot use this window's OpenGL context");
+  }
 }
 
 Hud::~Hud() {

@@ -115,6 +115,10 @@ shadow::Camera Viewer::place_camera(double t, double seconds) {
 // Orbits around the surface in the middle of the last frame (or the point the camera looks at,
 // where the middle shows sky).
 void Viewer::toggle_orbit() {
+  if (following_path_) {
+    activity_ = "no orbit while a path plays";
+    return;
+  }
   if (flight_.orbiting()) {
     flight_.fly();
     return;
@@ -136,7 +140,12 @@ void Viewer::toggle_recording() {
     restart_time_ = true;
     return;
   }
-  finish();
+  try {
+    finish();
+  } catch (const RuntimeFailure& e) {
+    activity_ = e.what();  // the keys stay, for the next R or the exit to write
+    recording_ = true;
+  }
 }
 
 void Viewer::finish() {
@@ -175,9 +184,11 @@ void Viewer::apply_controls() {
   if (controls_.method != now.method || controls_.shadow_size != now.shadow_size || controls_.k != now.k) {
     try {
       renderer_.change(controls_.method, controls_.shadow_size, controls_.k);
-    } catch (const InputError& e) {
+    } catch (const InputError& e) {  // a map larger than this driver renders
       activity_ = e.what();
+      controls_.method = now.method;
       controls_.shadow_size = now.shadow_size;
+      controls_.k = now.k;
     }
   }
   renderer_.set_aliasing(controls_.aliasing_overlay);
