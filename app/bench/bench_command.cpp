@@ -64,10 +64,7 @@ struct View {
 
 class ShadowBench {
  public:
-  ShadowBench(const BenchOptions& o, const Plan& plan) : o_(o), plan_(plan), out_(o.run.out) {
-    const glm::ivec2 size = parse_size(o.run.size);
-    base_.width = size.x;
-    base_.height = size.y;
+  ShadowBench(const BenchOptions& o, const Plan& plan) : o_(o), plan_(plan), out_(o.run.out), base_(benchmark_settings(o.run)) {
     fs::create_directories(out_ / "images");
   }
 

@@ -79,11 +79,7 @@ double changed_fraction(const Image8& a, const Image8& b) {
 
 class DensityBench {
  public:
-  DensityBench(const DensityOptions& o, const Plan& plan) : o_(o), plan_(plan), out_(o.run.out) {
-    const glm::ivec2 size = parse_size(o.run.size);
-    base_.width = size.x;
-    base_.height = size.y;
-  }
+  DensityBench(const DensityOptions& o, const Plan& plan) : o_(o), plan_(plan), out_(o.run.out), base_(benchmark_settings(o.run)) {}
 
   // Quality against time: the scene's point-rendered objects, points against their polygons. The
   // polygons against themselves turned by half a pixel give the PSNR an exact renderer scores from
@@ -153,10 +149,12 @@ class DensityBench {
       renderer.render(camera, scene.lights[0]);
       return changed_fraction(first, renderer.frame().read_color());
     };
-    Renderer points(scene, base_);
     BenchRun run;
     run.params = {{"sweep", "temporal"}, {"scene", scene_name}, {"k", base_.k}, {"splat", base_.splat_size}};
-    run.figures = {{"still_changed", change(points, scene.camera)}, {"moving_changed", change(points, moved)}};
+    {
+      Renderer points(scene, base_);  // released before the polygon renderer is made
+      run.figures = {{"still_changed", change(points, scene.camera)}, {"moving_changed", change(points, moved)}};
+    }
     if (plan_.temporal_reference) {
       RenderSettings all_polygons = base_;
       all_polygons.points = false;

@@ -104,6 +104,14 @@ const std::string& check_backend(const std::string& backend) {
   return backend;
 }
 
+RenderSettings benchmark_settings(const BenchmarkOptions& options) {
+  const glm::ivec2 size = parse_size(options.size);
+  RenderSettings settings;
+  settings.width = size.x;
+  settings.height = size.y;
+  return settings;
+}
+
 void check_parent_folder(const std::string& option, const std::string& file) {
   if (!file.empty() && !std::filesystem::is_directory(std::filesystem::absolute(file).parent_path())) {
     throw InputError(option + ": " + file + ": its folder does not exist");

@@ -58,6 +58,8 @@ struct BenchmarkOptions {
   std::string out;
 };
 void add_benchmark_options(CLI::App& command, BenchmarkOptions& options, const std::string& quick_help);
+// The settings a benchmark starts from: the defaults at its --size.
+RenderSettings benchmark_settings(const BenchmarkOptions& options);
 
 // Checks a --backend name (egl or osmesa) before any work is done.
 const std::string& check_backend(const std::string& backend);

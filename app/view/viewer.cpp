@@ -8,7 +8,6 @@
 
 #include <GLFW/glfw3.h>
 
-#include <algorithm>
 #include <cstdio>
 
 namespace ecoview {
@@ -60,6 +59,9 @@ void Viewer::frame(const std::string& screenshot) {
   ++frame_;
 }
 
+bool Viewer::hud_takes_keyboard() const { return hud_shown_ && hud_.wants_keyboard(); }
+bool Viewer::hud_takes_mouse() const { return hud_shown_ && hud_.wants_mouse(); }
+
 ViewStatus Viewer::status() const {
   ViewStatus s{frame_ms_.empty() ? 0.0 : frame_ms_.back(), settings_.scene_line, camera_.position, flight_.speed(),
                flight_.orbiting(), activity_};
@@ -70,8 +72,8 @@ ViewStatus Viewer::status() const {
 
 // Keys pressed since the last frame; none while the HUD has the keyboard (a field or slider in use).
 void Viewer::handle_keys() {
-  if (!(hud_shown_ && hud_.wants_mouse())) flight_.scale_speed(static_cast<float>(window_.scrolled()));
-  if (hud_shown_ && hud_.wants_keyboard()) return;
+  if (!hud_takes_mouse()) flight_.scale_speed(static_cast<float>(window_.scrolled()));
+  if (hud_takes_keyboard()) return;
   for (int key : window_.keys_pressed()) {
     switch (key) {
       case GLFW_KEY_ESCAPE: window_.close(); break;
@@ -90,9 +92,9 @@ FlightInput Viewer::flight_input() {
   FlightInput input;
   const glm::dvec2 cursor = window_.cursor();
   const bool dragging = window_.mouse_button_down(GLFW_MOUSE_BUTTON_LEFT) || window_.mouse_button_down(GLFW_MOUSE_BUTTON_RIGHT);
-  if (dragging && !(hud_shown_ && hud_.wants_mouse())) input.look = glm::vec2(cursor - last_cursor_);
+  if (dragging && !hud_takes_mouse()) input.look = glm::vec2(cursor - last_cursor_);
   last_cursor_ = cursor;
-  if (hud_shown_ && hud_.wants_keyboard()) return input;
+  if (hud_takes_keyboard()) return input;
   auto axis = [&](int plus, int minus) { return (window_.key_down(plus) ? 1.0f : 0.0f) - (window_.key_down(minus) ? 1.0f : 0.0f); };
   input.move = {axis(GLFW_KEY_D, GLFW_KEY_A), axis(GLFW_KEY_E, GLFW_KEY_Q), axis(GLFW_KEY_W, GLFW_KEY_S)};
   return input;

@@ -49,6 +49,9 @@ class Viewer {
   void write_window(const std::string& file) const;
   void apply_controls();
   ViewStatus status() const;
+  // Whether the HUD is shown and a field or slider of it has the keyboard or the mouse.
+  bool hud_takes_keyboard() const;
+  bool hud_takes_mouse() const;
 
   const Scene& scene_;
   Settings settings_;
