@@ -115,7 +115,7 @@ InstanceTable table_at(const std::vector<glm::vec3>& positions) {
 }
 
 TEST(ViewSampler, CullsWhatIsOutOfViewAndCountsTheRest) {
-  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000};  // 2 m² in 1,000 triangles: break-even at 4,000 points
+  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}};  // 2 m² in 1,000 triangles: break-even at 4,000 points
   const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, 40}, {0, 0, -40}, {100, 0, -40}})}, {mesh});
   ASSERT_EQ(f.points.size(), 1u) << "the instances behind and beside the view are culled";
   EXPECT_EQ(f.points[0].instance, 1u);
@@ -127,7 +127,7 @@ TEST(ViewSampler, CullsWhatIsOutOfViewAndCountsTheRest) {
 }
 
 TEST(ViewSampler, NearInstancesArePolygonsAndTheBandBetweenDrawsBoth) {
-  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000};
+  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}};
   // Points needed = 131072 / z^2: 4,000 (break-even) at z = 5.7 m; the band is 5.1 to 6.4 m.
   const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, -3.5f}, {0, 0, -5.8f}, {0, 0, -9.5f}})}, {mesh});
   ASSERT_EQ(f.polygons[0], (std::vector<std::uint32_t>{0, 1}));
@@ -139,7 +139,7 @@ TEST(ViewSampler, NearInstancesArePolygonsAndTheBandBetweenDrawsBoth) {
 
 TEST(ViewSampler, CountsOfSmallInstancesAreRoundedWithoutBias) {
   // 4,000 instances needing 0.3 points each: some get one point, most none, about 1,200 in all.
-  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000};
+  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}};
   InstanceTable table;
   for (int i = 0; i < 4000; ++i) table.add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -200.0f}), glm::vec3(1.0f), derive_seed(5, i));
   SamplerView view = test_view();
@@ -148,10 +148,24 @@ TEST(ViewSampler, CountsOfSmallInstancesAreRoundedWithoutBias) {
   EXPECT_NEAR(static_cast<double>(f.point_count), 1200.0, 4.0 * std::sqrt(4000 * 0.3 * 0.7));
 }
 
+// Points over the face z = 2 of a 4 m box around the origin, on a grid: 64 x 64, or only the
+// columns with x < 0.
+std::vector<glm::vec3> face_points(bool left_half_only) {
+  std::vector<glm::vec3> points;
+  for (int i = 0; i < 64; ++i) {
+    for (int j = 0; j < 64; ++j) {
+      const glm::vec3 p(-2.0f + 4.0f * (i + 0.5f) / 64.0f, -2.0f + 4.0f * (j + 0.5f) / 64.0f, 2.0f);
+      if (!left_half_only || p.x < 0.0f) points.push_back(p);
+    }
+  }
+  return points;
+}
+
 TEST(ViewSampler, InstancesHiddenBehindOthersGetNoPoints) {
-  // An opaque 4 m box 10 m ahead; behind it at 40 m one small ball straight back, one off to the side.
-  SampledMesh opaque{400.0f, glm::vec3(0.0f), 3.5f, 100000, 500000, glm::vec3(2.0f), 1000.0f};
-  SampledMesh small{0.3f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.3f), 0.2f};
+  // A 4 m box 10 m ahead whose points fill its front face; behind it at 40 m one small ball
+  // straight back, one off to the side.
+  SampledMesh opaque{400.0f, glm::vec3(0.0f), 3.5f, 100000, 500000, glm::vec3(2.0f), face_points(false)};
+  const SampledMesh small{0.3f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.3f), {glm::vec3(0.0f)}};
   std::vector<InstanceTable> tables = {table_at({{0, 0, -40}, {25, 0, -40}}), table_at({{0, 0, -10}})};
   tables[1].mesh = 1;
   SamplerView view = test_view();
@@ -169,28 +183,36 @@ TEST(ViewSampler, InstancesHiddenBehindOthersGetNoPoints) {
   EXPECT_EQ(count_of(seen, 0, 0), 0u) << "straight behind the box";
   EXPECT_EQ(count_of(seen, 0, 1), count_of(whole, 0, 1)) << "beside it";
   EXPECT_EQ(count_of(seen, 1, 0), count_of(whole, 1, 0)) << "the box itself is in front";
-  // Half as opaque: what it leaves visible is far above the fade-out, so counts stay whole.
-  opaque.silhouette = 0.5f * 16.0f * 0.5f;  // fills under half of its screen rectangle
+  // Points on the left half only: the right half of the ball shows, far above the fade-out.
+  opaque.sample_positions = face_points(true);
   const SampledFrame through = sample_view(view, tables, {small, opaque});
   EXPECT_EQ(count_of(through, 0, 0), count_of(whole, 0, 0));
 }
 
-TEST(CoverageGrid, TilesKeepWhatIsLeftUncovered) {
-  CoverageGrid grid(glm::mat4(1.0f), {4, 4});  // tiles of 0.5 x 0.5 in NDC
-  grid.cover({{-1.0f, -1.0f}, {0.0f, 0.0f}}, 0.6f);
-  EXPECT_NEAR(grid.transmittance({{-1.0f, -1.0f}, {0.0f, 0.0f}}), 0.4f, 1e-6f);
-  EXPECT_NEAR(grid.transmittance({{0.0f, 0.0f}, {1.0f, 1.0f}}), 1.0f, 1e-6f);
-  EXPECT_NEAR(grid.transmittance({{-1.0f, -1.0f}, {1.0f, 1.0f}}), (0.4f + 3.0f) / 4.0f, 1e-6f);
-  // An opaque object over half of a tile leaves the tile half uncovered; a second one, a quarter.
-  grid.cover({{0.5f, 0.5f}, {0.75f, 1.0f}}, 1.0f);
-  EXPECT_NEAR(grid.transmittance({{0.5f, 0.5f}, {1.0f, 1.0f}}), 0.5f, 1e-6f);
-  grid.cover({{0.75f, 0.5f}, {1.0f, 1.0f}}, 1.0f);
-  EXPECT_NEAR(grid.transmittance({{0.5f, 0.5f}, {1.0f, 1.0f}}), 0.25f, 1e-6f);
+TEST(CoverageGrid, TilesKeepWhatTheirCellsLeaveUncovered) {
+  CoverageGrid grid(glm::mat4(1.0f), {16, 16});  // tiles of 4 x 4 cells, 0.5 x 0.5 in NDC
+  const CoverageGrid::Rect first_tile{{-1.0f, -1.0f}, {-0.5f, -0.5f}};
+  // NDC (-0.8, -0.9) is cell (1.6, 0.8) of the grid: cell (1, 0).
+  const std::vector<glm::vec3> point = {{-0.8f, -0.9f, 0.0f}};
+  grid.cover(point, glm::mat4(1.0f));
+  EXPECT_NEAR(grid.transmittance(first_tile), 15.0f / 16.0f, 1e-6f);
+  grid.cover(std::vector<glm::vec3>{{-0.79f, -0.89f, 0.0f}}, glm::mat4(1.0f));
+  EXPECT_NEAR(grid.transmittance(first_tile), 15.0f / 16.0f, 1e-6f) << "a covered cell stays covered once";
+  grid.cover(std::vector<glm::vec3>{{-0.6f, -0.6f, 0.0f}}, glm::mat4(1.0f));
+  EXPECT_NEAR(grid.transmittance(first_tile), 14.0f / 16.0f, 1e-6f);
+  // Moved by the transform a screen's width to the right: the same cell of the third tile.
+  grid.cover(point, glm::translate(glm::mat4(1.0f), {1.0f, 0.0f, 0.0f}));
+  EXPECT_NEAR(grid.transmittance({{0.0f, -1.0f}, {0.5f, -0.5f}}), 15.0f / 16.0f, 1e-6f);
+  EXPECT_NEAR(grid.transmittance({{-0.5f, -1.0f}, {0.0f, -0.5f}}), 1.0f, 1e-6f) << "the tile between";
+  // A rectangle over the first tile and half of the one above it: the mean by area.
+  EXPECT_NEAR(grid.transmittance({{-1.0f, -1.0f}, {-0.5f, -0.25f}}), (14.0f / 16.0f + 0.5f) / 1.5f, 1e-6f);
   // Off screen: nothing.
-  grid.cover({{2.0f, 2.0f}, {3.0f, 3.0f}}, 1.0f);
-  EXPECT_NEAR(grid.transmittance({{0.0f, 0.0f}, {0.5f, 0.5f}}), 1.0f, 1e-6f);
-  // A box behind the eye has no rectangle.
-  const CoverageGrid perspective(glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f), {4, 4});
+  grid.cover(std::vector<glm::vec3>{{1.0f, 0.0f, 0.0f}, {3.0f, 0.0f, 0.0f}, {0.0f, -1.01f, 0.0f}}, glm::mat4(1.0f));
+  EXPECT_NEAR(grid.transmittance({{-1.0f, -1.0f}, {1.0f, 1.0f}}), (14.0f / 16.0f + 15.0f / 16.0f + 14.0f) / 16.0f, 1e-6f);
+  // Behind the eye: nothing, and a box reaching behind it has no rectangle.
+  CoverageGrid perspective(glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f), {16, 16});
+  perspective.cover(std::vector<glm::vec3>{{0.0f, 0.0f, 5.0f}}, glm::mat4(1.0f));
+  EXPECT_NEAR(perspective.transmittance({{-1.0f, -1.0f}, {1.0f, 1.0f}}), 1.0f, 1e-6f);
   EXPECT_FALSE(perspective.project({glm::vec3(-1, -1, 1), glm::vec3(1, -1, 1), glm::vec3(-1, 1, 1), glm::vec3(1, 1, 1),
                                     glm::vec3(-1, -1, -3), glm::vec3(1, -1, -3), glm::vec3(-1, 1, -3), glm::vec3(1, 1, -3)}));
 }

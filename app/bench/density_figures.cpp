@@ -6,14 +6,26 @@
 #include <limits>
 
 namespace ecoview {
+namespace {
 
-double psnr_over_covered(const RenderedFrame& reference, const Image8& image) {
+// Whether depth a is drawn and nearer than depth b (negative: nothing drawn).
+bool in_front(float a, float b) { return a >= 0.0f && (b < 0.0f || a < b); }
+
+}  // namespace
+
+std::vector<bool> point_object_pixels(const RenderedFrame& polygons, const RenderedFrame& occluders) {
+  std::vector<bool> pixels(polygons.depth.samples.size());
+  for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = in_front(polygons.depth.samples[i], occluders.depth.samples[i]);
+  return pixels;
+}
+
+double psnr_over(const std::vector<bool>& pixels, const Image8& reference, const Image8& image) {
   double squared_error = 0.0;
   std::size_t samples = 0;
-  for (std::size_t i = 0; i < reference.depth.samples.size(); ++i) {
-    if (reference.depth.samples[i] < 0.0f) continue;
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    if (!pixels[i]) continue;
     for (std::size_t c = 3 * i; c < 3 * i + 3; ++c) {
-      const double e = static_cast<double>(reference.color.samples[c]) - static_cast<double>(image.samples[c]);
+      const double e = static_cast<double>(reference.samples[c]) - static_cast<double>(image.samples[c]);
       squared_error += e * e;
     }
     samples += 3;
@@ -22,36 +34,36 @@ double psnr_over_covered(const RenderedFrame& reference, const Image8& image) {
   return squared_error > 0.0 ? 10.0 * std::log10(255.0 * 255.0 * static_cast<double>(samples) / squared_error) : 99.0;
 }
 
-DensityFigures density_figures(const RenderedFrame& polygons, const RenderedFrame& points,
-                               const Image<std::uint32_t>& counts) {
+DensityFigures density_figures(const DensityRenders& renders, const Image<std::uint32_t>& counts) {
+  const std::vector<bool> covered = point_object_pixels(renders.polygons, renders.occluders);
+  const std::vector<float>& depth = renders.polygons.depth.samples;
   DensityFigures f;
   float near = std::numeric_limits<float>::max(), far = 0.0f;
-  for (float d : polygons.depth.samples) {
-    if (d < 0.0f) continue;
-    near = std::min(near, d);
-    far = std::max(far, d);
+  for (std::size_t i = 0; i < covered.size(); ++i) {
+    if (!covered[i]) continue;
+    near = std::min(near, depth[i]);
+    far = std::max(far, depth[i]);
   }
   std::size_t holes = 0;
   double sum = 0.0, sum_squares = 0.0;
   std::array<double, 3> third_points{}, third_pixels{};
-  for (std::size_t i = 0; i < polygons.depth.samples.size(); ++i) {
-    const float d = polygons.depth.samples[i];
-    if (d < 0.0f) continue;
+  for (std::size_t i = 0; i < covered.size(); ++i) {
+    if (!covered[i]) continue;
     ++f.covered;
-    holes += points.depth.samples[i] < 0.0f;
+    holes += !in_front(renders.points.depth.samples[i], renders.occluders.depth.samples[i]);
     const double n = counts.samples[i];
     sum += n;
     sum_squares += n * n;
-    const auto third = static_cast<std::size_t>(std::min(2.0f, 3.0f * (d - near) / std::max(far - near, 1e-6f)));
+    const auto third = static_cast<std::size_t>(std::min(2.0f, 3.0f * (depth[i] - near) / std::max(far - near, 1e-6f)));
     third_points[third] += n;
     third_pixels[third] += 1.0;
   }
   if (f.covered == 0) return f;
-  const auto covered = static_cast<double>(f.covered);
-  f.holes = static_cast<double>(holes) / covered;
-  f.psnr = psnr_over_covered(polygons, points.color);
-  f.pts_per_px = sum / covered;
-  f.pts_per_px_cv = f.pts_per_px > 0.0 ? std::sqrt(std::max(0.0, sum_squares / covered - f.pts_per_px * f.pts_per_px)) / f.pts_per_px : 0.0;
+  const auto n_covered = static_cast<double>(f.covered);
+  f.holes = static_cast<double>(holes) / n_covered;
+  f.psnr = psnr_over(covered, renders.polygons.color, renders.points.color);
+  f.pts_per_px = sum / n_covered;
+  f.pts_per_px_cv = f.pts_per_px > 0.0 ? std::sqrt(std::max(0.0, sum_squares / n_covered - f.pts_per_px * f.pts_per_px)) / f.pts_per_px : 0.0;
   f.pts_per_px_near = third_pixels[0] > 0 ? third_points[0] / third_pixels[0] : 0.0;
   f.pts_per_px_middle = third_pixels[1] > 0 ? third_points[1] / third_pixels[1] : 0.0;
   f.pts_per_px_far = third_pixels[2] > 0 ? third_points[2] / third_pixels[2] : 0.0;

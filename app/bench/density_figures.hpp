@@ -2,11 +2,12 @@
 #include "app/render/image.hpp"
 
 #include <cstdint>
+#include <vector>
 
 namespace ecoview {
 
-// The point-density figures of DESIGN.md, from a polygon render and a point render of the same
-// point-rendered objects (nothing else drawn) and the point render's points per pixel.
+// The point-density figures of DESIGN.md, over the pixels where the frame shows a point-rendered
+// object, and the point render's points per pixel there.
 struct DensityFigures {
   double holes = 0.0;            // covered by polygons, not by points, over covered pixels
   double psnr = 0.0;             // colour PSNR (dB) of points against polygons over covered pixels
@@ -23,10 +24,20 @@ struct RenderedFrame {
   Image<float> depth;  // linear view depth, negative where nothing is drawn
 };
 
-// Colour PSNR (dB) of an image against a reference over the pixels the reference covers.
-double psnr_over_covered(const RenderedFrame& reference, const Image8& image);
+// The three renders the figures compare, all with the instances the sampler draws as polygons:
+// the frame (the rest as points), the reference (the rest as polygons), and those polygons alone.
+// The plants drawn as polygons hide what lies behind them in both renders alike.
+struct DensityRenders {
+  RenderedFrame points, polygons, occluders;
+};
 
-DensityFigures density_figures(const RenderedFrame& polygons, const RenderedFrame& points,
-                               const Image<std::uint32_t>& counts);
+// The pixels where the reference shows an object the frame draws as points: in front of the
+// polygons drawn alone.
+std::vector<bool> point_object_pixels(const RenderedFrame& polygons, const RenderedFrame& occluders);
+
+// Colour PSNR (dB) of an image against a reference over the given pixels.
+double psnr_over(const std::vector<bool>& pixels, const Image8& reference, const Image8& image);
+
+DensityFigures density_figures(const DensityRenders& renders, const Image<std::uint32_t>& counts);
 
 }  // namespace ecoview

@@ -1,7 +1,6 @@
 #include "app/render/point_samples.hpp"
 
 #include "pointgen/random.hpp"
-#include "pointgen/sampling/silhouette.hpp"
 #include "pointgen/sampling/surface_samples.hpp"
 
 #include <cmath>
@@ -32,9 +31,9 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle) {
       // Enough for the top of the band in which an instance is drawn both ways.
       info.samples = std::min(max_samples, static_cast<std::size_t>(std::ceil(1.3f * points_per_triangle * static_cast<float>(info.triangles))));
       const std::vector<pointgen::SurfaceSample> samples = pointgen::sample_surface(mesh, info.samples, pointgen::derive_seed(0x5a3, m));
-      info.silhouette = pointgen::mean_silhouette_area(samples, info.area, b);
       for (const pointgen::SurfaceSample& s : samples) {
         positions.emplace_back(s.position, 1.0f);
+        info.sample_positions.push_back(s.position);
         normals.emplace_back(s.normal, 0.0f);
         colors.emplace_back(s.color, 1.0f);
       }

@@ -35,9 +35,9 @@ struct RenderSettings {
   int shadow_splat_size = 2;  // texels per side in the shadow map
   float points_per_triangle = 4.0f;  // a point costs 1/this of a triangle (the point-or-polygon choice)
   bool point_meshes_only = false;    // draw nothing else (for the density figures)
-  // For the density figures: draw the instances the sampler makes points as points only (no
-  // polygons at all), or the same instances as polygons (their reference).
-  enum class Measure { off, points_only, their_polygons } measure = Measure::off;
+  // For the density figures: draw the instances the sampler makes points as polygons instead
+  // (their reference), or not at all (what the rest hides); those it makes polygons stay.
+  enum class Measure { off, their_polygons, without_them } measure = Measure::off;
   bool aliasing = false;  // fill the frame's aliasing target (the `aliasing` AOV, alias_p95)
 };
 

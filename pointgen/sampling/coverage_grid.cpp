@@ -5,8 +5,20 @@
 
 namespace pointgen {
 
-CoverageGrid::CoverageGrid(const glm::mat4& view_projection, glm::ivec2 tiles)
-    : view_projection_(view_projection), tiles_(glm::max(tiles, glm::ivec2(1))), transmittance_(static_cast<std::size_t>(tiles_.x) * tiles_.y, 1.0f) {}
+CoverageGrid::CoverageGrid(const glm::mat4& view_projection, glm::ivec2 cells)
+    : view_projection_(view_projection),
+      cells_(glm::max(cells, glm::ivec2(1))),
+      tiles_((cells_ + tile_cells - 1) / tile_cells),
+      covered_(static_cast<std::size_t>(cells_.x) * cells_.y, 0),
+      transmittance_(static_cast<std::size_t>(tiles_.x) * tiles_.y, 1.0f),
+      cell_share_(transmittance_.size()) {
+  for (int ty = 0; ty < tiles_.y; ++ty) {
+    for (int tx = 0; tx < tiles_.x; ++tx) {
+      const int w = std::min(tile_cells, cells_.x - tx * tile_cells), h = std::min(tile_cells, cells_.y - ty * tile_cells);
+      cell_share_[static_cast<std::size_t>(ty) * tiles_.x + tx] = 1.0f / static_cast<float>(w * h);
+    }
+  }
+}
 
 std::optional<CoverageGrid::Rect> CoverageGrid::project(const std::array<glm::vec3, 8>& corners) const {
   Rect rect{glm::vec2(INFINITY), glm::vec2(-INFINITY)};
@@ -28,13 +40,13 @@ float CoverageGrid::ndc_area_per_square_metre(const glm::vec3& point) const {
 
 template <class Visit>
 void CoverageGrid::for_tiles(const Rect& rect, Visit visit) const {
-  // Tile coordinates: [0, tiles) across the screen's [-1, 1].
-  const glm::vec2 size(tiles_);
+  // Tile coordinates: [0, tiles) across the screen's [-1, 1] (the last tile may reach past it).
+  const glm::vec2 size = glm::vec2(cells_) / static_cast<float>(tile_cells);
   const glm::vec2 lo = glm::clamp((rect.min + 1.0f) * 0.5f * size, glm::vec2(0.0f), size);
   const glm::vec2 hi = glm::clamp((rect.max + 1.0f) * 0.5f * size, glm::vec2(0.0f), size);
   if (!(hi.x > lo.x && hi.y > lo.y)) return;
   const int x1 = static_cast<int>(lo.x), y1 = static_cast<int>(lo.y);
-  const int x2 = static_cast<int>(std::ceil(hi.x)) - 1, y2 = static_cast<int>(std::ceil(hi.y)) - 1;
+  const int x2 = std::min(static_cast<int>(std::ceil(hi.x)), tiles_.x) - 1, y2 = std::min(static_cast<int>(std::ceil(hi.y)), tiles_.y) - 1;
   for (int y = y1; y <= y2; ++y) {
     const float fy = std::min(hi.y, y + 1.0f) - std::max(lo.y, static_cast<float>(y));
     for (int x = x1; x <= x2; ++x) {
@@ -53,8 +65,21 @@ float CoverageGrid::transmittance(const Rect& rect) const {
   return weight > 0.0f ? sum / weight : 1.0f;
 }
 
-void CoverageGrid::cover(const Rect& rect, float opacity) {
-  for_tiles(rect, [&](std::size_t tile, float fraction) { transmittance_[tile] *= 1.0f - opacity * fraction; });
+void CoverageGrid::cover(std::span<const glm::vec3> points, const glm::mat4& transform) {
+  const glm::mat4 m = view_projection_ * transform;
+  const glm::vec2 size(cells_);
+  for (const glm::vec3& p : points) {
+    const glm::vec4 clip = m * glm::vec4(p, 1.0f);
+    if (!(clip.w > 1e-6f)) continue;
+    const glm::vec2 cell = glm::floor((glm::vec2(clip) / clip.w * 0.5f + 0.5f) * size);
+    if (!(cell.x >= 0.0f && cell.y >= 0.0f && cell.x < size.x && cell.y < size.y)) continue;
+    const int x = static_cast<int>(cell.x), y = static_cast<int>(cell.y);
+    std::uint8_t& covered = covered_[static_cast<std::size_t>(y) * cells_.x + x];
+    if (covered) continue;
+    covered = 1;
+    const std::size_t tile = static_cast<std::size_t>(y / tile_cells) * tiles_.x + x / tile_cells;
+    transmittance_[tile] = std::max(0.0f, transmittance_[tile] - cell_share_[tile]);
+  }
 }
 
 }  // namespace pointgen

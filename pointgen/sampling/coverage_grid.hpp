@@ -2,14 +2,17 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace pointgen {
 
-// How much of a view is already covered, in screen tiles of a few pixels, as objects are added
-// front to back: the sampler's occlusion model (docs/point_density.md, "Occlusion"). Each tile
-// keeps its transmittance, the fraction of it through which objects behind can still be seen.
+// Which parts of a view are already covered, as objects are added front to back: the sampler's
+// occlusion model (docs/point_density.md, "Occlusion"). The view is cut into cells the size of a
+// point's splat, each covered once a point falls in it; tiles of 4 x 4 cells keep their
+// transmittance, the fraction through which objects behind can still be seen.
 class CoverageGrid {
  public:
   // A rectangle in normalized device coordinates.
@@ -18,16 +21,21 @@ class CoverageGrid {
     float area() const { return (max.x - min.x) * (max.y - min.y); }
   };
 
-  CoverageGrid(const glm::mat4& view_projection, glm::ivec2 tiles);
+  static constexpr int tile_cells = 4;  // per side of a tile
+
+  // `cells` across the view: its pixels divided by the splat size.
+  CoverageGrid(const glm::mat4& view_projection, glm::ivec2 cells);
 
   // The screen rectangle holding a box (its eight corners), or none when part of it lies behind the eye.
   std::optional<Rect> project(const std::array<glm::vec3, 8>& corners) const;
   // Square NDC units that one square metre facing the view covers at `point`.
   float ndc_area_per_square_metre(const glm::vec3& point) const;
+  // How many cells `rect` spans, on screen or not.
+  float cells_in(const Rect& rect) const { return 0.25f * rect.area() * static_cast<float>(cells_.x) * static_cast<float>(cells_.y); }
   // Mean transmittance over the part of `rect` on screen (1 where nothing covers it yet).
   float transmittance(const Rect& rect) const;
-  // Adds an object spread over `rect` that hides `opacity` (0..1) of what lies behind it.
-  void cover(const Rect& rect, float opacity);
+  // Covers the cells in which `points` fall (in their object's frame, placed by `transform`).
+  void cover(std::span<const glm::vec3> points, const glm::mat4& transform);
 
  private:
   // Calls visit(tile index, fraction of the tile inside rect) for each tile the rect overlaps.
@@ -35,8 +43,10 @@ class CoverageGrid {
   void for_tiles(const Rect& rect, Visit visit) const;
 
   glm::mat4 view_projection_;
-  glm::ivec2 tiles_;
-  std::vector<float> transmittance_;
+  glm::ivec2 cells_, tiles_;
+  std::vector<std::uint8_t> covered_;  // per cell
+  std::vector<float> transmittance_;   // per tile
+  std::vector<float> cell_share_;      // per tile: what one of its cells is of it (edge tiles are smaller)
 };
 
 }  // namespace pointgen

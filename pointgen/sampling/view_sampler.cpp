@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <span>
 #include <tuple>
 
 namespace pointgen {
@@ -15,7 +16,6 @@ namespace {
 // The band around break-even, as ratios of needed points to the polygon-equivalent count, in which
 // an instance is drawn both as points and as polygons.
 constexpr float band_low = 0.8f, band_high = 1.25f;
-constexpr int tile_pixels = 4;  // per side of a coverage tile
 
 using Frustum = std::array<glm::vec4, 6>;
 
@@ -74,19 +74,21 @@ std::array<glm::vec3, 8> box_corners(const SampledMesh& mesh, const glm::mat4& t
   return corners;
 }
 
-// The share of an object's points a view needs, and the grid updated with it. The object's
-// silhouette fills that much of its screen rectangle, hiding what lies behind there. Tiles count as
-// uniformly covered, which cannot see the exact gaps between objects, so an object keeps its full
-// count until nearly all of its rectangle is hidden and only then fades out.
-float visible_share(CoverageGrid& coverage, const SampledMesh& mesh, const glm::mat4& transform, const Candidate& c,
-                    float full_count_transmittance) {
-  if (!(mesh.silhouette > 0.0f && mesh.area > 0.0f)) return 1.0f;
-  const std::optional<CoverageGrid::Rect> rect = coverage.project(box_corners(mesh, transform));
-  if (!rect || !(rect->area() > 0.0f)) return 1.0f;
-  const float silhouette = mesh.silhouette * (c.area / mesh.area) * coverage.ndc_area_per_square_metre(c.center);
-  const float share = std::min(1.0f, coverage.transmittance(*rect) / full_count_transmittance);
-  coverage.cover(*rect, std::min(1.0f, silhouette / rect->area()));
-  return share;
+// The share of its points an object keeps when objects in front hide `transmittance` of its screen
+// rectangle on average. Tiles take coverage as spread over their area, which cannot see the exact
+// gaps between objects, so an object keeps its full count until nearly all of its rectangle is
+// hidden and only then fades out.
+float visible_share(float transmittance, float full_count_transmittance) {
+  return std::min(1.0f, transmittance / full_count_transmittance);
+}
+
+// Covers the cells of the first `drawn` of an object's samples, but of no more than a few per cell
+// of its rectangle: more add no coverage.
+void cover(CoverageGrid& coverage, const SampledMesh& mesh, const glm::mat4& transform, const CoverageGrid::Rect& rect,
+           std::size_t drawn) {
+  const auto enough = static_cast<std::size_t>(4.0f * coverage.cells_in(rect)) + 1;
+  const std::size_t n = std::min({drawn, enough, mesh.sample_positions.size()});
+  coverage.cover(std::span(mesh.sample_positions).first(n), transform);
 }
 
 // The instance's threshold in [0, 1) for rounding its count.
@@ -102,7 +104,10 @@ SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTabl
   frame.polygons.resize(tables.size());
   // Occlusion and the cap need one image; several views (cube maps) count every instance whole.
   std::optional<CoverageGrid> coverage;
-  if ((view.occlusion || view.cap_to_pixels) && view.views.size() == 1) coverage.emplace(view.views.front(), view.pixels / tile_pixels);
+  if ((view.occlusion || view.cap_to_pixels) && view.views.size() == 1) {
+    const int splat = std::max(view.splat_pixels, 1);
+    coverage.emplace(view.views.front(), (view.pixels + splat - 1) / splat);
+  }
   const float ndc_to_pixels = 0.25f * static_cast<float>(view.pixels.x) * static_cast<float>(view.pixels.y);
   for (const Candidate& c : visible_instances(view, tables, meshes)) {
     const SampledMesh& mesh = meshes[tables[c.table].mesh];
@@ -115,9 +120,10 @@ SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTabl
       needed = std::min(needed, view.density.k * 0.5f * c.area * coverage->ndc_area_per_square_metre(c.center) * ndc_to_pixels);
     }
     // Only point meshes hide others: ground and buildings are large and far from their bounds.
-    if (coverage && view.occlusion && mesh.samples > 0) {
-      needed *= visible_share(*coverage, mesh, tables[c.table].transforms[c.instance], c, view.full_count_transmittance);
-    }
+    const glm::mat4& transform = tables[c.table].transforms[c.instance];
+    std::optional<CoverageGrid::Rect> rect;
+    if (coverage && view.occlusion && !mesh.sample_positions.empty()) rect = coverage->project(box_corners(mesh, transform));
+    if (rect) needed *= visible_share(coverage->transmittance(*rect), view.full_count_transmittance);
     const float polygon_equivalent = view.points_per_triangle * static_cast<float>(mesh.triangles);
     const float ratio = needed / polygon_equivalent;
     const bool as_polygons = ratio > band_low || needed > static_cast<float>(mesh.samples);
@@ -134,6 +140,7 @@ SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTabl
       frame.polygons[c.table].push_back(c.instance);
       frame.triangle_count += mesh.triangles;
     }
+    if (rect) cover(*coverage, mesh, transform, *rect, as_polygons ? mesh.samples : (as_points ? count : 0));
   }
   return frame;
 }

@@ -14,7 +14,9 @@ struct SampledMesh {
   std::size_t triangles = 0;
   std::size_t samples = 0;      // length of its surface-sample list
   glm::vec3 half_size{0.0f};    // of its bounds box, around `center`
-  float silhouette = 0.0f;      // mean silhouette area, square metres (0: unknown, never occludes)
+  // Its samples' positions in the mesh's frame, for the occlusion model (none: it never hides
+  // others nor is hidden).
+  std::vector<glm::vec3> sample_positions;
 };
 
 // The view: what to cull against, the eye, and the density.
@@ -38,7 +40,8 @@ struct SamplerView {
   // falls linearly to none. The frame keeps full counts until 99 % is hidden (holes show); at 1 the
   // count is the expected visible share, which suits the shadow map.
   float full_count_transmittance = 0.01f;
-  glm::ivec2 pixels{256, 256};  // the (first) view's image size; occlusion tiles are 4 pixels
+  glm::ivec2 pixels{256, 256};  // the (first) view's image size
+  int splat_pixels = 2;          // per side of a point's splat: what a point hides (>= 1)
   // For a shadow map: counts follow the camera, but the map holds no more than k points per texel
   // of a caster's projected surface, so no caster gets more (with one view).
   bool cap_to_pixels = false;
