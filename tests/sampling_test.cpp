@@ -198,6 +198,8 @@ TEST(CoverageGrid, TilesKeepWhatTheirCellsLeaveUncovered) {
   EXPECT_NEAR(grid.transmittance(first_tile), 15.0f / 16.0f, 1e-6f);
   grid.cover(std::vector<glm::vec3>{{-0.79f, -0.89f, 0.0f}}, glm::mat4(1.0f));
   EXPECT_NEAR(grid.transmittance(first_tile), 15.0f / 16.0f, 1e-6f) << "a covered cell stays covered once";
+  EXPECT_NEAR(grid.transmittance({{-0.875f, -1.0f}, {-0.75f, -0.875f}}), 0.0f, 1e-6f) << "that cell alone";
+  EXPECT_NEAR(grid.transmittance({{-0.875f, -1.0f}, {-0.625f, -0.875f}}), 0.5f, 1e-6f) << "it and the next";
   grid.cover(std::vector<glm::vec3>{{-0.6f, -0.6f, 0.0f}}, glm::mat4(1.0f));
   EXPECT_NEAR(grid.transmittance(first_tile), 14.0f / 16.0f, 1e-6f);
   // Moved by the transform a screen's width to the right: the same cell of the third tile.
@@ -209,6 +211,12 @@ TEST(CoverageGrid, TilesKeepWhatTheirCellsLeaveUncovered) {
   // Off screen: nothing.
   grid.cover(std::vector<glm::vec3>{{1.0f, 0.0f, 0.0f}, {3.0f, 0.0f, 0.0f}, {0.0f, -1.01f, 0.0f}}, glm::mat4(1.0f));
   EXPECT_NEAR(grid.transmittance({{-1.0f, -1.0f}, {1.0f, 1.0f}}), (14.0f / 16.0f + 15.0f / 16.0f + 14.0f) / 16.0f, 1e-6f);
+  // A large rectangle reads whole tiles: a covered cell just outside it, in a tile it reaches into
+  // by half of each side, counts a quarter.
+  CoverageGrid large(glm::mat4(1.0f), {64, 64});
+  const float cell = 2.0f / 64.0f;
+  large.cover(std::vector<glm::vec3>{{-1.0f + 19.5f * cell, -1.0f + 19.5f * cell, 0.0f}}, glm::mat4(1.0f));
+  EXPECT_NEAR(large.transmittance({{-1.0f, -1.0f}, {-1.0f + 18.0f * cell, -1.0f + 18.0f * cell}}), 1.0f - 0.25f / 16.0f / 20.25f, 1e-6f);
   // Behind the eye: nothing, and a box reaching behind it has no rectangle.
   CoverageGrid perspective(glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f), {16, 16});
   perspective.cover(std::vector<glm::vec3>{{0.0f, 0.0f, 5.0f}}, glm::mat4(1.0f));

@@ -21,11 +21,6 @@ namespace {
 // Window-depth offset of point splats in shadow maps, against self-shadowing of point surfaces.
 constexpr float shadow_point_bias = 2e-5f;
 
-double elapsed_ms(const gl::Query& query) {
-  GLuint64 nanoseconds = 0;
-  glGetQueryObjectui64v(query.name(), GL_QUERY_RESULT, &nanoseconds);
-  return static_cast<double>(nanoseconds) * 1e-6;
-}
 
 // The nearest visible depth of a frame is taken with this margin, for surfaces that come nearer
 // by the next frame.
@@ -248,7 +243,7 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
     stats_.sample_ms += ms_since(start);
     if (!shadow_points_) shadow_points_ = std::make_unique<PointSplat>(glm::ivec2(settings_.shadow_size));
   }
-  glBeginQuery(GL_TIME_ELAPSED, shadow_timer_.name());
+  shadow_timer_.start();
   for (std::size_t layer = 0; layer < setup_.views.size(); ++layer) {
     if (settings_.points) upload_polygons(selections[layer]);
     shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer));
@@ -258,19 +253,17 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
     shadow_points_->splat(v.view_projection(), settings_.shadow_splat_size, shadow_point_bias, false, v.paraboloid_parameters());
     shadow_pass_.add_points(*shadow_points_, static_cast<int>(layer));
   }
-  glEndQuery(GL_TIME_ELAPSED);
-  stats_.shadow_pass_ms = elapsed_ms(shadow_timer_);
+  stats_.shadow_pass_ms = shadow_timer_.stop_ms();
 }
 
 // The frame drawn without shadows leaves the depth the volumes are counted against; timed as the
 // shadow pass.
 FramePass::ShadowLookup Renderer::render_shadow_volumes(const shadow::Camera& camera, const shadow::Light& light) {
   setup_ = {{}, shadow::ViewSelection::screen_mask, "volumes"};
-  glBeginQuery(GL_TIME_ELAPSED, shadow_timer_.name());
+  shadow_timer_.start();
   draw_frame(camera, light, std::nullopt);
   volume_pass_->render(gpu_scene_, view_projection_, light);
-  glEndQuery(GL_TIME_ELAPSED);
-  stats_.shadow_pass_ms = elapsed_ms(shadow_timer_);
+  stats_.shadow_pass_ms = shadow_timer_.stop_ms();
   return {volume_pass_->light_mask(), setup_, 0};
 }
 
@@ -372,10 +365,9 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   }
   if (shadows && volumes) lookup.emplace(render_shadow_volumes(camera, light));
   if (shadows && reference) lookup.emplace(render_reference_mask(camera, light));
-  glBeginQuery(GL_TIME_ELAPSED, frame_timer_.name());
+  frame_timer_.start();
   draw_frame(camera, light, lookup);
-  glEndQuery(GL_TIME_ELAPSED);
-  stats_.frame_pass_ms = elapsed_ms(frame_timer_);
+  stats_.frame_pass_ms = frame_timer_.stop_ms();
   stats_.points = selection.point_count;
   for (const pointgen::InstanceTable& table : tables_) {
     const bool sampled = settings_.points && scene_.point_meshes[table.mesh];

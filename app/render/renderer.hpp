@@ -1,4 +1,5 @@
 #pragma once
+#include "app/gl/gpu_timer.hpp"
 #include "app/render/frame_pass.hpp"
 #include "app/render/gpu_scene.hpp"
 #include "app/render/point_samples.hpp"
@@ -127,7 +128,7 @@ class Renderer {
   std::vector<shadow::SurfacePoint> last_surface_;  // auto: sampled from the last frame
   glm::mat4 view_projection_{1.0f};  // of the last frame
   FrameStats stats_;
-  gl::Query shadow_timer_{GL_TIME_ELAPSED}, frame_timer_{GL_TIME_ELAPSED};
+  gl::GpuTimer shadow_timer_, frame_timer_;
 };
 
 }  // namespace ecoview

@@ -39,29 +39,38 @@ float CoverageGrid::ndc_area_per_square_metre(const glm::vec3& point) const {
 }
 
 template <class Visit>
-void CoverageGrid::for_tiles(const Rect& rect, Visit visit) const {
-  // Tile coordinates: [0, tiles) across the screen's [-1, 1] (the last tile may reach past it).
-  const glm::vec2 size = glm::vec2(cells_) / static_cast<float>(tile_cells);
+void CoverageGrid::for_squares(const Rect& rect, int cells_per_side, glm::ivec2 squares, Visit visit) const {
+  // Square coordinates: [0, squares) across the screen's [-1, 1] (the last may reach past it).
+  const glm::vec2 size = glm::vec2(cells_) / static_cast<float>(cells_per_side);
   const glm::vec2 lo = glm::clamp((rect.min + 1.0f) * 0.5f * size, glm::vec2(0.0f), size);
   const glm::vec2 hi = glm::clamp((rect.max + 1.0f) * 0.5f * size, glm::vec2(0.0f), size);
   if (!(hi.x > lo.x && hi.y > lo.y)) return;
   const int x1 = static_cast<int>(lo.x), y1 = static_cast<int>(lo.y);
-  const int x2 = std::min(static_cast<int>(std::ceil(hi.x)), tiles_.x) - 1, y2 = std::min(static_cast<int>(std::ceil(hi.y)), tiles_.y) - 1;
+  const int x2 = std::min(static_cast<int>(std::ceil(hi.x)), squares.x) - 1, y2 = std::min(static_cast<int>(std::ceil(hi.y)), squares.y) - 1;
   for (int y = y1; y <= y2; ++y) {
     const float fy = std::min(hi.y, y + 1.0f) - std::max(lo.y, static_cast<float>(y));
     for (int x = x1; x <= x2; ++x) {
       const float fx = std::min(hi.x, x + 1.0f) - std::max(lo.x, static_cast<float>(x));
-      visit(static_cast<std::size_t>(y) * tiles_.x + x, fx * fy);
+      visit(static_cast<std::size_t>(y) * squares.x + x, fx * fy);
     }
   }
 }
 
 float CoverageGrid::transmittance(const Rect& rect) const {
   float sum = 0.0f, weight = 0.0f;
-  for_tiles(rect, [&](std::size_t tile, float fraction) {
-    sum += fraction * transmittance_[tile];
-    weight += fraction;
-  });
+  // Small rectangles cell by cell, so that a small object in a tile that is mostly covered
+  // counts as hidden where it is; large ones by tiles.
+  if (cells_in(rect) <= static_cast<float>(max_cells_read)) {
+    for_squares(rect, 1, cells_, [&](std::size_t cell, float fraction) {
+      sum += covered_[cell] ? 0.0f : fraction;
+      weight += fraction;
+    });
+  } else {
+    for_squares(rect, tile_cells, tiles_, [&](std::size_t tile, float fraction) {
+      sum += fraction * transmittance_[tile];
+      weight += fraction;
+    });
+  }
   return weight > 0.0f ? sum / weight : 1.0f;
 }
 

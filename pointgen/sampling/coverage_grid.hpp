@@ -38,9 +38,12 @@ class CoverageGrid {
   void cover(std::span<const glm::vec3> points, const glm::mat4& transform);
 
  private:
-  // Calls visit(tile index, fraction of the tile inside rect) for each tile the rect overlaps.
+  static constexpr int max_cells_read = 256;  // a rectangle's transmittance from its cells up to this
+
+  // Calls visit(index, fraction of the square inside rect) for each square the rect overlaps, of
+  // a grid of `squares` over the view, each `cells_per_side` cells wide.
   template <class Visit>
-  void for_tiles(const Rect& rect, Visit visit) const;
+  void for_squares(const Rect& rect, int cells_per_side, glm::ivec2 squares, Visit visit) const;
 
   glm::mat4 view_projection_;
   glm::ivec2 cells_, tiles_;
