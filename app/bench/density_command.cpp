@@ -120,6 +120,7 @@ class DensityBench {
         run.figures = {{"holes", f.holes}, {"psnr", f.psnr}, {"psnr_floor", psnr_floor}, {"pts_per_px", f.pts_per_px},
                        {"pts_per_px_cv", f.pts_per_px_cv}, {"pts_per_px_near", f.pts_per_px_near},
                        {"pts_per_px_middle", f.pts_per_px_middle}, {"pts_per_px_far", f.pts_per_px_far},
+                       {"pixels_near", f.third_pixels[0]}, {"pixels_middle", f.third_pixels[1]}, {"pixels_far", f.third_pixels[2]},
                        {"points", points.stats().points}, {"triangles", points.stats().triangles},
                        {"frame_ms", timing.frame_ms}, {"sample_ms", timing.sample_ms}, {"frame_pass_ms", timing.frame_pass_ms},
                        {"sampler_mpts", timing.sample_ms > 0 ? 1e-3 * static_cast<double>(points.stats().points) / timing.sample_ms : 0.0}};

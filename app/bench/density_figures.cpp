@@ -46,7 +46,7 @@ DensityFigures density_figures(const DensityRenders& renders, const Image<std::u
   }
   std::size_t holes = 0;
   double sum = 0.0, sum_squares = 0.0;
-  std::array<double, 3> third_points{}, third_pixels{};
+  std::array<double, 3> third_points{};
   for (std::size_t i = 0; i < covered.size(); ++i) {
     if (!covered[i]) continue;
     ++f.covered;
@@ -56,7 +56,7 @@ DensityFigures density_figures(const DensityRenders& renders, const Image<std::u
     sum_squares += n * n;
     const auto third = static_cast<std::size_t>(std::min(2.0f, 3.0f * (depth[i] - near) / std::max(far - near, 1e-6f)));
     third_points[third] += n;
-    third_pixels[third] += 1.0;
+    ++f.third_pixels[third];
   }
   if (f.covered == 0) return f;
   const auto n_covered = static_cast<double>(f.covered);
@@ -64,9 +64,12 @@ DensityFigures density_figures(const DensityRenders& renders, const Image<std::u
   f.psnr = psnr_over(covered, renders.polygons.color, renders.points.color);
   f.pts_per_px = sum / n_covered;
   f.pts_per_px_cv = f.pts_per_px > 0.0 ? std::sqrt(std::max(0.0, sum_squares / n_covered - f.pts_per_px * f.pts_per_px)) / f.pts_per_px : 0.0;
-  f.pts_per_px_near = third_pixels[0] > 0 ? third_points[0] / third_pixels[0] : 0.0;
-  f.pts_per_px_middle = third_pixels[1] > 0 ? third_points[1] / third_pixels[1] : 0.0;
-  f.pts_per_px_far = third_pixels[2] > 0 ? third_points[2] / third_pixels[2] : 0.0;
+  const auto mean_in = [&](int third) {
+    return f.third_pixels[third] > 0 ? third_points[third] / static_cast<double>(f.third_pixels[third]) : 0.0;
+  };
+  f.pts_per_px_near = mean_in(0);
+  f.pts_per_px_middle = mean_in(1);
+  f.pts_per_px_far = mean_in(2);
   return f;
 }
 

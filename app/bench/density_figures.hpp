@@ -1,6 +1,7 @@
 #pragma once
 #include "app/render/image.hpp"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -16,6 +17,7 @@ struct DensityFigures {
   double pts_per_px_near = 0.0;  // mean over covered pixels in the nearest third of their depth range
   double pts_per_px_middle = 0.0;
   double pts_per_px_far = 0.0;
+  std::array<std::size_t, 3> third_pixels{};  // covered pixels in the nearest, middle and farthest third
   std::size_t covered = 0;
 };
 
