@@ -21,7 +21,6 @@ namespace {
 // Window-depth offset of point splats in shadow maps, against self-shadowing of point surfaces.
 constexpr float shadow_point_bias = 2e-5f;
 
-
 // The nearest visible depth of a frame is taken with this margin, for surfaces that come nearer
 // by the next frame.
 constexpr float nearest_visible_margin = 0.8f;
@@ -234,8 +233,7 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
       view.splat_pixels = settings_.shadow_splat_size;
       view.cap_to_pixels = true;
       // Layer under layer of canopy as the light sees it: counts follow the expected visible share
-      // (docs/benchmarks.md: 30.3 M shadow points down to 8.5 M in the default view, polygon-shadowed
-      // pixels lit 0.34 % against 0.51 %).
+      // (docs/point_density.md, "Occlusion"; what it costs and saves in docs/benchmarks.md).
       view.full_count_transmittance = 1.0f;
       selections.push_back(pointgen::sample_view(view, tables_, samples_.meshes()));
       stats_.shadow_points += selections.back().point_count;

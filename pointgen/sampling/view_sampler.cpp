@@ -75,9 +75,9 @@ std::array<glm::vec3, 8> box_corners(const SampledMesh& mesh, const glm::mat4& t
 }
 
 // The share of its points an object keeps when objects in front hide `transmittance` of its screen
-// rectangle on average. Tiles take coverage as spread over their area, which cannot see the exact
-// gaps between objects, so an object keeps its full count until nearly all of its rectangle is
-// hidden and only then fades out.
+// rectangle on average. Its points are a prefix of a list spread over all of it, so they cannot
+// follow which part is hidden: it keeps its full count until nearly all of its rectangle is hidden
+// and only then fades out.
 float visible_share(float transmittance, float full_count_transmittance) {
   return std::min(1.0f, transmittance / full_count_transmittance);
 }
