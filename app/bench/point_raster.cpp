@@ -47,8 +47,8 @@ void PointRaster::upload(const std::vector<pointgen::PointDraw>& draws, const st
   for (const pointgen::PointDraw& d : draws) {
     const pointgen::InstanceTable& table = tables[d.table];
     const auto instance = static_cast<GLuint>(instances.size());
-    gpu_draws.emplace_back(static_cast<GLuint>(first_point), d.count, samples.first_sample(table.mesh), instance);
-    commands.push_back({d.count, 1, samples.first_sample(table.mesh), instance});
+    gpu_draws.emplace_back(static_cast<GLuint>(first_point), d.count, samples.first_sample(table.mesh) + d.first, instance);
+    commands.push_back({d.count, 1, samples.first_sample(table.mesh) + d.first, instance});
     instances.push_back({table.transforms[d.instance], glm::vec4(table.tints[d.instance], 1.0f)});
     first_point += d.count;
   }

@@ -31,14 +31,21 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle) {
       // Enough for the top of the band in which an instance is drawn both ways.
       info.samples = std::min(max_samples, static_cast<std::size_t>(std::ceil(1.3f * points_per_triangle * static_cast<float>(info.triangles))));
       const std::vector<pointgen::SurfaceSample> samples = pointgen::sample_surface(mesh, info.samples, pointgen::derive_seed(0x5a3, m));
-      for (const pointgen::SurfaceSample& s : samples) {
+      for (const pointgen::SurfaceSample& s : samples) info.sample_positions.push_back(s.position);
+      pointgen::MeshSplit split = pointgen::split_into_parts(info.sample_positions, info.area);
+      info.parts = std::move(split.parts);
+      const auto add = [&](const pointgen::SurfaceSample& s) {
         positions.emplace_back(s.position, 1.0f);
-        info.sample_positions.push_back(s.position);
         normals.emplace_back(s.normal, 0.0f);
         colors.emplace_back(s.color, 1.0f);
+      };
+      for (const pointgen::SurfaceSample& s : samples) add(s);
+      for (std::uint32_t i : split.order) {
+        add(samples[i]);
+        info.sample_positions.push_back(samples[i].position);
       }
     }
-    meshes_.push_back(info);
+    meshes_.push_back(std::move(info));
   }
   gl::store(positions_, positions);
   gl::store(normals_, normals);

@@ -8,8 +8,9 @@
 namespace ecoview {
 
 // The surface samples of every point mesh in GL buffers (positions, normals, colours as vec4
-// arrays, one list after another), and what the view sampler needs to know of each mesh. A list
-// is as long as the most points an instance takes before polygons are cheaper.
+// arrays, one mesh after another), and what the view sampler needs to know of each mesh. A mesh's
+// list is its whole list, as long as the most points an instance takes before polygons are
+// cheaper, then the same samples again in its parts' lists.
 class PointSamples {
  public:
   PointSamples(const Scene& scene, float points_per_triangle);

@@ -58,7 +58,7 @@ void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std
     if (first_point + d.count > max_points) {
       throw RuntimeFailure("a frame needs more than " + std::to_string(max_points) + " points; lower --k or the frame size");
     }
-    gpu_draws.emplace_back(static_cast<std::uint32_t>(first_point), d.count, samples.first_sample(table.mesh),
+    gpu_draws.emplace_back(static_cast<std::uint32_t>(first_point), d.count, samples.first_sample(table.mesh) + d.first,
                            static_cast<std::uint32_t>(instances.size()));
     instances.push_back({table.transforms[d.instance], glm::vec4(table.tints[d.instance], 1.0f)});
     first_point += d.count;

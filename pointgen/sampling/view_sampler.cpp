@@ -16,6 +16,9 @@ namespace {
 // The band around break-even, as ratios of needed points to the polygon-equivalent count, in which
 // an instance is drawn both as points and as polygons.
 constexpr float band_low = 0.8f, band_high = 1.25f;
+// An instance certainly drawn as points whose screen rectangle spans more cells than this is
+// counted by parts.
+constexpr float cells_to_split = 256.0f;
 
 using Frustum = std::array<glm::vec4, 6>;
 
@@ -28,17 +31,72 @@ Frustum frustum_planes(const glm::mat4& m) {
   return planes;
 }
 
-// An instance inside one of the views, with what the count needs of it.
+// What is counted, hidden and drawn as one: an instance inside one of the views, or a part of it.
 struct Candidate {
   std::uint32_t table = 0, instance = 0;
+  const MeshPart* part = nullptr;  // none: the whole instance
   glm::vec3 center{0.0f};
   float radius = 0.0f;
-  float area = 0.0f;       // square metres
-  float order = 0.0f;      // depth in the first view: sorted front to back
+  float area = 0.0f;   // square metres
+  float order = 0.0f;  // depth in the first view: sorted front to back
 };
 
-std::vector<Candidate> visible_instances(const SamplerView& view, const std::vector<InstanceTable>& tables,
-                                         const std::vector<SampledMesh>& meshes) {
+bool inside_any(const std::vector<Frustum>& frusta, const glm::vec3& center, float radius) {
+  return std::any_of(frusta.begin(), frusta.end(), [&](const Frustum& planes) {
+    return std::all_of(planes.begin(), planes.end(), [&](const glm::vec4& p) { return glm::dot(glm::vec3(p), center) + p.w >= -radius; });
+  });
+}
+
+float uniform_scale(const glm::mat4& transform) { return std::cbrt(std::abs(glm::determinant(glm::mat3(transform)))); }
+
+// The eight corners of a box in a mesh's frame under an instance's transform.
+std::array<glm::vec3, 8> box_corners(const glm::vec3& center, const glm::vec3& half_size, const glm::mat4& transform) {
+  std::array<glm::vec3, 8> corners;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 sign((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f);
+    corners[i] = glm::vec3(transform * glm::vec4(center + sign * half_size, 1.0f));
+  }
+  return corners;
+}
+
+std::array<glm::vec3, 8> box_corners(const Candidate& c, const SampledMesh& mesh, const glm::mat4& transform) {
+  return c.part ? box_corners(c.part->center, c.part->half_size, transform) : box_corners(mesh.center, mesh.half_size, transform);
+}
+
+float polygon_equivalent(const SamplerView& view, const SampledMesh& mesh) {
+  return view.points_per_triangle * static_cast<float>(mesh.triangles);
+}
+
+// Points for k per pixel of the candidate's surface, before anything hides it. With the cap, the
+// coverage grid is the map's image.
+float unoccluded_count(const SamplerView& view, const CoverageGrid* coverage, const Candidate& c) {
+  // Distances to the centre: the count is right on average over the object (docs/point_density.md).
+  const float distance = std::max(glm::distance(view.eye, c.center), std::max(0.5f * c.radius, 1e-3f));
+  const float depth = std::max(glm::dot(c.center - view.eye, view.forward), distance * view.edge_cos);
+  float needed = points_needed(view.density, c.area, depth, distance);
+  if (coverage && view.cap_to_pixels) {
+    // Randomly oriented two-sided surface projects to half its area (docs/point_density.md).
+    const float ndc_to_pixels = 0.25f * static_cast<float>(view.pixels.x) * static_cast<float>(view.pixels.y);
+    needed = std::min(needed, view.density.k * 0.5f * c.area * coverage->ndc_area_per_square_metre(c.center) * ndc_to_pixels);
+  }
+  return needed;
+}
+
+// Whether an instance is counted by parts: when it is certainly drawn as points (whatever hides
+// it, it stays below the band) and its screen rectangle is large, so that its front can hide its back.
+bool counted_by_parts(const SamplerView& view, const CoverageGrid& coverage, const SampledMesh& mesh, const glm::mat4& transform,
+                      const Candidate& whole) {
+  if (mesh.parts.empty() || mesh.sample_positions.empty()) return false;
+  const float needed = unoccluded_count(view, &coverage, whole);
+  if (!(needed < std::min(band_low * polygon_equivalent(view, mesh), static_cast<float>(mesh.samples)))) return false;
+  const std::optional<CoverageGrid::Rect> rect = coverage.project(box_corners(mesh.center, mesh.half_size, transform));
+  return rect && coverage.cells_in(*rect) > cells_to_split;
+}
+
+// The instances in view, large near ones by their parts in view, sorted front to back. `coverage`
+// (when occlusion is on) decides which instances are large.
+std::vector<Candidate> candidates_in_view(const SamplerView& view, const std::vector<InstanceTable>& tables,
+                                          const std::vector<SampledMesh>& meshes, const CoverageGrid* coverage) {
   std::vector<Frustum> frusta;
   for (const glm::mat4& m : view.views) frusta.push_back(frustum_planes(m));
   std::vector<Candidate> visible;
@@ -46,32 +104,29 @@ std::vector<Candidate> visible_instances(const SamplerView& view, const std::vec
     const SampledMesh& mesh = meshes[tables[t].mesh];
     for (std::size_t i = 0; i < tables[t].size(); ++i) {
       const glm::mat4& m = tables[t].transforms[i];
-      const float scale = std::cbrt(std::abs(glm::determinant(glm::mat3(m))));
-      Candidate c{static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(i), glm::vec3(m * glm::vec4(mesh.center, 1.0f)),
-                  mesh.radius * scale, mesh.area * scale * scale};
-      const bool inside = std::any_of(frusta.begin(), frusta.end(), [&](const Frustum& planes) {
-        return std::all_of(planes.begin(), planes.end(), [&](const glm::vec4& p) { return glm::dot(glm::vec3(p), c.center) + p.w >= -c.radius; });
-      });
-      if (!inside) continue;
-      const glm::vec4 clip = view.views.front() * glm::vec4(c.center, 1.0f);
-      c.order = clip.w > 0.0f ? clip.z / clip.w : -INFINITY;  // centres behind the eye first
-      visible.push_back(c);
+      const float scale = uniform_scale(m);
+      const Candidate whole{static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(i), nullptr,
+                            glm::vec3(m * glm::vec4(mesh.center, 1.0f)), mesh.radius * scale, mesh.area * scale * scale};
+      if (!inside_any(frusta, whole.center, whole.radius)) continue;
+      if (!coverage || !counted_by_parts(view, *coverage, mesh, m, whole)) {
+        visible.push_back(whole);
+        continue;
+      }
+      for (const MeshPart& part : mesh.parts) {
+        const Candidate c{whole.table, whole.instance, &part, glm::vec3(m * glm::vec4(part.center, 1.0f)), part.radius * scale,
+                          part.area * scale * scale};
+        if (inside_any(frusta, c.center, c.radius)) visible.push_back(c);
+      }
     }
   }
+  for (Candidate& c : visible) {
+    const glm::vec4 clip = view.views.front() * glm::vec4(c.center, 1.0f);
+    c.order = clip.w > 0.0f ? clip.z / clip.w : -INFINITY;  // centres behind the eye first
+  }
   std::sort(visible.begin(), visible.end(), [](const Candidate& a, const Candidate& b) {
-    return std::tie(a.order, a.table, a.instance) < std::tie(b.order, b.table, b.instance);
+    return std::tie(a.order, a.table, a.instance, a.part) < std::tie(b.order, b.table, b.instance, b.part);
   });
   return visible;
-}
-
-// The eight corners of a mesh's bounds box under an instance's transform.
-std::array<glm::vec3, 8> box_corners(const SampledMesh& mesh, const glm::mat4& transform) {
-  std::array<glm::vec3, 8> corners;
-  for (int i = 0; i < 8; ++i) {
-    const glm::vec3 sign((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f);
-    corners[i] = glm::vec3(transform * glm::vec4(mesh.center + sign * mesh.half_size, 1.0f));
-  }
-  return corners;
 }
 
 // The share of its points an object keeps when objects in front hide `transmittance` of its screen
@@ -82,18 +137,19 @@ float visible_share(float transmittance, float full_count_transmittance) {
   return std::min(1.0f, transmittance / full_count_transmittance);
 }
 
-// Covers the cells of the first `drawn` of an object's samples, but of no more than a few per cell
-// of its rectangle: more add no coverage.
-void cover(CoverageGrid& coverage, const SampledMesh& mesh, const glm::mat4& transform, const CoverageGrid::Rect& rect,
-           std::size_t drawn) {
+// Covers the cells of the first `drawn` of an object's samples from `first` in its mesh's list,
+// but of no more than a few per cell of its rectangle: more add no coverage.
+void cover(CoverageGrid& coverage, const SampledMesh& mesh, std::uint32_t first, const glm::mat4& transform,
+           const CoverageGrid::Rect& rect, std::size_t drawn) {
   const auto enough = static_cast<std::size_t>(4.0f * coverage.cells_in(rect)) + 1;
-  const std::size_t n = std::min({drawn, enough, mesh.sample_positions.size()});
-  coverage.cover(std::span(mesh.sample_positions).first(n), transform);
+  const std::span<const glm::vec3> list = std::span(mesh.sample_positions).subspan(std::min<std::size_t>(first, mesh.sample_positions.size()));
+  coverage.cover(list.first(std::min({drawn, enough, list.size()})), transform);
 }
 
-// The instance's threshold in [0, 1) for rounding its count.
-float rounding(const InstanceTable& table, std::uint32_t instance) {
-  return Random(table.seeds.size() > instance ? table.seeds[instance] : instance).uniform();
+// The candidate's threshold in [0, 1) for rounding its count: fixed per instance and part.
+float rounding(const InstanceTable& table, const Candidate& c, const SampledMesh& mesh) {
+  const std::uint64_t seed = table.seeds.size() > c.instance ? table.seeds[c.instance] : c.instance;
+  return Random(c.part ? derive_seed(seed, static_cast<std::uint64_t>(c.part - mesh.parts.data()) + 1) : seed).uniform();
 }
 
 }  // namespace
@@ -108,39 +164,33 @@ SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTabl
     const int splat = std::max(view.splat_pixels, 1);
     coverage.emplace(view.views.front(), (view.pixels + splat - 1) / splat);
   }
-  const float ndc_to_pixels = 0.25f * static_cast<float>(view.pixels.x) * static_cast<float>(view.pixels.y);
-  for (const Candidate& c : visible_instances(view, tables, meshes)) {
+  const CoverageGrid* occlusion = coverage && view.occlusion ? &*coverage : nullptr;
+  for (const Candidate& c : candidates_in_view(view, tables, meshes, occlusion)) {
     const SampledMesh& mesh = meshes[tables[c.table].mesh];
-    // Distances to the centre: the count is right on average over the object (docs/point_density.md).
-    const float distance = std::max(glm::distance(view.eye, c.center), std::max(0.5f * c.radius, 1e-3f));
-    const float depth = std::max(glm::dot(c.center - view.eye, view.forward), distance * view.edge_cos);
-    float needed = points_needed(view.density, c.area, depth, distance);
-    if (coverage && view.cap_to_pixels) {
-      // Randomly oriented two-sided surface projects to half its area (docs/point_density.md).
-      needed = std::min(needed, view.density.k * 0.5f * c.area * coverage->ndc_area_per_square_metre(c.center) * ndc_to_pixels);
-    }
-    // Only point meshes hide others: ground and buildings are large and far from their bounds.
     const glm::mat4& transform = tables[c.table].transforms[c.instance];
+    float needed = unoccluded_count(view, coverage ? &*coverage : nullptr, c);
+    // Only point meshes hide others: ground and buildings are large and far from their bounds.
     std::optional<CoverageGrid::Rect> rect;
-    if (coverage && view.occlusion && !mesh.sample_positions.empty()) rect = coverage->project(box_corners(mesh, transform));
+    if (occlusion && !mesh.sample_positions.empty()) rect = occlusion->project(box_corners(c, mesh, transform));
     if (rect) needed *= visible_share(coverage->transmittance(*rect), view.full_count_transmittance);
-    const float polygon_equivalent = view.points_per_triangle * static_cast<float>(mesh.triangles);
-    const float ratio = needed / polygon_equivalent;
-    const bool as_polygons = ratio > band_low || needed > static_cast<float>(mesh.samples);
-    const bool as_points = ratio < band_high && mesh.samples > 0;
-    // Rounded up or down at the instance's own fixed threshold: unbiased over many small instances,
-    // and steady from frame to frame.
-    const auto count = static_cast<std::uint32_t>(std::min(std::floor(needed + rounding(tables[c.table], c.instance)),
-                                                           static_cast<float>(mesh.samples)));
+    const std::uint32_t first = c.part ? c.part->first : 0;
+    const std::size_t samples = c.part ? c.part->samples : mesh.samples;
+    const float ratio = needed / polygon_equivalent(view, mesh);
+    const bool as_polygons = !c.part && (ratio > band_low || needed > static_cast<float>(samples));
+    const bool as_points = (c.part || ratio < band_high) && samples > 0;
+    // Rounded up or down at the candidate's own fixed threshold: unbiased over many small
+    // instances, and steady from frame to frame.
+    const auto count = static_cast<std::uint32_t>(std::min(std::floor(needed + rounding(tables[c.table], c, mesh)),
+                                                           static_cast<float>(samples)));
     if (as_points && count > 0) {
-      frame.points.push_back({c.table, c.instance, count});
+      frame.points.push_back({c.table, c.instance, count, first});
       frame.point_count += count;
     }
     if (as_polygons) {
       frame.polygons[c.table].push_back(c.instance);
       frame.triangle_count += mesh.triangles;
     }
-    if (rect) cover(*coverage, mesh, transform, *rect, as_polygons ? mesh.samples : (as_points ? count : 0));
+    if (rect) cover(*coverage, mesh, first, transform, *rect, as_polygons ? mesh.samples : (as_points ? count : 0));
   }
   return frame;
 }

@@ -1,5 +1,6 @@
 #pragma once
 #include "pointgen/instance_table.hpp"
+#include "pointgen/sampling/mesh_parts.hpp"
 #include "pointgen/sampling/point_count.hpp"
 
 #include <vector>
@@ -14,9 +15,11 @@ struct SampledMesh {
   std::size_t triangles = 0;
   std::size_t samples = 0;      // length of its surface-sample list
   glm::vec3 half_size{0.0f};    // of its bounds box, around `center`
-  // Its samples' positions in the mesh's frame, for the occlusion model (none: it never hides
-  // others nor is hidden).
+  // Its sample list's positions in the mesh's frame, for the occlusion model (none: it never hides
+  // others nor is hidden): the whole list, then its parts' lists.
   std::vector<glm::vec3> sample_positions;
+  // Large near instances are counted part by part (none: always whole).
+  std::vector<MeshPart> parts;
 };
 
 // The view: what to cull against, the eye, and the density.
@@ -47,15 +50,17 @@ struct SamplerView {
   bool cap_to_pixels = false;
 };
 
-// One instance drawn as points: the first `count` samples of its mesh.
+// One instance, or one part of it, drawn as points: `count` samples of its mesh's list from
+// `first` (0 for the whole list's prefix, a part's `first` for the prefix of that part's list).
 struct PointDraw {
   std::uint32_t table = 0;
   std::uint32_t instance = 0;
   std::uint32_t count = 0;
+  std::uint32_t first = 0;
 };
 
 struct SampledFrame {
-  std::vector<PointDraw> points;
+  std::vector<PointDraw> points;  // an instance counted by parts has one per part
   // Per table, the instances drawn as polygons.
   std::vector<std::vector<std::uint32_t>> polygons;
   std::size_t point_count = 0;

@@ -1,0 +1,34 @@
+#pragma once
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace pointgen {
+
+// A piece of a point mesh that the sampler can count, hide and draw on its own: a near tree's
+// back leaves are hidden by its front leaves only when they are counted apart
+// (docs/point_density.md, "Parts").
+struct MeshPart {
+  std::uint32_t first = 0;    // where its list starts in the mesh's sample list
+  std::uint32_t samples = 0;  // length of its list
+  float area = 0.0f;          // its share of the mesh's surface, square metres
+  glm::vec3 center{0.0f};     // of its samples' bounds, in the mesh's frame
+  glm::vec3 half_size{0.0f};
+  float radius = 0.0f;
+};
+
+// The mesh's samples split into the cells of a grid of `cells`³ over their bounds. The parts'
+// lists follow the whole list in the mesh's sample list: `order` gives, for each place after the
+// whole list, the index of the sample in the whole list that goes there. A part's list keeps the
+// whole list's order, so each of its prefixes is a uniform sample of its piece, and an instance
+// drawn by parts shows the same points it would show whole (the prefix of the whole list that
+// falls in each part). Empty cells have no part.
+struct MeshSplit {
+  std::vector<MeshPart> parts;
+  std::vector<std::uint32_t> order;
+};
+MeshSplit split_into_parts(std::span<const glm::vec3> positions, float area, int cells = 4);
+
+}  // namespace pointgen

@@ -1,0 +1,102 @@
+// Splitting a point mesh into parts, and the sampler counting a large near instance by its parts.
+#include "pointgen/random.hpp"
+#include "pointgen/sampling/mesh_parts.hpp"
+#include "pointgen/sampling/view_sampler.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+namespace pointgen {
+namespace {
+
+std::vector<glm::vec3> random_points(std::size_t n, glm::vec3 size, std::uint64_t seed) {
+  Random rng(seed);
+  std::vector<glm::vec3> points(n);
+  for (glm::vec3& p : points) p = glm::vec3(rng.uniform(), rng.uniform(), rng.uniform()) * size;
+  return points;
+}
+
+TEST(MeshParts, PartsHoldEverySampleOnceInTheWholeListsOrderInDisjointBoxes) {
+  const std::vector<glm::vec3> points = random_points(5000, {4.0f, 8.0f, 2.0f}, 3);
+  const MeshSplit split = split_into_parts(points, 10.0f);
+  ASSERT_EQ(split.order.size(), points.size());
+  std::vector<std::uint32_t> sorted = split.order;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<std::uint32_t> all(points.size());
+  std::iota(all.begin(), all.end(), 0u);
+  EXPECT_EQ(sorted, all) << "every sample in exactly one part";
+  EXPECT_EQ(split.parts.size(), 64u);
+  float area = 0.0f;
+  for (const MeshPart& part : split.parts) {
+    area += part.area;
+    ASSERT_GE(part.first, points.size());
+    const std::uint32_t begin = part.first - static_cast<std::uint32_t>(points.size());
+    for (std::uint32_t k = begin; k < begin + part.samples; ++k) {
+      const glm::vec3 p = points[split.order[k]];
+      EXPECT_TRUE(glm::all(glm::lessThanEqual(glm::abs(p - part.center), part.half_size + 1e-5f)));
+      // In the whole list's order: a prefix of the part's list is what a prefix of the whole list
+      // holds of the part.
+      if (k > begin) {
+        EXPECT_LT(split.order[k - 1], split.order[k]);
+      }
+    }
+    EXPECT_NEAR(part.radius, glm::length(part.half_size), 1e-5f);
+  }
+  EXPECT_NEAR(area, 10.0f, 1e-3f);
+  for (std::size_t a = 0; a < split.parts.size(); ++a) {
+    for (std::size_t b = a + 1; b < split.parts.size(); ++b) {
+      const glm::vec3 gap = glm::abs(split.parts[a].center - split.parts[b].center) - split.parts[a].half_size - split.parts[b].half_size;
+      EXPECT_GE(glm::max(gap.x, glm::max(gap.y, gap.z)), -1e-5f) << "parts " << a << " and " << b << " overlap";
+    }
+  }
+}
+
+// Two parallel 4 m plates 2 m apart, facing the camera, as one mesh whose sample list (20,000,
+// alternating plates) is followed by its parts' lists.
+SampledMesh two_plates() {
+  Random rng(9);
+  SampledMesh mesh;
+  for (int i = 0; i < 20000; ++i) mesh.sample_positions.emplace_back(rng.uniform(-2.0f, 2.0f), rng.uniform(-2.0f, 2.0f), i % 2 ? 1.0f : -1.0f);
+  mesh.area = 32.0f;
+  mesh.radius = glm::length(glm::vec3(2.0f, 2.0f, 1.0f));
+  mesh.half_size = {2.0f, 2.0f, 1.0f};
+  mesh.triangles = 1000000;
+  mesh.samples = mesh.sample_positions.size();
+  MeshSplit split = split_into_parts(mesh.sample_positions, mesh.area);
+  for (std::uint32_t i : split.order) mesh.sample_positions.push_back(mesh.sample_positions[i]);
+  mesh.parts = std::move(split.parts);
+  return mesh;
+}
+
+TEST(ViewSampler, ALargeNearInstanceCountedByPartsHidesItsBackBehindItsFront) {
+  SamplerView view;
+  view.views = {glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f)};  // from the origin down -Z
+  view.density = {256.0f, 2.0f};
+  view.pixels = {512, 512};
+  view.full_count_transmittance = 1.0f;  // counts follow the visible share
+  InstanceTable table;
+  table.add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -20.0f}), glm::vec3(1.0f), 7);
+  SampledMesh mesh = two_plates();
+  const SampledFrame parts = sample_view(view, {table}, {mesh});
+  std::size_t front = 0, back = 0;
+  for (const PointDraw& d : parts.points) {
+    ASSERT_GE(d.first, mesh.samples) << "drawn from the parts' lists";
+    const float z = mesh.sample_positions[d.first].z;
+    (z > 0.0f ? front : back) += d.count;
+    for (std::uint32_t k = d.first; k < d.first + d.count; ++k) ASSERT_EQ(mesh.sample_positions[k].z, z) << "one plate per part";
+  }
+  // Whole, the instance takes n = k rho^2 A d / (2 z^3) = 2 * 256^2 * 32 / (2 * 20^2) = 5,243 points
+  // (no occlusion by others); by parts, the front plate takes about half of it and hides the back.
+  mesh.parts.clear();
+  const SampledFrame whole = sample_view(view, {table}, {mesh});
+  ASSERT_EQ(whole.points.size(), 1u);
+  EXPECT_NEAR(static_cast<double>(whole.point_count), 5243.0, 2.0);
+  EXPECT_NEAR(static_cast<double>(front), 0.5 * 5243.0 * 20.0 * 20.0 / (19.0 * 19.0), 0.1 * 5243.0);
+  EXPECT_LT(back, front / 10) << "the back plate is behind the front one";
+}
+
+}  // namespace
+}  // namespace pointgen
