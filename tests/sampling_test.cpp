@@ -133,6 +133,10 @@ TEST(ViewSampler, NearInstancesArePolygonsAndTheBandBetweenDrawsBoth) {
   ASSERT_EQ(f.polygons[0], (std::vector<std::uint32_t>{0, 1}));
   ASSERT_EQ(f.points.size(), 2u);
   EXPECT_EQ(f.points[0].instance, 1u) << "in the band the instance is drawn both ways";
+  // Its points thin out across the band: at the ratio 3,896 / 4,000 of needed points to the
+  // polygon equivalent, (1.25 - ratio) / (1.25 - 0.8) of them.
+  const float needed = 131072.0f / (5.8f * 5.8f);
+  EXPECT_NEAR(static_cast<float>(f.points[0].count), needed * (1.25f - needed / 4000.0f) / 0.45f, 1.0f);
   EXPECT_EQ(f.points[1].instance, 2u);
   EXPECT_EQ(f.triangle_count, 2000u);
 }
@@ -217,6 +221,19 @@ TEST(CoverageGrid, TilesKeepWhatTheirCellsLeaveUncovered) {
   const float cell = 2.0f / 64.0f;
   large.cover(std::vector<glm::vec3>{{-1.0f + 19.5f * cell, -1.0f + 19.5f * cell, 0.0f}}, glm::mat4(1.0f));
   EXPECT_NEAR(large.transmittance({{-1.0f, -1.0f}, {-1.0f + 18.0f * cell, -1.0f + 18.0f * cell}}), 1.0f - 0.25f / 16.0f / 20.25f, 1e-6f);
+  // A 2 x 2 splat covers the cells the shaders' splat covers: from floor(position - 0.5).
+  CoverageGrid splats(glm::mat4(1.0f), {16, 16}, 2);
+  const auto cell_rect = [](int x, int y) {
+    return CoverageGrid::Rect{{-1.0f + x / 8.0f, -1.0f + y / 8.0f}, {-1.0f + (x + 1) / 8.0f, -1.0f + (y + 1) / 8.0f}};
+  };
+  splats.cover(std::vector<glm::vec3>{{5.3f / 8.0f - 1.0f, 7.8f / 8.0f - 1.0f, 0.0f}, {0.2f / 8.0f - 1.0f, 0.2f / 8.0f - 1.0f, 0.0f}},
+               glm::mat4(1.0f));
+  for (int y = 0; y < 16; ++y) {
+    for (int x = 0; x < 16; ++x) {
+      const bool covered = (x >= 4 && x <= 5 && y >= 7 && y <= 8) || (x == 0 && y == 0);
+      EXPECT_EQ(splats.transmittance(cell_rect(x, y)), covered ? 0.0f : 1.0f) << "cell " << x << ", " << y;
+    }
+  }
   // Behind the eye: nothing, and a box reaching behind it has no rectangle.
   CoverageGrid perspective(glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f), {16, 16});
   perspective.cover(std::vector<glm::vec3>{{0.0f, 0.0f, 5.0f}}, glm::mat4(1.0f));

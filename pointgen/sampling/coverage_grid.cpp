@@ -5,10 +5,11 @@
 
 namespace pointgen {
 
-CoverageGrid::CoverageGrid(const glm::mat4& view_projection, glm::ivec2 cells)
+CoverageGrid::CoverageGrid(const glm::mat4& view_projection, glm::ivec2 cells, int splat)
     : view_projection_(view_projection),
       cells_(glm::max(cells, glm::ivec2(1))),
       tiles_((cells_ + tile_cells - 1) / tile_cells),
+      splat_(std::max(splat, 1)),
       covered_(static_cast<std::size_t>(cells_.x) * cells_.y, 0),
       transmittance_(static_cast<std::size_t>(tiles_.x) * tiles_.y, 1.0f),
       cell_share_(transmittance_.size()) {
@@ -80,15 +81,22 @@ void CoverageGrid::cover(std::span<const glm::vec3> points, const glm::mat4& tra
   for (const glm::vec3& p : points) {
     const glm::vec4 clip = m * glm::vec4(p, 1.0f);
     if (!(clip.w > 1e-6f)) continue;
-    const glm::vec2 cell = glm::floor((glm::vec2(clip) / clip.w * 0.5f + 0.5f) * size);
-    if (!(cell.x >= 0.0f && cell.y >= 0.0f && cell.x < size.x && cell.y < size.y)) continue;
-    const int x = static_cast<int>(cell.x), y = static_cast<int>(cell.y);
-    std::uint8_t& covered = covered_[static_cast<std::size_t>(y) * cells_.x + x];
-    if (covered) continue;
-    covered = 1;
-    const std::size_t tile = static_cast<std::size_t>(y / tile_cells) * tiles_.x + x / tile_cells;
-    transmittance_[tile] = std::max(0.0f, transmittance_[tile] - cell_share_[tile]);
+    // The splat's corner cell as point_walk.glsl finds it.
+    const glm::vec2 corner = glm::floor((glm::vec2(clip) / clip.w * 0.5f + 0.5f) * size - 0.5f * static_cast<float>(splat_ - 1));
+    if (!(corner.x > -static_cast<float>(splat_) && corner.y > -static_cast<float>(splat_) && corner.x < size.x && corner.y < size.y)) continue;
+    const int x0 = static_cast<int>(corner.x), y0 = static_cast<int>(corner.y);
+    for (int y = std::max(y0, 0); y < std::min(y0 + splat_, cells_.y); ++y) {
+      for (int x = std::max(x0, 0); x < std::min(x0 + splat_, cells_.x); ++x) cover_cell(x, y);
+    }
   }
+}
+
+void CoverageGrid::cover_cell(int x, int y) {
+  std::uint8_t& covered = covered_[static_cast<std::size_t>(y) * cells_.x + x];
+  if (covered) return;
+  covered = 1;
+  const std::size_t tile = static_cast<std::size_t>(y / tile_cells) * tiles_.x + x / tile_cells;
+  transmittance_[tile] = std::max(0.0f, transmittance_[tile] - cell_share_[tile]);
 }
 
 }  // namespace pointgen

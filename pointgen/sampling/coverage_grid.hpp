@@ -10,9 +10,9 @@
 namespace pointgen {
 
 // Which parts of a view are already covered, as objects are added front to back: the sampler's
-// occlusion model (docs/point_density.md, "Occlusion"). The view is cut into cells the size of a
-// point's splat, each covered once a point falls in it; tiles of 4 x 4 cells keep their
-// transmittance, the fraction through which objects behind can still be seen.
+// occlusion model (docs/point_density.md, "Occlusion"). The view is cut into cells, one per pixel,
+// each covered once a point's splat covers it; tiles of 4 x 4 cells keep their transmittance, the
+// fraction through which objects behind can still be seen.
 class CoverageGrid {
  public:
   // A rectangle in normalized device coordinates.
@@ -23,8 +23,9 @@ class CoverageGrid {
 
   static constexpr int tile_cells = 4;  // per side of a tile
 
-  // `cells` across the view: its pixels divided by the splat size.
-  CoverageGrid(const glm::mat4& view_projection, glm::ivec2 cells);
+  // `cells` across the view (its pixels); each point covers `splat` x `splat` of them around its
+  // position, as the splatting shaders do.
+  CoverageGrid(const glm::mat4& view_projection, glm::ivec2 cells, int splat = 1);
 
   // The screen rectangle holding a box (its eight corners), or none when part of it lies behind the eye.
   std::optional<Rect> project(const std::array<glm::vec3, 8>& corners) const;
@@ -34,7 +35,7 @@ class CoverageGrid {
   float cells_in(const Rect& rect) const { return 0.25f * rect.area() * static_cast<float>(cells_.x) * static_cast<float>(cells_.y); }
   // Mean transmittance over the part of `rect` on screen (1 where nothing covers it yet).
   float transmittance(const Rect& rect) const;
-  // Covers the cells in which `points` fall (in their object's frame, placed by `transform`).
+  // Covers the cells of the splats of `points` (in their object's frame, placed by `transform`).
   void cover(std::span<const glm::vec3> points, const glm::mat4& transform);
 
  private:
@@ -42,11 +43,13 @@ class CoverageGrid {
 
   // Calls visit(index, fraction of the square inside rect) for each square the rect overlaps, of
   // a grid of `squares` over the view, each `cells_per_side` cells wide.
+  void cover_cell(int x, int y);
   template <class Visit>
   void for_squares(const Rect& rect, int cells_per_side, glm::ivec2 squares, Visit visit) const;
 
   glm::mat4 view_projection_;
   glm::ivec2 cells_, tiles_;
+  int splat_;
   std::vector<std::uint8_t> covered_;  // per cell
   std::vector<float> transmittance_;   // per tile
   std::vector<float> cell_share_;      // per tile: what one of its cells is of it (edge tiles are smaller)

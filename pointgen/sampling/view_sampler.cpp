@@ -14,11 +14,12 @@ namespace pointgen {
 namespace {
 
 // The band around break-even, as ratios of needed points to the polygon-equivalent count, in which
-// an instance is drawn both as points and as polygons.
+// an instance is drawn both as points and as polygons: its polygons whole, its points thinning out
+// over them, from its full count at the bottom of the band to none at the top.
 constexpr float band_low = 0.8f, band_high = 1.25f;
-// An instance certainly drawn as points whose screen rectangle spans more cells than this is
+// An instance certainly drawn as points whose screen rectangle spans more pixels than this is
 // counted by parts.
-constexpr float cells_to_split = 256.0f;
+constexpr float pixels_to_split = 1024.0f;
 
 using Frustum = std::array<glm::vec4, 6>;
 
@@ -90,7 +91,7 @@ bool counted_by_parts(const SamplerView& view, const CoverageGrid& coverage, con
   const float needed = unoccluded_count(view, &coverage, whole);
   if (!(needed < std::min(band_low * polygon_equivalent(view, mesh), static_cast<float>(mesh.samples)))) return false;
   const std::optional<CoverageGrid::Rect> rect = coverage.project(box_corners(mesh.center, mesh.half_size, transform));
-  return rect && coverage.cells_in(*rect) > cells_to_split;
+  return rect && coverage.cells_in(*rect) > pixels_to_split;
 }
 
 // The instances in view, large near ones by their parts in view, sorted front to back. `coverage`
@@ -137,11 +138,11 @@ float visible_share(float transmittance, float full_count_transmittance) {
   return std::min(1.0f, transmittance / full_count_transmittance);
 }
 
-// Covers the cells of the first `drawn` of an object's samples from `first` in its mesh's list,
-// but of no more than a few per cell of its rectangle: more add no coverage.
+// Covers the splats of the first `drawn` of an object's samples from `first` in its mesh's list,
+// but of no more than one per pixel of its rectangle: more add no coverage.
 void cover(CoverageGrid& coverage, const SampledMesh& mesh, std::uint32_t first, const glm::mat4& transform,
            const CoverageGrid::Rect& rect, std::size_t drawn) {
-  const auto enough = static_cast<std::size_t>(4.0f * coverage.cells_in(rect)) + 1;
+  const auto enough = static_cast<std::size_t>(coverage.cells_in(rect)) + 1;
   const std::span<const glm::vec3> list = std::span(mesh.sample_positions).subspan(std::min<std::size_t>(first, mesh.sample_positions.size()));
   coverage.cover(list.first(std::min({drawn, enough, list.size()})), transform);
 }
@@ -161,8 +162,7 @@ SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTabl
   // Occlusion and the cap need one image; several views (cube maps) count every instance whole.
   std::optional<CoverageGrid> coverage;
   if ((view.occlusion || view.cap_to_pixels) && view.views.size() == 1) {
-    const int splat = std::max(view.splat_pixels, 1);
-    coverage.emplace(view.views.front(), (view.pixels + splat - 1) / splat);
+    coverage.emplace(view.views.front(), view.pixels, view.splat_pixels);
   }
   const CoverageGrid* occlusion = coverage && view.occlusion ? &*coverage : nullptr;
   for (const Candidate& c : candidates_in_view(view, tables, meshes, occlusion)) {
@@ -178,9 +178,10 @@ SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTabl
     const float ratio = needed / polygon_equivalent(view, mesh);
     const bool as_polygons = !c.part && (ratio > band_low || needed > static_cast<float>(samples));
     const bool as_points = (c.part || ratio < band_high) && samples > 0;
+    const float drawn = as_polygons ? needed * std::clamp((band_high - ratio) / (band_high - band_low), 0.0f, 1.0f) : needed;
     // Rounded up or down at the candidate's own fixed threshold: unbiased over many small
     // instances, and steady from frame to frame.
-    const auto count = static_cast<std::uint32_t>(std::min(std::floor(needed + rounding(tables[c.table], c, mesh)),
+    const auto count = static_cast<std::uint32_t>(std::min(std::floor(drawn + rounding(tables[c.table], c, mesh)),
                                                            static_cast<float>(samples)));
     if (as_points && count > 0) {
       frame.points.push_back({c.table, c.instance, count, first});

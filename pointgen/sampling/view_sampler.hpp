@@ -36,8 +36,8 @@ struct SamplerView {
   // A point costs about 1 / points_per_triangle of a triangle: an instance needing more points
   // than points_per_triangle × its triangles is cheaper as polygons.
   float points_per_triangle = 4.0f;
-  // Count only the surface in front: each object's own front layer, and (with one view) what the
-  // objects before it leave uncovered (CoverageGrid).
+  // Count only the surface in front (with one view): what the objects and parts before each one
+  // leave uncovered (CoverageGrid), a large near object's back behind its own front.
   bool occlusion = true;
   // Below this much of its screen rectangle left uncovered by nearer objects, an object's count
   // falls linearly to none. The frame keeps full counts until 99 % is hidden (holes show); at 1 the
@@ -68,8 +68,9 @@ struct SampledFrame {
 };
 
 // For each instance in view: points (as many as the view needs) or polygons, whichever is cheaper.
-// In a band around the break-even an instance is drawn both ways, so the switch shows no pop while
-// every frame stays a function of its own view alone. Instances outside the view are culled.
+// In a band around the break-even an instance is drawn both ways, its points thinning out over its
+// polygons, so the switch shows no pop while every frame stays a function of its own view alone.
+// Instances outside the view are culled.
 SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTable>& tables,
                          const std::vector<SampledMesh>& meshes);
 
