@@ -193,34 +193,34 @@ TEST(ViewSampler, InstancesHiddenBehindOthersGetNoPoints) {
   EXPECT_EQ(count_of(through, 0, 0), count_of(whole, 0, 0));
 }
 
-TEST(CoverageGrid, TilesKeepWhatTheirCellsLeaveUncovered) {
-  CoverageGrid grid(glm::mat4(1.0f), {16, 16});  // tiles of 4 x 4 cells, 0.5 x 0.5 in NDC
-  const CoverageGrid::Rect first_tile{{-1.0f, -1.0f}, {-0.5f, -0.5f}};
+TEST(CoverageGrid, CellsAndTilesKeepWhatIsLeftUncovered) {
+  CoverageGrid grid(glm::mat4(1.0f), {16, 16});  // cells 0.125 x 0.125 in NDC, read one by one
+  const CoverageGrid::Rect corner_block{{-1.0f, -1.0f}, {-0.5f, -0.5f}};  // 4 x 4 cells
   // NDC (-0.8, -0.9) is cell (1.6, 0.8) of the grid: cell (1, 0).
   const std::vector<glm::vec3> point = {{-0.8f, -0.9f, 0.0f}};
   grid.cover(point, glm::mat4(1.0f));
-  EXPECT_NEAR(grid.transmittance(first_tile), 15.0f / 16.0f, 1e-6f);
+  EXPECT_NEAR(grid.transmittance(corner_block), 15.0f / 16.0f, 1e-6f);
   grid.cover(std::vector<glm::vec3>{{-0.79f, -0.89f, 0.0f}}, glm::mat4(1.0f));
-  EXPECT_NEAR(grid.transmittance(first_tile), 15.0f / 16.0f, 1e-6f) << "a covered cell stays covered once";
+  EXPECT_NEAR(grid.transmittance(corner_block), 15.0f / 16.0f, 1e-6f) << "a covered cell stays covered once";
   EXPECT_NEAR(grid.transmittance({{-0.875f, -1.0f}, {-0.75f, -0.875f}}), 0.0f, 1e-6f) << "that cell alone";
   EXPECT_NEAR(grid.transmittance({{-0.875f, -1.0f}, {-0.625f, -0.875f}}), 0.5f, 1e-6f) << "it and the next";
   grid.cover(std::vector<glm::vec3>{{-0.6f, -0.6f, 0.0f}}, glm::mat4(1.0f));
-  EXPECT_NEAR(grid.transmittance(first_tile), 14.0f / 16.0f, 1e-6f);
-  // Moved by the transform a screen's width to the right: the same cell of the third tile.
+  EXPECT_NEAR(grid.transmittance(corner_block), 14.0f / 16.0f, 1e-6f);
+  // Moved by the transform a screen's width to the right: the same cell of the third block.
   grid.cover(point, glm::translate(glm::mat4(1.0f), {1.0f, 0.0f, 0.0f}));
   EXPECT_NEAR(grid.transmittance({{0.0f, -1.0f}, {0.5f, -0.5f}}), 15.0f / 16.0f, 1e-6f);
-  EXPECT_NEAR(grid.transmittance({{-0.5f, -1.0f}, {0.0f, -0.5f}}), 1.0f, 1e-6f) << "the tile between";
-  // A rectangle over the first tile and half of the one above it: the mean by area.
+  EXPECT_NEAR(grid.transmittance({{-0.5f, -1.0f}, {0.0f, -0.5f}}), 1.0f, 1e-6f) << "the block between";
+  // A rectangle over the first block and half of the one above it: the mean by area.
   EXPECT_NEAR(grid.transmittance({{-1.0f, -1.0f}, {-0.5f, -0.25f}}), (14.0f / 16.0f + 0.5f) / 1.5f, 1e-6f);
   // Off screen: nothing.
   grid.cover(std::vector<glm::vec3>{{1.0f, 0.0f, 0.0f}, {3.0f, 0.0f, 0.0f}, {0.0f, -1.01f, 0.0f}}, glm::mat4(1.0f));
   EXPECT_NEAR(grid.transmittance({{-1.0f, -1.0f}, {1.0f, 1.0f}}), (14.0f / 16.0f + 15.0f / 16.0f + 14.0f) / 16.0f, 1e-6f);
-  // A large rectangle reads whole tiles: a covered cell just outside it, in a tile it reaches into
-  // by half of each side, counts a quarter.
+  // A large rectangle reads whole tiles of 8 x 8 cells: a covered cell just outside it, in a tile
+  // it reaches into by a quarter of each side, counts a sixteenth.
   CoverageGrid large(glm::mat4(1.0f), {64, 64});
   const float cell = 2.0f / 64.0f;
   large.cover(std::vector<glm::vec3>{{-1.0f + 19.5f * cell, -1.0f + 19.5f * cell, 0.0f}}, glm::mat4(1.0f));
-  EXPECT_NEAR(large.transmittance({{-1.0f, -1.0f}, {-1.0f + 18.0f * cell, -1.0f + 18.0f * cell}}), 1.0f - 0.25f / 16.0f / 20.25f, 1e-6f);
+  EXPECT_NEAR(large.transmittance({{-1.0f, -1.0f}, {-1.0f + 18.0f * cell, -1.0f + 18.0f * cell}}), 1.0f - 0.0625f / 64.0f / 5.0625f, 1e-6f);
   // A 2 x 2 splat covers the cells the shaders' splat covers: from floor(position - 0.5).
   CoverageGrid splats(glm::mat4(1.0f), {16, 16}, 2);
   const auto cell_rect = [](int x, int y) {

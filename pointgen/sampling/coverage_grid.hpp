@@ -11,7 +11,7 @@ namespace pointgen {
 
 // Which parts of a view are already covered, as objects are added front to back: the sampler's
 // occlusion model (docs/point_density.md, "Occlusion"). The view is cut into cells, one per pixel,
-// each covered once a point's splat covers it; tiles of 4 x 4 cells keep their transmittance, the
+// each covered once a point's splat covers it; tiles of 8 x 8 cells keep their transmittance, the
 // fraction through which objects behind can still be seen.
 class CoverageGrid {
  public:
@@ -21,7 +21,7 @@ class CoverageGrid {
     float area() const { return (max.x - min.x) * (max.y - min.y); }
   };
 
-  static constexpr int tile_cells = 4;  // per side of a tile
+  static constexpr int tile_cells = 8;  // per side of a tile
 
   // `cells` across the view (its pixels); each point covers `splat` x `splat` of them around its
   // position, as the splatting shaders do.
