@@ -80,10 +80,13 @@ void CoverageGrid::cover(std::span<const glm::vec3> points, const glm::mat4& tra
   const glm::vec2 size(cells_);
   for (const glm::vec3& p : points) {
     const glm::vec4 clip = m * glm::vec4(p, 1.0f);
+    // Points the splatting shader drops (point_walk.glsl) cover nothing: behind the eye, outside
+    // the view, or nearer or farther than its depth range.
     if (!(clip.w > 1e-6f)) continue;
-    // The splat's corner cell as point_walk.glsl finds it.
-    const glm::vec2 corner = glm::floor((glm::vec2(clip) / clip.w * 0.5f + 0.5f) * size - 0.5f * static_cast<float>(splat_ - 1));
-    if (!(corner.x > -static_cast<float>(splat_) && corner.y > -static_cast<float>(splat_) && corner.x < size.x && corner.y < size.y)) continue;
+    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+    if (!(std::abs(ndc.x) <= 1.0f && std::abs(ndc.y) <= 1.0f && std::abs(ndc.z) <= 1.0f)) continue;
+    // The splat's corner cell as the shader finds it.
+    const glm::vec2 corner = glm::floor((glm::vec2(ndc) * 0.5f + 0.5f) * size - 0.5f * static_cast<float>(splat_ - 1));
     const int x0 = static_cast<int>(corner.x), y0 = static_cast<int>(corner.y);
     for (int y = std::max(y0, 0); y < std::min(y0 + splat_, cells_.y); ++y) {
       for (int x = std::max(x0, 0); x < std::min(x0 + splat_, cells_.x); ++x) cover_cell(x, y);
