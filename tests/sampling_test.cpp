@@ -92,6 +92,25 @@ TEST(PointCount, MatchesThePixelAreaOfASmallSquareFacingTheCamera) {
   EXPECT_NEAR(points_needed(density, 0.01f, 10.0f, 12.0f), 1.2f * points_needed(density, 0.01f, 10.0f, 10.0f), 1e-3f);
 }
 
+TEST(PointCount, FacingIsTheRootMeanSquareOfTheNormalsTowardsTheEye) {
+  // A flat surface: |n . v| itself, and the count follows it (1/2 is the default).
+  const glm::mat3 flat = normal_moments(std::vector<glm::vec3>{{0, 0, 1}, {0, 0, -1}});
+  EXPECT_NEAR(facing(flat, {0, 0, 1}), 1.0f, 1e-6f);
+  EXPECT_NEAR(facing(flat, {1, 0, 0}), 0.0f, 1e-6f);
+  EXPECT_NEAR(facing(flat, glm::normalize(glm::vec3(std::sqrt(3.0f), 0, 1))), 0.5f, 1e-6f);
+  const PointDensity density{500.0f, 2.0f};
+  EXPECT_NEAR(points_needed(density, 0.01f, 10.0f, 10.0f, 1.0f), 2.0f * points_needed(density, 0.01f, 10.0f, 10.0f), 1e-3f);
+  // Normals every way: 1/sqrt(3) (their mean |n . v| is 1/2); unknown moments: 1/2.
+  Random rng(4);
+  std::vector<glm::vec3> normals;
+  while (normals.size() < 20000) {
+    const glm::vec3 p(rng.uniform(-1.0f, 1.0f), rng.uniform(-1.0f, 1.0f), rng.uniform(-1.0f, 1.0f));
+    if (glm::dot(p, p) <= 1.0f && glm::dot(p, p) > 1e-4f) normals.push_back(glm::normalize(p));
+  }
+  EXPECT_NEAR(facing(normal_moments(normals), glm::normalize(glm::vec3(1, 2, 3))), 1.0f / std::sqrt(3.0f), 0.01f);
+  EXPECT_EQ(facing(glm::mat3(0.0f), {0, 0, 1}), 0.5f);
+}
+
 }  // namespace
 }  // namespace pointgen
 
@@ -115,7 +134,7 @@ InstanceTable table_at(const std::vector<glm::vec3>& positions) {
 }
 
 TEST(ViewSampler, CullsWhatIsOutOfViewAndCountsTheRest) {
-  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}};  // 2 m² in 1,000 triangles: break-even at 4,000 points
+  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}, glm::mat3(0.0f)};  // 2 m² in 1,000 triangles: break-even at 4,000 points
   const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, 40}, {0, 0, -40}, {100, 0, -40}})}, {mesh});
   ASSERT_EQ(f.points.size(), 1u) << "the instances behind and beside the view are culled";
   EXPECT_EQ(f.points[0].instance, 1u);
@@ -127,7 +146,7 @@ TEST(ViewSampler, CullsWhatIsOutOfViewAndCountsTheRest) {
 }
 
 TEST(ViewSampler, NearInstancesArePolygonsAndTheBandBetweenDrawsBoth) {
-  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}};
+  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}, glm::mat3(0.0f)};
   // Points needed = 131072 / z^2: 4,000 (break-even) at z = 5.7 m; the band is 5.1 to 6.4 m.
   const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, -3.5f}, {0, 0, -5.8f}, {0, 0, -9.5f}})}, {mesh});
   ASSERT_EQ(f.polygons[0], (std::vector<std::uint32_t>{0, 1}));
@@ -143,7 +162,7 @@ TEST(ViewSampler, NearInstancesArePolygonsAndTheBandBetweenDrawsBoth) {
 
 TEST(ViewSampler, CountsOfSmallInstancesAreRoundedWithoutBias) {
   // 4,000 instances needing 0.3 points each: some get one point, most none, about 1,200 in all.
-  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}};
+  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}, glm::mat3(0.0f)};
   InstanceTable table;
   for (int i = 0; i < 4000; ++i) table.add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -200.0f}), glm::vec3(1.0f), derive_seed(5, i));
   SamplerView view = test_view();
@@ -168,8 +187,8 @@ std::vector<glm::vec3> face_points(bool left_half_only) {
 TEST(ViewSampler, InstancesHiddenBehindOthersGetNoPoints) {
   // A 4 m box 10 m ahead whose points fill its front face; behind it at 40 m one small ball
   // straight back, one off to the side.
-  SampledMesh opaque{400.0f, glm::vec3(0.0f), 3.5f, 100000, 500000, glm::vec3(2.0f), face_points(false), {}};
-  const SampledMesh small{0.3f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.3f), {glm::vec3(0.0f)}, {}};
+  SampledMesh opaque{400.0f, glm::vec3(0.0f), 3.5f, 100000, 500000, glm::vec3(2.0f), face_points(false), {}, glm::mat3(0.0f)};
+  const SampledMesh small{0.3f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.3f), {glm::vec3(0.0f)}, {}, glm::mat3(0.0f)};
   std::vector<InstanceTable> tables = {table_at({{0, 0, -40}, {25, 0, -40}}), table_at({{0, 0, -10}})};
   tables[1].mesh = 1;
   SamplerView view = test_view();

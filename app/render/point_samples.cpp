@@ -1,6 +1,7 @@
 #include "app/render/point_samples.hpp"
 
 #include "pointgen/random.hpp"
+#include "pointgen/sampling/point_count.hpp"
 #include "pointgen/sampling/surface_samples.hpp"
 
 #include <cmath>
@@ -31,8 +32,13 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle) {
       // Enough for the top of the band in which an instance is drawn both ways.
       info.samples = std::min(max_samples, static_cast<std::size_t>(std::ceil(1.3f * points_per_triangle * static_cast<float>(info.triangles))));
       const std::vector<pointgen::SurfaceSample> samples = pointgen::sample_surface(mesh, info.samples, pointgen::derive_seed(0x5a3, m));
-      for (const pointgen::SurfaceSample& s : samples) info.sample_positions.push_back(s.position);
-      pointgen::MeshSplit split = pointgen::split_into_parts(info.sample_positions, info.area);
+      std::vector<glm::vec3> sample_normals;
+      for (const pointgen::SurfaceSample& s : samples) {
+        info.sample_positions.push_back(s.position);
+        sample_normals.push_back(s.normal);
+      }
+      info.normal_moments = pointgen::normal_moments(sample_normals);
+      pointgen::MeshSplit split = pointgen::split_into_parts(info.sample_positions, sample_normals, info.area);
       info.parts = std::move(split.parts);
       const auto add = [&](const pointgen::SurfaceSample& s) {
         positions.emplace_back(s.position, 1.0f);

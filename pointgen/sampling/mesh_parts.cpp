@@ -1,12 +1,13 @@
 #include "pointgen/sampling/mesh_parts.hpp"
 
+#include "pointgen/sampling/point_count.hpp"
 #include "pointgen/triangle_mesh.hpp"
 
 #include <algorithm>
 
 namespace pointgen {
 
-MeshSplit split_into_parts(std::span<const glm::vec3> positions, float area, int cells) {
+MeshSplit split_into_parts(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals, float area, int cells) {
   MeshSplit split;
   if (positions.empty() || cells < 1) return split;
   Bounds all;
@@ -22,7 +23,11 @@ MeshSplit split_into_parts(std::span<const glm::vec3> positions, float area, int
   for (const std::vector<std::uint32_t>& list : members) {
     if (list.empty()) continue;
     Bounds b;
-    for (std::uint32_t i : list) b.add(positions[i]);
+    std::vector<glm::vec3> part_normals;
+    for (std::uint32_t i : list) {
+      b.add(positions[i]);
+      part_normals.push_back(normals[i]);
+    }
     MeshPart part;
     part.first = static_cast<std::uint32_t>(positions.size() + split.order.size());
     part.samples = static_cast<std::uint32_t>(list.size());
@@ -30,6 +35,7 @@ MeshSplit split_into_parts(std::span<const glm::vec3> positions, float area, int
     part.center = 0.5f * (b.min + b.max);
     part.half_size = 0.5f * (b.max - b.min);
     part.radius = glm::length(part.half_size);
+    part.normal_moments = normal_moments(part_normals);
     split.parts.push_back(part);
     split.order.insert(split.order.end(), list.begin(), list.end());
   }

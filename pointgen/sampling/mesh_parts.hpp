@@ -17,9 +17,10 @@ struct MeshPart {
   glm::vec3 center{0.0f};     // of its samples' bounds, in the mesh's frame
   glm::vec3 half_size{0.0f};
   float radius = 0.0f;
+  glm::mat3 normal_moments{0.0f};  // of its samples (point_count.hpp)
 };
 
-// The mesh's samples split into the cells of a grid of `cells`³ over their bounds. The parts'
+// The mesh's samples (positions and unit normals) split into the cells of a grid of `cells`³ over their bounds. The parts'
 // lists follow the whole list in the mesh's sample list: `order` gives, for each place after the
 // whole list, the index of the sample in the whole list that goes there. A part's list keeps the
 // whole list's order, so each of its prefixes is a uniform sample of its piece, and an instance
@@ -29,6 +30,6 @@ struct MeshSplit {
   std::vector<MeshPart> parts;
   std::vector<std::uint32_t> order;
 };
-MeshSplit split_into_parts(std::span<const glm::vec3> positions, float area, int cells = 4);
+MeshSplit split_into_parts(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals, float area, int cells = 4);
 
 }  // namespace pointgen

@@ -70,13 +70,17 @@ float polygon_equivalent(const SamplerView& view, const SampledMesh& mesh) {
 
 // Points for k per pixel of the candidate's surface, before anything hides it. With the cap, the
 // coverage grid is the map's image.
-float unoccluded_count(const SamplerView& view, const CoverageGrid* coverage, const Candidate& c) {
+float unoccluded_count(const SamplerView& view, const CoverageGrid* coverage, const Candidate& c, const SampledMesh& mesh,
+                       const glm::mat4& transform) {
   // Distances to the centre: the count is right on average over the object (docs/point_density.md).
   const float distance = std::max(glm::distance(view.eye, c.center), std::max(0.5f * c.radius, 1e-3f));
   const float depth = std::max(glm::dot(c.center - view.eye, view.forward), distance * view.edge_cos);
-  float needed = points_needed(view.density, c.area, depth, distance);
+  // How much its surface faces the eye, in the mesh's frame.
+  const glm::vec3 to_eye = glm::inverse(glm::mat3(transform)) * (view.eye - c.center);
+  const float facing_eye = glm::dot(to_eye, to_eye) > 0.0f ? facing(c.part ? c.part->normal_moments : mesh.normal_moments, glm::normalize(to_eye)) : 0.5f;
+  float needed = points_needed(view.density, c.area, depth, distance, facing_eye);
   if (coverage && view.cap_to_pixels) {
-    // Randomly oriented two-sided surface projects to half its area (docs/point_density.md).
+    // Towards the light, surface is taken as facing every way: half its area projects.
     const float ndc_to_pixels = 0.25f * static_cast<float>(view.pixels.x) * static_cast<float>(view.pixels.y);
     needed = std::min(needed, view.density.k * 0.5f * c.area * coverage->ndc_area_per_square_metre(c.center) * ndc_to_pixels);
   }
@@ -88,7 +92,7 @@ float unoccluded_count(const SamplerView& view, const CoverageGrid* coverage, co
 bool counted_by_parts(const SamplerView& view, const CoverageGrid& coverage, const SampledMesh& mesh, const glm::mat4& transform,
                       const Candidate& whole) {
   if (mesh.parts.empty() || mesh.sample_positions.empty()) return false;
-  const float needed = unoccluded_count(view, &coverage, whole);
+  const float needed = unoccluded_count(view, &coverage, whole, mesh, transform);
   if (!(needed < std::min(band_low * polygon_equivalent(view, mesh), static_cast<float>(mesh.samples)))) return false;
   const std::optional<CoverageGrid::Rect> rect = coverage.project(box_corners(mesh.center, mesh.half_size, transform));
   return rect && coverage.cells_in(*rect) > pixels_to_split;
@@ -168,7 +172,7 @@ SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTabl
   for (const Candidate& c : candidates_in_view(view, tables, meshes, occlusion)) {
     const SampledMesh& mesh = meshes[tables[c.table].mesh];
     const glm::mat4& transform = tables[c.table].transforms[c.instance];
-    float needed = unoccluded_count(view, coverage ? &*coverage : nullptr, c);
+    float needed = unoccluded_count(view, coverage ? &*coverage : nullptr, c, mesh, transform);
     // Only point meshes hide others: ground and buildings are large and far from their bounds.
     std::optional<CoverageGrid::Rect> rect;
     if (occlusion && !mesh.sample_positions.empty()) rect = occlusion->project(box_corners(c, mesh, transform));

@@ -20,6 +20,7 @@ struct SampledMesh {
   std::vector<glm::vec3> sample_positions;
   // Large near instances are counted part by part (none: always whole).
   std::vector<MeshPart> parts;
+  glm::mat3 normal_moments{0.0f};  // of its samples (point_count.hpp; zero: facing every way)
 };
 
 // The view: what to cull against, the eye, and the density.
