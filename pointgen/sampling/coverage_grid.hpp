@@ -41,9 +41,9 @@ class CoverageGrid {
  private:
   static constexpr int max_cells_read = 256;  // a rectangle's transmittance from its cells up to this
 
+  void cover_cell(int x, int y);  // and takes it off its tile's transmittance, once
   // Calls visit(index, fraction of the square inside rect) for each square the rect overlaps, of
   // a grid of `squares` over the view, each `cells_per_side` cells wide.
-  void cover_cell(int x, int y);
   template <class Visit>
   void for_squares(const Rect& rect, int cells_per_side, glm::ivec2 squares, Visit visit) const;
 

@@ -20,9 +20,9 @@ struct MeshPart {
   glm::mat3 normal_moments{0.0f};  // of its samples (point_count.hpp)
 };
 
-// The mesh's samples (positions and unit normals) split into the cells of a grid of `cells`³ over their bounds. The parts'
-// lists follow the whole list in the mesh's sample list: `order` gives, for each place after the
-// whole list, the index of the sample in the whole list that goes there. A part's list keeps the
+// The mesh's samples (positions and unit normals) split into the cells of a grid of `cells`³ over
+// their bounds. The parts' lists follow the whole list in the mesh's sample list: `order` gives,
+// for each place after the whole list, the index of the sample in the whole list that goes there. A part's list keeps the
 // whole list's order, so each of its prefixes is a uniform sample of its piece, and an instance
 // drawn by parts shows the same points it would show whole (the prefix of the whole list that
 // falls in each part). Empty cells have no part.

@@ -77,7 +77,8 @@ float unoccluded_count(const SamplerView& view, const CoverageGrid* coverage, co
   const float depth = std::max(glm::dot(c.center - view.eye, view.forward), distance * view.edge_cos);
   // How much its surface faces the eye, in the mesh's frame.
   const glm::vec3 to_eye = glm::inverse(glm::mat3(transform)) * (view.eye - c.center);
-  const float facing_eye = glm::dot(to_eye, to_eye) > 0.0f ? facing(c.part ? c.part->normal_moments : mesh.normal_moments, glm::normalize(to_eye)) : 0.5f;
+  const glm::mat3& moments = c.part ? c.part->normal_moments : mesh.normal_moments;
+  const float facing_eye = glm::dot(to_eye, to_eye) > 0.0f ? facing(moments, glm::normalize(to_eye)) : 0.5f;
   float needed = points_needed(view.density, c.area, depth, distance, facing_eye);
   if (coverage && view.cap_to_pixels) {
     // Towards the light, surface is taken as facing every way: half its area projects.
