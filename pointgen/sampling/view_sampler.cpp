@@ -93,10 +93,11 @@ float unoccluded_count(const SamplerView& view, const CoverageGrid* coverage, co
 bool counted_by_parts(const SamplerView& view, const CoverageGrid& coverage, const SampledMesh& mesh, const glm::mat4& transform,
                       const Candidate& whole) {
   if (mesh.parts.empty() || mesh.sample_positions.empty()) return false;
-  const float needed = unoccluded_count(view, &coverage, whole, mesh, transform);
-  if (!(needed < std::min(band_low * polygon_equivalent(view, mesh), static_cast<float>(mesh.samples)))) return false;
+  // The size first: most instances are small, and their counts are taken once, in sample_view.
   const std::optional<CoverageGrid::Rect> rect = coverage.project(box_corners(mesh.center, mesh.half_size, transform));
-  return rect && coverage.cells_in(*rect) > pixels_to_split;
+  if (!rect || !(coverage.cells_in(*rect) > pixels_to_split)) return false;
+  const float needed = unoccluded_count(view, &coverage, whole, mesh, transform);
+  return needed < std::min(band_low * polygon_equivalent(view, mesh), static_cast<float>(mesh.samples));
 }
 
 // The instances in view, large near ones by their parts in view, sorted front to back. `coverage`
