@@ -21,6 +21,8 @@ uniform int shadow_view_count;
 uniform mat4 shadow_matrices[6];
 uniform vec2 shadow_paraboloids[6];
 uniform float shadow_size;  // texels per side
+uniform vec2 frame_size;    // pixels
+uniform mat4 view_projection;
 layout(binding = 0) uniform sampler2DArrayShadow shadow_map;
 layout(binding = 1) uniform sampler2D light_mask;  // SCREEN_MASK (shadow volumes): 1 where lit
 
@@ -36,23 +38,28 @@ const float dimming = 0.3;
 const float shininess = 48.0;
 const float specular_strength = 0.25;
 
-// World-space size of one shadow-map texel at p. For a projective view from the gradient of its
-// map coordinates, so it holds for any such parameterization; a paraboloid view is conformal, with
-// texels of 2 zoom (1 - d.z) / shadow_size radians (shadow/paraboloid_map.cpp).
-float texel_world_size(int layer, vec3 p) {
-  mat4 m = shadow_matrices[layer];
-  vec2 paraboloid = shadow_paraboloids[layer];
-  if (paraboloid.x != 0.0) {
-    vec3 q = (m * vec4(p, 1.0)).xyz;
-    return 2.0 * paraboloid.x * (length(q) - q.z) / shadow_size;
-  }
+// World-space size at p of one cell of a projective matrix's grid of `cells` (the largest of its
+// two sides, along the surface or not), from the gradient of the grid coordinates.
+float cell_world_size(mat4 m, vec2 cells, vec3 p) {
   vec4 clip = m * vec4(p, 1.0);
   vec3 row_x = vec3(m[0][0], m[1][0], m[2][0]);
   vec3 row_y = vec3(m[0][1], m[1][1], m[2][1]);
   vec3 row_w = vec3(m[0][3], m[1][3], m[2][3]);
-  vec3 grad_u = 0.5 * (row_x - clip.x / clip.w * row_w) / clip.w;
-  vec3 grad_v = 0.5 * (row_y - clip.y / clip.w * row_w) / clip.w;
-  return 1.0 / (shadow_size * max(min(length(grad_u), length(grad_v)), 1e-20));
+  vec3 grad_u = 0.5 * cells.x * (row_x - clip.x / clip.w * row_w) / clip.w;
+  vec3 grad_v = 0.5 * cells.y * (row_y - clip.y / clip.w * row_w) / clip.w;
+  return 1.0 / max(min(length(grad_u), length(grad_v)), 1e-20);
+}
+
+// World-space size of one shadow-map texel at p. For a projective view from the gradient of its
+// map coordinates, so it holds for any such parameterization; a paraboloid view is conformal, with
+// texels of 2 zoom (1 - d.z) / shadow_size radians (shadow/paraboloid_map.cpp).
+float texel_world_size(int layer, vec3 p) {
+  vec2 paraboloid = shadow_paraboloids[layer];
+  if (paraboloid.x != 0.0) {
+    vec3 q = (shadow_matrices[layer] * vec4(p, 1.0)).xyz;
+    return 2.0 * paraboloid.x * (length(q) - q.z) / shadow_size;
+  }
+  return cell_world_size(shadow_matrices[layer], vec2(shadow_size), p);
 }
 
 // The layer of the map that holds p's shadow.
@@ -75,7 +82,10 @@ int shadow_view(vec3 p) {
 }
 
 // Fraction of the light reaching `position` past the occluders in the map: 3x3 taps of
-// hardware-filtered comparisons (bilinear PCF), so 4x4 texels in all. The lookup moves off the
+// hardware-filtered comparisons (bilinear PCF), spread over the pixel's footprint in the map: one
+// tap's 2x2 texels where a texel is as large as a pixel or larger, up to 4x4 texels where texels
+// are 3 pixels to a pixel and more. A wider kernel where texels are large would only blur the
+// map, and shadows a texel or two wide (a post's, far off) would fade to lit. The lookup moves off the
 // surface along its normal by about a texel where the light grazes it, so the outer taps do not
 // hit the surface's own depth (acne); slope-scaled polygon offset in the shadow pass covers the
 // centre tap.
@@ -88,10 +98,12 @@ float shadow_test(vec3 position, vec3 n, float n_dot_l) {
   if (clip.w <= 0.0) return 1.0;  // behind the map's projection centre: not covered
   vec3 map = clip.xyz / clip.w * 0.5 + 0.5;
   if (any(lessThan(map.xy, vec2(0.0))) || any(greaterThan(map.xy, vec2(1.0)))) return 1.0;
+  float texels_per_pixel = cell_world_size(view_projection, frame_size, position) / texel_world_size(layer, position);
+  float step = clamp(0.5 * (texels_per_pixel - 1.0), 0.0, 1.0) / shadow_size;
   float sum = 0.0;
   for (int y = -1; y <= 1; ++y) {
     for (int x = -1; x <= 1; ++x) {
-      sum += texture(shadow_map, vec4(map.xy + vec2(x, y) / shadow_size, layer, map.z));
+      sum += texture(shadow_map, vec4(map.xy + vec2(x, y) * step, layer, map.z));
     }
   }
   return sum / 9.0;
@@ -121,8 +133,6 @@ mat2 shadow_jacobian(int layer, vec3 p, vec3 t1, vec3 t2) {
   return screen_jacobian(direction_to_clip, d, s1, s2);
 }
 
-uniform vec2 frame_size;  // pixels
-uniform mat4 view_projection;
 uniform int aliasing_wanted;
 
 // The aliasing factor (DESIGN.md): the size in screen pixels of one shadow-map texel projected
