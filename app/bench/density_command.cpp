@@ -125,7 +125,7 @@ class DensityBench {
                        {"frame_ms", timing.frame_ms}, {"sample_ms", timing.sample_ms}, {"frame_pass_ms", timing.frame_pass_ms},
                        {"sampler_mpts", timing.sample_ms > 0 ? 1e-3 * static_cast<double>(points.stats().points) / timing.sample_ms : 0.0}};
         results_.runs.push_back(run);
-        if (k == 1.5 && splat == 2) save_images(renders.polygons.color, renders.points.color);
+        if (k == 1.5 && splat == 2) save_images(renders);
         progress.step();
       }
     }
@@ -191,9 +191,9 @@ class DensityBench {
     draw_charts(out_, "density_charts.py");
     write_report(out_, "ecoview density",
                  "<h2>Charts</h2><img src=\"chart_quality.png\"><img src=\"chart_scale.png\"><img src=\"chart_thirds.png\">\n"
-                 "<h2>Images (k = 1.5, 2-pixel splats: the defaults)</h2><table><tr><th>polygons</th><th>points</th><th>difference × 4</th></tr>"
+                 "<h2>Images (k = 1.5, 2-pixel splats: the defaults)</h2><table><tr><th>polygons</th><th>points</th><th>difference × 4</th><th>measured pixels (holes red)</th></tr>"
                  "<tr><td><img src=\"images/polygons.png\"></td><td><img src=\"images/points.png\"></td>"
-                 "<td><img src=\"images/difference.png\"></td></tr></table>\n",
+                 "<td><img src=\"images/difference.png\"></td><td><img src=\"images/coverage.png\"></td></tr></table>\n",
                  results_);
   }
 
@@ -223,11 +223,14 @@ class DensityBench {
     results_.runs.push_back(run);
   }
 
-  void save_images(const Image8& polygons, const Image8& points) {
+  void save_images(const DensityRenders& renders) {
     fs::create_directories(out_ / "images");
+    const Image8& polygons = renders.polygons.color;
+    const Image8& points = renders.points.color;
     write_file_atomically(out_ / "images" / "polygons.png", encode_png(polygons));
     write_file_atomically(out_ / "images" / "points.png", encode_png(points));
     write_file_atomically(out_ / "images" / "difference.png", encode_png(difference(polygons, points)));
+    write_file_atomically(out_ / "images" / "coverage.png", encode_png(coverage_map(renders)));
   }
 
   const DensityOptions& o_;

@@ -34,6 +34,20 @@ double psnr_over(const std::vector<bool>& pixels, const Image8& reference, const
   return squared_error > 0.0 ? 10.0 * std::log10(255.0 * 255.0 * static_cast<double>(samples) / squared_error) : 99.0;
 }
 
+Image8 coverage_map(const DensityRenders& renders) {
+  const std::vector<bool> covered = point_object_pixels(renders.polygons, renders.occluders);
+  Image8 map = renders.polygons.color;
+  for (std::size_t i = 0; i < covered.size(); ++i) {
+    std::uint8_t* rgb = &map.samples[3 * i];
+    if (!covered[i]) {
+      for (int c = 0; c < 3; ++c) rgb[c] = static_cast<std::uint8_t>(rgb[c] / 3);
+    } else if (!in_front(renders.points.depth.samples[i], renders.occluders.depth.samples[i])) {
+      rgb[0] = 255, rgb[1] = 0, rgb[2] = 0;
+    }
+  }
+  return map;
+}
+
 DensityFigures density_figures(const DensityRenders& renders, const Image<std::uint32_t>& counts) {
   const std::vector<bool> covered = point_object_pixels(renders.polygons, renders.occluders);
   const std::vector<float>& depth = renders.polygons.depth.samples;

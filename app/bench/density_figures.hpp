@@ -40,6 +40,10 @@ std::vector<bool> point_object_pixels(const RenderedFrame& polygons, const Rende
 // Colour PSNR (dB) of an image against a reference over the given pixels.
 double psnr_over(const std::vector<bool>& pixels, const Image8& reference, const Image8& image);
 
+// Where the figures are taken: the polygon render dimmed to a third, covered pixels in it at full
+// brightness, holes among them red.
+Image8 coverage_map(const DensityRenders& renders);
+
 DensityFigures density_figures(const DensityRenders& renders, const Image<std::uint32_t>& counts);
 
 }  // namespace ecoview
