@@ -1,6 +1,7 @@
 #pragma once
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -21,5 +22,8 @@ struct InstanceTable {
     seeds.push_back(seed);
   }
 };
+
+// The scale of an instance's transform (the cube root of its volume change).
+inline float uniform_scale(const glm::mat4& transform) { return std::cbrt(std::abs(glm::determinant(glm::mat3(transform)))); }
 
 }  // namespace pointgen

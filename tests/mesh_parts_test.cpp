@@ -104,5 +104,69 @@ TEST(ViewSampler, ALargeNearInstanceCountedByPartsHidesItsBackBehindItsFront) {
   EXPECT_LT(back, front / 10) << "the back plate is behind the front one";
 }
 
+// A grid of n x n points over x in [x0, x1], y in [-h, h] at z = 0 (a mesh's frame).
+std::vector<glm::vec3> grid_points(float x0, float x1, float h, int n) {
+  std::vector<glm::vec3> points;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) points.emplace_back(x0 + (x1 - x0) * (i + 0.5f) / n, -h + 2.0f * h * (j + 0.5f) / n, 0.0f);
+  }
+  return points;
+}
+
+TEST(ViewSampler, AnInstanceLeftWholeForPolygonsIsCountedByPartsOnceItsHiddenShareMakesItPoints) {
+  SamplerView view;
+  view.views = {glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f)};
+  view.density = {256.0f, 2.0f};
+  view.pixels = {512, 512};
+  view.full_count_transmittance = 1.0f;
+  // Unhidden, the plates take 10,486 points (above), in the band around their polygons' 12,000:
+  // left whole. A screen 10 m away hides the left half of them (x < 0 in their frame).
+  SampledMesh plates = two_plates();
+  plates.triangles = 3000;
+  SampledMesh screen;
+  screen.sample_positions = grid_points(-1.6f, 0.0f, 1.6f, 48);  // 1.7 pixels apart or less: 2-pixel splats cover it
+  screen.area = 400.0f;  // enough points for all of the grid
+  screen.samples = 500000;
+  screen.triangles = 1000000;
+  screen.center = {-0.8f, 0.0f, 0.0f};
+  screen.half_size = {0.8f, 1.6f, 0.0f};
+  screen.radius = glm::length(screen.half_size);
+  std::vector<InstanceTable> tables(2);
+  tables[0].add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -20.0f}), glm::vec3(1.0f), 7);
+  tables[1].mesh = 1;
+  tables[1].add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -10.0f}), glm::vec3(1.0f), 8);
+  const SampledFrame f = sample_view(view, tables, {plates, screen});
+  std::size_t left = 0, right = 0;
+  for (const PointDraw& d : f.points) {
+    if (d.table != 0) continue;
+    ASSERT_GE(d.first, plates.samples) << "drawn from the parts' lists";
+    for (std::uint32_t k = d.first; k < d.first + d.count; ++k) (plates.sample_positions[k].x < 0.0f ? left : right) += 1;
+  }
+  EXPECT_TRUE(f.polygons[0].empty());
+  EXPECT_GT(right, 2000u) << "the front plate's right half: about 2 * 256^2 * 8 / 19^2 = 2,900";
+  EXPECT_LT(left, right / 20) << "the hidden half";
+}
+
+TEST(ViewSampler, AnInstanceWhoseSphereReachesIntoTheViewButNotItsBoxGetsNothing) {
+  SamplerView view;
+  view.views = {glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f)};
+  view.density = {256.0f, 2.0f};
+  view.pixels = {512, 512};
+  // A long thin mesh along y: its sphere is wide, its box is not. At x = 21 m, 20 m ahead, the
+  // sphere crosses the view's right edge (x = 20 m there); the box, 0.5 m wide, stays outside it.
+  SampledMesh pole;
+  pole.sample_positions = grid_points(-0.25f, 0.25f, 3.0f, 16);
+  pole.area = 3.0f;
+  pole.samples = pole.sample_positions.size();
+  pole.triangles = 100000;
+  pole.half_size = {0.25f, 3.0f, 0.25f};
+  pole.radius = glm::length(pole.half_size);
+  InstanceTable table;
+  table.add(glm::translate(glm::mat4(1.0f), {21.0f, 0.0f, -20.0f}), glm::vec3(1.0f), 3);
+  const SampledFrame f = sample_view(view, {table}, {pole});
+  EXPECT_TRUE(f.points.empty());
+  EXPECT_TRUE(f.polygons[0].empty());
+}
+
 }  // namespace
 }  // namespace pointgen

@@ -171,6 +171,39 @@ TEST(ViewSampler, CountsOfSmallInstancesAreRoundedWithoutBias) {
   EXPECT_NEAR(static_cast<double>(f.point_count), 1200.0, 4.0 * std::sqrt(4000 * 0.3 * 0.7));
 }
 
+TEST(ViewSampler, AFarCellIsCountedWholeWithOnePointForEachOfAsManyInstancesAsItNeeds) {
+  // 20,000 instances on a 20 m square 400 m ahead, each needing about a quarter of a point.
+  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}, glm::mat3(0.0f)};
+  InstanceTable table;
+  Random rng(12);
+  for (int i = 0; i < 20000; ++i) {
+    table.add(glm::translate(glm::mat4(1.0f), {rng.uniform(-10.0f, 10.0f), rng.uniform(-10.0f, 10.0f), rng.uniform(-410.0f, -390.0f)}),
+              glm::vec3(1.0f), derive_seed(12, i));
+  }
+  SamplerView view = test_view();
+  view.density.k = 0.6f;
+  double expected = 0.0;
+  for (const glm::mat4& m : table.transforms) {
+    const glm::vec3 p(m[3]);
+    expected += points_needed(view.density, mesh.area, -p.z, glm::length(p));
+  }
+  const SampledFrame f = sample_view(view, {table}, {mesh});
+  EXPECT_NEAR(static_cast<double>(f.point_count), expected, 0.02 * expected + 4.0 * std::sqrt(expected)) << "about 5,000";
+  std::vector<std::uint32_t> drawn;
+  for (const PointDraw& d : f.points) {
+    EXPECT_EQ(d.count, 1u);
+    EXPECT_LT(d.first, mesh.samples);
+    drawn.push_back(d.instance);
+  }
+  std::sort(drawn.begin(), drawn.end());
+  EXPECT_EQ(std::adjacent_find(drawn.begin(), drawn.end()), drawn.end()) << "one point per chosen instance";
+  const SampledFrame again = sample_view(view, {table}, {mesh});
+  ASSERT_EQ(again.points.size(), f.points.size());
+  for (std::size_t i = 0; i < f.points.size(); ++i) {
+    EXPECT_TRUE(again.points[i].instance == f.points[i].instance && again.points[i].first == f.points[i].first);
+  }
+}
+
 // Points over the face z = 2 of a 4 m box around the origin, on a grid: 64 x 64, or only the
 // columns with x < 0.
 std::vector<glm::vec3> face_points(bool left_half_only) {

@@ -109,6 +109,7 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       tables_(scene.groups),
       gpu_scene_(scene),
       samples_(scene, settings.points_per_triangle),
+      cells_(tables_, samples_.meshes()),
       shadow_pass_(settings.shadow_size),
       frame_pass_(settings.width, settings.height, settings.aliasing),
       frame_points_({settings.width, settings.height}) {
@@ -117,6 +118,7 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
     for (std::size_t g = 0; g < tables_.size(); ++g) {
       if (!scene.point_meshes[tables_[g].mesh]) tables_[g] = {tables_[g].mesh, {}, {}, {}};
       gpu_scene_.update(g, tables_[g]);
+      cells_.update(g, tables_[g], samples_.meshes()[tables_[g].mesh]);
     }
   }
 }
@@ -235,7 +237,7 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
       // Layer under layer of canopy as the light sees it: counts follow the expected visible share
       // (docs/point_density.md, "Occlusion"; what it costs and saves in docs/benchmarks.md).
       view.full_count_transmittance = 1.0f;
-      selections.push_back(pointgen::sample_view(view, tables_, samples_.meshes()));
+      selections.push_back(pointgen::sample_view(view, tables_, samples_.meshes(), cells_));
       stats_.shadow_points += selections.back().point_count;
     }
     stats_.sample_ms += ms_since(start);
@@ -309,6 +311,7 @@ void Renderer::pose(double t) {
       const std::size_t group = animation.first_group + i;
       if (settings_.point_meshes_only && !scene_.point_meshes[posed[i].mesh]) continue;
       tables_[group] = std::move(posed[i]);
+      cells_.update(group, tables_[group], samples_.meshes()[tables_[group].mesh]);
       // Point meshes get their drawn subset per pass (upload_polygons); with points off, all of them.
       if (!settings_.points || !scene_.point_meshes[tables_[group].mesh]) gpu_scene_.update(group, tables_[group]);
     }
@@ -355,7 +358,7 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   pointgen::SampledFrame selection;
   if (settings_.points) {
     const auto start = std::chrono::steady_clock::now();
-    selection = pointgen::sample_view(sampler_view(camera, settings_, {view_projection_}), tables_, samples_.meshes());
+    selection = pointgen::sample_view(sampler_view(camera, settings_, {view_projection_}), tables_, samples_.meshes(), cells_);
     stats_.sample_ms += ms_since(start);
     if (settings_.measure != RenderSettings::Measure::off) selection = measured(selection);
     upload_polygons(selection);

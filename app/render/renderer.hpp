@@ -112,6 +112,7 @@ class Renderer {
   std::vector<pointgen::InstanceTable> tables_;  // the scene's groups, moving ones posed for this frame
   GpuScene gpu_scene_;
   PointSamples samples_;
+  pointgen::InstanceCells cells_;  // of tables_
   ShadowPass shadow_pass_;
   FramePass frame_pass_;
   PointSplat frame_points_;

@@ -19,6 +19,8 @@ class CoverageGrid {
   struct Rect {
     glm::vec2 min, max;
     float area() const { return (max.x - min.x) * (max.y - min.y); }
+    // Whether any of it lies on screen.
+    bool on_screen() const { return max.x >= -1.0f && min.x <= 1.0f && max.y >= -1.0f && min.y <= 1.0f; }
   };
 
   static constexpr int tile_cells = 8;  // per side of a tile

@@ -20,6 +20,11 @@ constexpr float band_low = 0.8f, band_high = 1.25f;
 // An instance certainly drawn as points whose screen rectangle spans more pixels than this is
 // counted by parts.
 constexpr float pixels_to_split = 1024.0f;
+// A cell, instance or part is skipped when nearer objects leave less than this of its screen
+// rectangle uncovered.
+constexpr float hidden_transmittance = 0.001f;
+// A cell is counted as one object when its box is smaller than this times its distance.
+constexpr float aggregate_radius = 0.2f;
 
 using Frustum = std::array<glm::vec4, 6>;
 
@@ -47,8 +52,6 @@ bool inside_any(const std::vector<Frustum>& frusta, const glm::vec3& center, flo
     return std::all_of(planes.begin(), planes.end(), [&](const glm::vec4& p) { return glm::dot(glm::vec3(p), center) + p.w >= -radius; });
   });
 }
-
-float uniform_scale(const glm::mat4& transform) { return std::cbrt(std::abs(glm::determinant(glm::mat3(transform)))); }
 
 // The eight corners of a box in a mesh's frame under an instance's transform.
 std::array<glm::vec3, 8> box_corners(const glm::vec3& center, const glm::vec3& half_size, const glm::mat4& transform) {
@@ -100,42 +103,6 @@ bool counted_by_parts(const SamplerView& view, const CoverageGrid& coverage, con
   return needed < std::min(band_low * polygon_equivalent(view, mesh), static_cast<float>(mesh.samples));
 }
 
-// The instances in view, large near ones by their parts in view, sorted front to back. `coverage`
-// (when occlusion is on) decides which instances are large.
-std::vector<Candidate> candidates_in_view(const SamplerView& view, const std::vector<InstanceTable>& tables,
-                                          const std::vector<SampledMesh>& meshes, const CoverageGrid* coverage) {
-  std::vector<Frustum> frusta;
-  for (const glm::mat4& m : view.views) frusta.push_back(frustum_planes(m));
-  std::vector<Candidate> visible;
-  for (std::size_t t = 0; t < tables.size(); ++t) {
-    const SampledMesh& mesh = meshes[tables[t].mesh];
-    for (std::size_t i = 0; i < tables[t].size(); ++i) {
-      const glm::mat4& m = tables[t].transforms[i];
-      const float scale = uniform_scale(m);
-      const Candidate whole{static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(i), nullptr,
-                            glm::vec3(m * glm::vec4(mesh.center, 1.0f)), mesh.radius * scale, mesh.area * scale * scale};
-      if (!inside_any(frusta, whole.center, whole.radius)) continue;
-      if (!coverage || !counted_by_parts(view, *coverage, mesh, m, whole)) {
-        visible.push_back(whole);
-        continue;
-      }
-      for (const MeshPart& part : mesh.parts) {
-        const Candidate c{whole.table, whole.instance, &part, glm::vec3(m * glm::vec4(part.center, 1.0f)), part.radius * scale,
-                          part.area * scale * scale};
-        if (inside_any(frusta, c.center, c.radius)) visible.push_back(c);
-      }
-    }
-  }
-  for (Candidate& c : visible) {
-    const glm::vec4 clip = view.views.front() * glm::vec4(c.center, 1.0f);
-    c.order = clip.w > 0.0f ? clip.z / clip.w : -INFINITY;  // centres behind the eye first
-  }
-  std::sort(visible.begin(), visible.end(), [](const Candidate& a, const Candidate& b) {
-    return std::tie(a.order, a.table, a.instance, a.part) < std::tie(b.order, b.table, b.instance, b.part);
-  });
-  return visible;
-}
-
 // The share of its points an object keeps when objects in front hide `transmittance` of its screen
 // rectangle on average. Its points are a prefix of a list spread over all of it, so they cannot
 // follow which part is hidden: it keeps its full count until nearly all of its rectangle is hidden
@@ -159,47 +126,230 @@ float rounding(const InstanceTable& table, const Candidate& c, const SampledMesh
   return Random(c.part ? derive_seed(seed, static_cast<std::uint64_t>(c.part - mesh.parts.data()) + 1) : seed).uniform();
 }
 
-}  // namespace
+// The depth order of a point in the first view: its NDC depth, -infinity behind the eye.
+float depth_order(const SamplerView& view, const glm::vec3& p) {
+  const glm::vec4 clip = view.views.front() * glm::vec4(p, 1.0f);
+  return clip.w > 0.0f ? clip.z / clip.w : -INFINITY;
+}
 
-SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTable>& tables,
-                         const std::vector<SampledMesh>& meshes) {
-  SampledFrame frame;
-  frame.polygons.resize(tables.size());
-  // Occlusion and the cap need one image; several views (cube maps) count every instance whole.
-  std::optional<CoverageGrid> coverage;
-  if ((view.occlusion || view.cap_to_pixels) && view.views.size() == 1) {
-    coverage.emplace(view.views.front(), view.pixels, view.splat_pixels);
+std::array<glm::vec3, 8> box_corners(const InstanceCell& cell) {
+  return box_corners(0.5f * (cell.min + cell.max), 0.5f * (cell.max - cell.min), glm::mat4(1.0f));
+}
+
+// One view's sampling: cells front to back, each opened into its instances (or parts), hidden as
+// a whole, or counted as a whole when far; the instances of the open cells in exact front-to-back
+// order, each counted, drawn and added to the coverage grid.
+class ViewSampling {
+ public:
+  ViewSampling(const SamplerView& view, const std::vector<InstanceTable>& tables, const std::vector<SampledMesh>& meshes)
+      : view_(view), tables_(tables), meshes_(meshes) {
+    frame_.polygons.resize(tables.size());
+    for (const glm::mat4& m : view.views) frusta_.push_back(frustum_planes(m));
+    // Occlusion and the cap need one image; several views (cube maps) count every instance whole.
+    if ((view.occlusion || view.cap_to_pixels) && view.views.size() == 1) coverage_.emplace(view.views.front(), view.pixels, view.splat_pixels);
+    if (coverage_ && view.occlusion) occlusion_ = &*coverage_;
   }
-  const CoverageGrid* occlusion = coverage && view.occlusion ? &*coverage : nullptr;
-  for (const Candidate& c : candidates_in_view(view, tables, meshes, occlusion)) {
-    const SampledMesh& mesh = meshes[tables[c.table].mesh];
-    const glm::mat4& transform = tables[c.table].transforms[c.instance];
-    float needed = unoccluded_count(view, coverage ? &*coverage : nullptr, c, mesh, transform);
-    // Only point meshes hide others: ground and buildings are large and far from their bounds.
+
+  SampledFrame run(const InstanceCells& cells) {
+    struct Seen {
+      const InstanceCell* cell;
+      float order;
+    };
+    std::vector<Seen> seen;
+    for (const std::vector<InstanceCell>& table_cells : cells.by_table()) {
+      for (const InstanceCell& cell : table_cells) {
+        if (!box_in_view(cell)) continue;
+        float order = INFINITY;
+        for (const glm::vec3& corner : box_corners(cell)) order = std::min(order, depth_order(view_, corner));
+        seen.push_back({&cell, order});
+      }
+    }
+    std::sort(seen.begin(), seen.end(), [](const Seen& a, const Seen& b) {
+      return std::tie(a.order, a.cell->table, a.cell->members.front()) < std::tie(b.order, b.cell->table, b.cell->members.front());
+    });
+    // A cell's instances lie behind its box's nearest corner: those queued in front of it go first.
+    for (const Seen& s : seen) {
+      while (!open_.empty() && open_.front().front().order < s.order) add_next();
+      if (hidden(*s.cell) || add_as_aggregate(*s.cell)) continue;
+      open(*s.cell);
+    }
+    while (!open_.empty()) add_next();
+    return std::move(frame_);
+  }
+
+ private:
+  // Front to back; ties in a fixed order.
+  static bool before(const Candidate& a, const Candidate& b) {
+    return std::tie(a.order, a.table, a.instance, a.part) < std::tie(b.order, b.table, b.instance, b.part);
+  }
+  // An open cell's candidates in view, sorted, and the next one to add. The open cells make a
+  // heap by their next candidate: a merge of sorted lists, which stays small and in cache where
+  // one heap of every candidate would not (a 2048² shadow map's view of 10^5 trees by parts
+  // holds millions).
+  struct OpenCell {
+    std::vector<Candidate> candidates;
+    std::size_t next = 0;
+    const Candidate& front() const { return candidates[next]; }
+  };
+  static bool later(const OpenCell& a, const OpenCell& b) { return before(b.front(), a.front()); }
+
+  bool box_in_view(const InstanceCell& cell) const {
+    const glm::vec3 center = 0.5f * (cell.min + cell.max);
+    return inside_any(frusta_, center, 0.5f * glm::length(cell.max - cell.min));
+  }
+
+  // Whether nearer objects leave less of the cell's rectangle uncovered than any of its instances
+  // would need to be drawn (docs/point_density.md, "Cells").
+  bool hidden(const InstanceCell& cell) const {
+    if (!occlusion_ || meshes_[tables_[cell.table].mesh].sample_positions.empty()) return false;
+    const std::optional<CoverageGrid::Rect> rect = occlusion_->project(box_corners(cell));
+    return rect && occlusion_->transmittance(*rect) < hidden_transmittance;
+  }
+
+  // Opens the cell: its instances in view, large near ones by their parts in view.
+  void open(const InstanceCell& cell) {
+    const InstanceTable& table = tables_[cell.table];
+    const SampledMesh& mesh = meshes_[table.mesh];
+    OpenCell open;
+    for (std::uint32_t i : cell.members) {
+      const glm::mat4& m = table.transforms[i];
+      const float scale = uniform_scale(m);
+      Candidate whole{cell.table, i, nullptr, glm::vec3(m * glm::vec4(mesh.center, 1.0f)), mesh.radius * scale,
+                      mesh.area * scale * scale};
+      if (!inside_any(frusta_, whole.center, whole.radius)) continue;
+      if (!occlusion_ || !counted_by_parts(view_, *occlusion_, mesh, m, whole)) {
+        whole.order = depth_order(view_, whole.center);
+        open.candidates.push_back(whole);
+        continue;
+      }
+      add_parts(whole, mesh, m, open.candidates);
+    }
+    if (open.candidates.empty()) return;
+    std::sort(open.candidates.begin(), open.candidates.end(), before);
+    open_.push_back(std::move(open));
+    std::push_heap(open_.begin(), open_.end(), later);
+  }
+
+  // The parts in view of an instance, in depth order.
+  void add_parts(const Candidate& whole, const SampledMesh& mesh, const glm::mat4& transform, std::vector<Candidate>& out) const {
+    const float scale = uniform_scale(transform);
+    for (const MeshPart& part : mesh.parts) {
+      Candidate c{whole.table, whole.instance, &part, glm::vec3(transform * glm::vec4(part.center, 1.0f)), part.radius * scale,
+                  part.area * scale * scale};
+      if (!inside_any(frusta_, c.center, c.radius)) continue;
+      c.order = depth_order(view_, c.center);
+      out.push_back(c);
+    }
+  }
+
+  // A far cell whose instances need less than a point each on average, counted as one object
+  // (the randomized z-buffer's aggregate): its expected points go one each to the first of its
+  // members, in their fixed random order. False when the cell is not far enough.
+  bool add_as_aggregate(const InstanceCell& cell) {
+    const InstanceTable& table = tables_[cell.table];
+    const SampledMesh& mesh = meshes_[table.mesh];
+    if (mesh.samples == 0) return false;
+    const glm::vec3 center = 0.5f * (cell.min + cell.max);
+    const float radius = 0.5f * glm::length(cell.max - cell.min);
+    if (!(radius < aggregate_radius * glm::distance(view_.eye, center))) return false;
+    const Candidate all{cell.table, cell.members.front(), nullptr, center, radius, cell.area};
+    float needed = unoccluded_count(view_, coverage_ ? &*coverage_ : nullptr, all, mesh, table.transforms[cell.members.front()]);
+    if (!(needed < static_cast<float>(cell.members.size()))) return false;
     std::optional<CoverageGrid::Rect> rect;
-    if (occlusion && !mesh.sample_positions.empty()) rect = occlusion->project(box_corners(c, mesh, transform));
-    if (rect) needed *= visible_share(coverage->transmittance(*rect), view.full_count_transmittance);
+    if (occlusion_ && !mesh.sample_positions.empty()) rect = occlusion_->project(box_corners(cell));
+    if (rect) needed *= visible_share(occlusion_->transmittance(*rect), view_.full_count_transmittance);
+    const std::uint64_t seed = table.seeds.size() > cell.members.front() ? table.seeds[cell.members.front()] : cell.members.front();
+    const auto count = static_cast<std::size_t>(std::floor(needed + Random(derive_seed(seed, 0x61676772u)).uniform()));
+    for (std::size_t i = 0; i < std::min(count, cell.members.size()); ++i) {
+      const std::uint32_t instance = cell.members[i];
+      const std::uint64_t instance_seed = table.seeds.size() > instance ? table.seeds[instance] : instance;
+      const std::uint32_t first = Random(derive_seed(instance_seed, 0x6f6e65u)).below(static_cast<std::uint32_t>(mesh.samples));
+      frame_.points.push_back({cell.table, instance, 1, first});
+      ++frame_.point_count;
+      if (rect) occlusion_->cover(std::span(mesh.sample_positions).subspan(first, 1), table.transforms[instance]);
+    }
+    return true;
+  }
+
+  // Adds the nearest candidate of the open cells.
+  void add_next() {
+    std::pop_heap(open_.begin(), open_.end(), later);
+    OpenCell& cell = open_.back();
+    const Candidate c = cell.candidates[cell.next++];
+    if (cell.next == cell.candidates.size()) {
+      open_.pop_back();
+    } else {
+      std::push_heap(open_.begin(), open_.end(), later);
+    }
+    add(c);
+  }
+
+  // Counts one instance or part, chooses points or polygons, and covers what it hides.
+  void add(const Candidate& c) {
+    const SampledMesh& mesh = meshes_[tables_[c.table].mesh];
+    const glm::mat4& transform = tables_[c.table].transforms[c.instance];
+    // Only point meshes hide others and are hidden: ground and buildings are large and far from
+    // their bounds.
+    std::optional<CoverageGrid::Rect> rect;
+    float share = 1.0f;
+    if (occlusion_ && !mesh.sample_positions.empty()) rect = occlusion_->project(box_corners(c, mesh, transform));
+    if (rect) {
+      if (!rect->on_screen()) return;  // its sphere reached into the view, its box does not
+      const float transmittance = occlusion_->transmittance(*rect);
+      if (transmittance < hidden_transmittance) return;
+      share = visible_share(transmittance, view_.full_count_transmittance);
+    }
+    const float needed = unoccluded_count(view_, coverage_ ? &*coverage_ : nullptr, c, mesh, transform) * share;
     const std::uint32_t first = c.part ? c.part->first : 0;
     const std::size_t samples = c.part ? c.part->samples : mesh.samples;
-    const float ratio = needed / polygon_equivalent(view, mesh);
+    const float ratio = needed / polygon_equivalent(view_, mesh);
     const bool as_polygons = !c.part && (ratio > band_low || needed > static_cast<float>(samples));
     const bool as_points = (c.part || ratio < band_high) && samples > 0;
+    if (!c.part && !as_polygons && rect && occlusion_->cells_in(*rect) > pixels_to_split && !mesh.parts.empty() &&
+        needed >= static_cast<float>(mesh.parts.size())) {
+      // Left whole in case it needed polygons, it needs points after all now that so much of it
+      // is hidden: counted by parts, front to back, so that its points go where it can be seen.
+      std::vector<Candidate> parts;
+      add_parts(c, mesh, transform, parts);
+      std::sort(parts.begin(), parts.end(), before);
+      for (const Candidate& part : parts) add(part);
+      return;
+    }
     const float drawn = as_polygons ? needed * std::clamp((band_high - ratio) / (band_high - band_low), 0.0f, 1.0f) : needed;
     // Rounded up or down at the candidate's own fixed threshold: unbiased over many small
     // instances, and steady from frame to frame.
-    const auto count = static_cast<std::uint32_t>(std::min(std::floor(drawn + rounding(tables[c.table], c, mesh)),
+    const auto count = static_cast<std::uint32_t>(std::min(std::floor(drawn + rounding(tables_[c.table], c, mesh)),
                                                            static_cast<float>(samples)));
     if (as_points && count > 0) {
-      frame.points.push_back({c.table, c.instance, count, first});
-      frame.point_count += count;
+      frame_.points.push_back({c.table, c.instance, count, first});
+      frame_.point_count += count;
     }
     if (as_polygons) {
-      frame.polygons[c.table].push_back(c.instance);
-      frame.triangle_count += mesh.triangles;
+      frame_.polygons[c.table].push_back(c.instance);
+      frame_.triangle_count += mesh.triangles;
     }
-    if (rect) cover(*coverage, mesh, first, transform, *rect, as_polygons ? mesh.samples : (as_points ? count : 0));
+    if (rect) cover(*occlusion_, mesh, first, transform, *rect, as_polygons ? mesh.samples : (as_points ? count : 0));
   }
-  return frame;
+
+  const SamplerView& view_;
+  const std::vector<InstanceTable>& tables_;
+  const std::vector<SampledMesh>& meshes_;
+  std::vector<Frustum> frusta_;
+  std::optional<CoverageGrid> coverage_;
+  CoverageGrid* occlusion_ = nullptr;
+  std::vector<OpenCell> open_;  // a heap (later)
+  SampledFrame frame_;
+};
+
+}  // namespace
+
+SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTable>& tables, const std::vector<SampledMesh>& meshes,
+                         const InstanceCells& cells) {
+  return ViewSampling(view, tables, meshes).run(cells);
+}
+
+SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTable>& tables, const std::vector<SampledMesh>& meshes) {
+  return sample_view(view, tables, meshes, InstanceCells(tables, meshes));
 }
 
 }  // namespace pointgen
