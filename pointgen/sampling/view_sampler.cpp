@@ -198,8 +198,8 @@ class ViewSampling {
     return inside_any(frusta_, center, 0.5f * glm::length(cell.max - cell.min));
   }
 
-  // Whether nearer objects leave less of the cell's rectangle uncovered than any of its instances
-  // would need to be drawn (docs/point_density.md, "Cells").
+  // Whether nearer objects leave less than hidden_transmittance of the cell's rectangle uncovered
+  // (docs/point_density.md, "Cells").
   bool hidden(const InstanceCell& cell) const {
     if (!occlusion_ || meshes_[tables_[cell.table].mesh].sample_positions.empty()) return false;
     const std::optional<CoverageGrid::Rect> rect = occlusion_->project(box_corners(cell));
@@ -230,7 +230,7 @@ class ViewSampling {
     std::push_heap(open_.begin(), open_.end(), later);
   }
 
-  // The parts in view of an instance, in depth order.
+  // The parts of an instance that are in view, each with its depth order.
   void add_parts(const Candidate& whole, const SampledMesh& mesh, const glm::mat4& transform, std::vector<Candidate>& out) const {
     const float scale = uniform_scale(transform);
     for (const MeshPart& part : mesh.parts) {
