@@ -290,8 +290,14 @@ TEST(CoverageGrid, CellsAndTilesKeepWhatIsLeftUncovered) {
   CoverageGrid perspective(glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f), {16, 16});
   perspective.cover(std::vector<glm::vec3>{{0.0f, 0.0f, 5.0f}}, glm::mat4(1.0f));
   EXPECT_NEAR(perspective.transmittance({{-1.0f, -1.0f}, {1.0f, 1.0f}}), 1.0f, 1e-6f);
-  EXPECT_FALSE(perspective.project({glm::vec3(-1, -1, 1), glm::vec3(1, -1, 1), glm::vec3(-1, 1, 1), glm::vec3(1, 1, 1),
-                                    glm::vec3(-1, -1, -3), glm::vec3(1, -1, -3), glm::vec3(-1, 1, -3), glm::vec3(1, 1, -3)}));
+  EXPECT_FALSE(perspective.project({0, 0, -1}, {1, 1, 2}, glm::mat4(1.0f)));
+  // In front: x / -z and y / -z of its corners, after the transform moves it 2 m right and 5 m away.
+  const std::optional<CoverageGrid::Rect> box = perspective.project({0, 0, -5}, {1, 1, 0}, glm::translate(glm::mat4(1.0f), {2, 0, -5}));
+  ASSERT_TRUE(box);
+  EXPECT_NEAR(box->min.x, 0.1f, 1e-5f);
+  EXPECT_NEAR(box->max.x, 0.3f, 1e-5f);
+  EXPECT_NEAR(box->min.y, -0.1f, 1e-5f);
+  EXPECT_NEAR(box->max.y, 0.1f, 1e-5f);
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
 #pragma once
 #include <glm/glm.hpp>
 
-#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -29,8 +28,9 @@ class CoverageGrid {
   // position, as the splatting shaders do.
   CoverageGrid(const glm::mat4& view_projection, glm::ivec2 cells, int splat = 1);
 
-  // The screen rectangle holding a box (its eight corners), or none when part of it lies behind the eye.
-  std::optional<Rect> project(const std::array<glm::vec3, 8>& corners) const;
+  // The screen rectangle holding a box (its centre and half sizes in a frame that `transform`
+  // places), or none when part of it lies behind the eye.
+  std::optional<Rect> project(const glm::vec3& center, const glm::vec3& half_size, const glm::mat4& transform) const;
   // Square NDC units that one square metre facing the view covers at `point`.
   float ndc_area_per_square_metre(const glm::vec3& point) const;
   // How many cells `rect` spans, on screen or not.

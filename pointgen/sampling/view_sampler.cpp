@@ -53,18 +53,10 @@ bool inside_any(const std::vector<Frustum>& frusta, const glm::vec3& center, flo
   });
 }
 
-// The eight corners of a box in a mesh's frame under an instance's transform.
-std::array<glm::vec3, 8> box_corners(const glm::vec3& center, const glm::vec3& half_size, const glm::mat4& transform) {
-  std::array<glm::vec3, 8> corners;
-  for (int i = 0; i < 8; ++i) {
-    const glm::vec3 sign((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f);
-    corners[i] = glm::vec3(transform * glm::vec4(center + sign * half_size, 1.0f));
-  }
-  return corners;
-}
-
-std::array<glm::vec3, 8> box_corners(const Candidate& c, const SampledMesh& mesh, const glm::mat4& transform) {
-  return c.part ? box_corners(c.part->center, c.part->half_size, transform) : box_corners(mesh.center, mesh.half_size, transform);
+// The screen rectangle of an instance's or a part's box.
+std::optional<CoverageGrid::Rect> rect_of(const CoverageGrid& grid, const Candidate& c, const SampledMesh& mesh,
+                                          const glm::mat4& transform) {
+  return c.part ? grid.project(c.part->center, c.part->half_size, transform) : grid.project(mesh.center, mesh.half_size, transform);
 }
 
 float polygon_equivalent(const SamplerView& view, const SampledMesh& mesh) {
@@ -97,7 +89,7 @@ bool counted_by_parts(const SamplerView& view, const CoverageGrid& coverage, con
                       const Candidate& whole) {
   if (mesh.parts.empty() || mesh.sample_positions.empty()) return false;
   // The size first: most instances are small, and their counts are taken once, in sample_view.
-  const std::optional<CoverageGrid::Rect> rect = coverage.project(box_corners(mesh.center, mesh.half_size, transform));
+  const std::optional<CoverageGrid::Rect> rect = coverage.project(mesh.center, mesh.half_size, transform);
   if (!rect || !(coverage.cells_in(*rect) > pixels_to_split)) return false;
   const float needed = unoccluded_count(view, &coverage, whole, mesh, transform);
   return needed < std::min(band_low * polygon_equivalent(view, mesh), static_cast<float>(mesh.samples));
@@ -132,8 +124,8 @@ float depth_order(const SamplerView& view, const glm::vec3& p) {
   return clip.w > 0.0f ? clip.z / clip.w : -INFINITY;
 }
 
-std::array<glm::vec3, 8> box_corners(const InstanceCell& cell) {
-  return box_corners(0.5f * (cell.min + cell.max), 0.5f * (cell.max - cell.min), glm::mat4(1.0f));
+std::optional<CoverageGrid::Rect> rect_of(const CoverageGrid& grid, const InstanceCell& cell) {
+  return grid.project(0.5f * (cell.min + cell.max), 0.5f * (cell.max - cell.min), glm::mat4(1.0f));
 }
 
 // One view's sampling: cells front to back, each opened into its instances (or parts), hidden as
@@ -160,7 +152,10 @@ class ViewSampling {
       for (const InstanceCell& cell : table_cells) {
         if (!box_in_view(cell)) continue;
         float order = INFINITY;
-        for (const glm::vec3& corner : box_corners(cell)) order = std::min(order, depth_order(view_, corner));
+        for (int i = 0; i < 8; ++i) {
+          const glm::vec3 corner((i & 1) ? cell.max.x : cell.min.x, (i & 2) ? cell.max.y : cell.min.y, (i & 4) ? cell.max.z : cell.min.z);
+          order = std::min(order, depth_order(view_, corner));
+        }
         seen.push_back({&cell, order});
       }
     }
@@ -202,7 +197,7 @@ class ViewSampling {
   // (docs/point_density.md, "Cells").
   bool hidden(const InstanceCell& cell) const {
     if (!occlusion_ || meshes_[tables_[cell.table].mesh].sample_positions.empty()) return false;
-    const std::optional<CoverageGrid::Rect> rect = occlusion_->project(box_corners(cell));
+    const std::optional<CoverageGrid::Rect> rect = rect_of(*occlusion_, cell);
     return rect && occlusion_->transmittance(*rect) < hidden_transmittance;
   }
 
@@ -256,7 +251,7 @@ class ViewSampling {
     float needed = unoccluded_count(view_, coverage_ ? &*coverage_ : nullptr, all, mesh, table.transforms[cell.members.front()]);
     if (!(needed < static_cast<float>(cell.members.size()))) return false;
     std::optional<CoverageGrid::Rect> rect;
-    if (occlusion_ && !mesh.sample_positions.empty()) rect = occlusion_->project(box_corners(cell));
+    if (occlusion_ && !mesh.sample_positions.empty()) rect = rect_of(*occlusion_, cell);
     if (rect) needed *= visible_share(occlusion_->transmittance(*rect), view_.full_count_transmittance);
     const std::uint64_t seed = table.seeds.size() > cell.members.front() ? table.seeds[cell.members.front()] : cell.members.front();
     const auto count = static_cast<std::size_t>(std::floor(needed + Random(derive_seed(seed, 0x61676772u)).uniform()));
@@ -292,7 +287,7 @@ class ViewSampling {
     // their bounds.
     std::optional<CoverageGrid::Rect> rect;
     float share = 1.0f;
-    if (occlusion_ && !mesh.sample_positions.empty()) rect = occlusion_->project(box_corners(c, mesh, transform));
+    if (occlusion_ && !mesh.sample_positions.empty()) rect = rect_of(*occlusion_, c, mesh, transform);
     if (rect) {
       if (!rect->on_screen()) return;  // its sphere reached into the view, its box does not
       const float transmittance = occlusion_->transmittance(*rect);
