@@ -165,7 +165,10 @@ class ViewSampling {
     // A cell's instances lie behind its box's nearest corner: those queued in front of it go first.
     for (const Seen& s : seen) {
       while (!open_.empty() && open_.front().front().order < s.order) add_next();
-      if (hidden(*s.cell) || add_as_aggregate(*s.cell)) continue;
+      // Hidden: nearer objects leave too little of its rectangle uncovered (docs/point_density.md, "Cells").
+      const std::optional<CoverageGrid::Rect> rect = occlusion_rect(*s.cell);
+      const float transmittance = rect ? occlusion_->transmittance(*rect) : 1.0f;
+      if (transmittance < hidden_transmittance || add_as_aggregate(*s.cell, rect, transmittance)) continue;
       open(*s.cell);
     }
     while (!open_.empty()) add_next();
@@ -193,12 +196,11 @@ class ViewSampling {
     return inside_any(frusta_, center, 0.5f * glm::length(cell.max - cell.min));
   }
 
-  // Whether nearer objects leave less than hidden_transmittance of the cell's rectangle uncovered
-  // (docs/point_density.md, "Cells").
-  bool hidden(const InstanceCell& cell) const {
-    if (!occlusion_ || meshes_[tables_[cell.table].mesh].sample_positions.empty()) return false;
-    const std::optional<CoverageGrid::Rect> rect = rect_of(*occlusion_, cell);
-    return rect && occlusion_->transmittance(*rect) < hidden_transmittance;
+  // The cell's screen rectangle in the occlusion grid; none without occlusion, or for meshes that
+  // neither hide nor are hidden.
+  std::optional<CoverageGrid::Rect> occlusion_rect(const InstanceCell& cell) const {
+    if (!occlusion_ || meshes_[tables_[cell.table].mesh].sample_positions.empty()) return std::nullopt;
+    return rect_of(*occlusion_, cell);
   }
 
   // Opens the cell: its instances in view, large near ones by their parts in view.
@@ -239,8 +241,9 @@ class ViewSampling {
 
   // A far cell whose instances need less than a point each on average, counted as one object
   // (the randomized z-buffer's aggregate): its expected points go one each to the first of its
-  // members, in their fixed random order. False when the cell is not far enough.
-  bool add_as_aggregate(const InstanceCell& cell) {
+  // members, in their fixed random order. False when the cell is not far enough. `rect` and
+  // `transmittance` are the cell's in the occlusion grid.
+  bool add_as_aggregate(const InstanceCell& cell, const std::optional<CoverageGrid::Rect>& rect, float transmittance) {
     const InstanceTable& table = tables_[cell.table];
     const SampledMesh& mesh = meshes_[table.mesh];
     if (mesh.samples == 0) return false;
@@ -250,9 +253,7 @@ class ViewSampling {
     const Candidate all{cell.table, cell.members.front(), nullptr, center, radius, cell.area};
     float needed = unoccluded_count(view_, coverage_ ? &*coverage_ : nullptr, all, mesh, table.transforms[cell.members.front()]);
     if (!(needed < static_cast<float>(cell.members.size()))) return false;
-    std::optional<CoverageGrid::Rect> rect;
-    if (occlusion_ && !mesh.sample_positions.empty()) rect = rect_of(*occlusion_, cell);
-    if (rect) needed *= visible_share(occlusion_->transmittance(*rect), view_.full_count_transmittance);
+    needed *= visible_share(transmittance, view_.full_count_transmittance);
     const std::uint64_t seed = table.seeds.size() > cell.members.front() ? table.seeds[cell.members.front()] : cell.members.front();
     const auto count = static_cast<std::size_t>(std::floor(needed + Random(derive_seed(seed, 0x61676772u)).uniform()));
     for (std::size_t i = 0; i < std::min(count, cell.members.size()); ++i) {
