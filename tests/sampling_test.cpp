@@ -190,11 +190,15 @@ TEST(ViewSampler, AFarCellIsCountedWholeWithOnePointForEachOfAsManyInstancesAsIt
   const SampledFrame f = sample_view(view, {table}, {mesh});
   EXPECT_NEAR(static_cast<double>(f.point_count), expected, 0.02 * expected + 4.0 * std::sqrt(expected)) << "about 5,000";
   std::vector<std::uint32_t> drawn;
+  std::size_t offset = 0;
   for (const PointDraw& d : f.points) {
     EXPECT_EQ(d.count, 1u);
     EXPECT_LT(d.first, mesh.samples);
+    offset += d.first > 0;
     drawn.push_back(d.instance);
   }
+  // Each at its own place in its list (an instance counted alone would draw the first sample).
+  EXPECT_GT(offset, f.points.size() * 9 / 10);
   std::sort(drawn.begin(), drawn.end());
   EXPECT_EQ(std::adjacent_find(drawn.begin(), drawn.end()), drawn.end()) << "one point per chosen instance";
   const SampledFrame again = sample_view(view, {table}, {mesh});
