@@ -16,6 +16,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace ecoview {
@@ -68,22 +69,30 @@ class ShadowBench {
     fs::create_directories(out_ / "images");
   }
 
-  // Speed against accuracy: every method at every map size.
+  // Speed against accuracy: every method at every map size, the methods of one size timed in turn.
   void trade_off(const View& view, const std::string& scene_name, bool small, Progress& progress) {
     const std::vector<ShadowMethod>& methods =
         view.light.type == shadow::LightType::directional ? directional_methods : point_methods;
-    for (ShadowMethod method : methods) {
-      for (int size : plan_.sizes) {
-        Renderer renderer(view.scene, settings(method, size));
-        BenchRun run = measure(renderer, view, small ? plan_.warmup : plan_.big_warmup, small ? plan_.frames : plan_.big_frames);
-        run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", shadow_method_name(method)}, {"shadow_size", size}});
+    for (int size : plan_.sizes) {
+      std::vector<std::unique_ptr<Renderer>> renderers;
+      std::vector<Renderer*> timed;
+      for (ShadowMethod method : methods) {
+        renderers.push_back(std::make_unique<Renderer>(view.scene, settings(method, size)));
+        timed.push_back(renderers.back().get());
+      }
+      const std::vector<FrameTiming> timings =
+          time_frames_in_turn(timed, view.camera, view.light, view.t, small ? plan_.warmup : plan_.big_warmup,
+                              small ? plan_.frames : plan_.big_frames);
+      for (std::size_t m = 0; m < methods.size(); ++m) {
+        BenchRun run = measure(*renderers[m], view, timings[m]);
+        run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", shadow_method_name(methods[m])}, {"shadow_size", size}});
         results_.runs.push_back(run);
-        if (size == crop_size) crop(renderer, scene_name, shadow_method_name(method));
+        if (size == crop_size) crop(*renderers[m], scene_name, shadow_method_name(methods[m]));
         progress.step();
       }
     }
     Renderer volumes(view.scene, settings(ShadowMethod::volumes, 0));
-    BenchRun run = measure(volumes, view, 0, 1);
+    BenchRun run = measure(volumes, view, time_frames(volumes, view.camera, view.light, view.t, 0, 1));
     run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", "volumes"}, {"shadow_size", 0}});
     results_.runs.push_back(run);
     crop(volumes, scene_name, "volumes");
@@ -99,7 +108,7 @@ class ShadowBench {
     for (std::size_t l = 0; l < field.lights.size(); l += static_cast<std::size_t>(plan_.angle_step)) {
       for (ShadowMethod method : directional_methods) {
         Renderer renderer(field, settings(method, crop_size));
-        BenchRun run = measure(renderer, {field, exact, field.camera, field.lights[l]}, 1, 0);
+        BenchRun run = measure(renderer, {field, exact, field.camera, field.lights[l]});
         run.params.update({{"sweep", "stability"}, {"scene", "field"}, {"method", shadow_method_name(method)},
                            {"shadow_size", crop_size}, {"light_view_deg", field_light_step_deg * static_cast<float>(l)}});
         results_.runs.push_back(run);
@@ -117,7 +126,7 @@ class ShadowBench {
       lamp.position = field.camera.position + offset * field.camera.forward() + glm::vec3(0.0f, 8.0f, 0.0f);
       for (ShadowMethod method : point_methods) {
         Renderer renderer(field, settings(method, crop_size));
-        BenchRun run = measure(renderer, {field, exact, field.camera, lamp}, 1, 0);
+        BenchRun run = measure(renderer, {field, exact, field.camera, lamp});
         run.params.update({{"sweep", "crossing"}, {"scene", "field"}, {"method", shadow_method_name(method)},
                            {"shadow_size", crop_size}, {"light_offset_m", offset}});
         results_.runs.push_back(run);
@@ -134,8 +143,7 @@ class ShadowBench {
       Renderer renderer(scene, settings(method, crop_size));
       for (int f = 0; f < plan_.flight_frames; ++f) {
         const double t = path.duration() * f / std::max(1, plan_.flight_frames - 1);
-        // A warm-up frame at the same place: the PSM takes its near plane from the last frame.
-        BenchRun run = measure(renderer, {scene, exact, path.at(t, scene.camera), light, t}, 1, 0);
+        BenchRun run = measure(renderer, {scene, exact, path.at(t, scene.camera), light, t});
         run.params.update({{"sweep", "flythrough"}, {"scene", scene_name}, {"method", shadow_method_name(method)},
                            {"shadow_size", crop_size}, {"frame", f}, {"t", t}});
         results_.runs.push_back(run);
@@ -161,17 +169,16 @@ class ShadowBench {
     return s;
   }
 
-  // `frames` timed frames after `warmup`, then one frame with the aliasing factor, against the
-  // exact reference. Without timed frames the run has no times.
-  BenchRun measure(Renderer& renderer, const View& view, int warmup, int frames) {
+  // The figures of one frame with the aliasing factor, against the exact reference, after a frame
+  // at the same place (the PSM takes its near plane from the last frame), and the times if taken.
+  BenchRun measure(Renderer& renderer, const View& view, const std::optional<FrameTiming>& timing = std::nullopt) {
     BenchRun run;
-    if (frames > 0) {
-      const FrameTiming timing = time_frames(renderer, view.camera, view.light, view.t, warmup, frames);
-      run.figures.update({{"frame_ms", timing.frame_ms}, {"sample_ms", timing.sample_ms},
-                          {"shadow_pass_ms", timing.shadow_pass_ms}, {"frame_pass_ms", timing.frame_pass_ms}});
-      run.params["frames"] = frames;
+    if (timing) {
+      run.figures.update({{"frame_ms", timing->frame_ms}, {"sample_ms", timing->sample_ms},
+                          {"shadow_pass_ms", timing->shadow_pass_ms}, {"frame_pass_ms", timing->frame_pass_ms}});
+      run.params["frames"] = timing->frames;
     } else {
-      for (int i = 0; i < warmup; ++i) renderer.render(view.camera, view.light, view.t);
+      renderer.render(view.camera, view.light, view.t);
     }
     renderer.set_aliasing(true);
     renderer.render(view.camera, view.light, view.t);

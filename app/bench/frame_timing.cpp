@@ -12,18 +12,31 @@ double median(std::vector<double> v) {
 
 FrameTiming time_frames(Renderer& renderer, const shadow::Camera& camera, const shadow::Light& light, double t,
                         int warmup, int frames) {
-  std::vector<double> wall, sample, shadow, frame;
+  return time_frames_in_turn({&renderer}, camera, light, t, warmup, frames).front();
+}
+
+std::vector<FrameTiming> time_frames_in_turn(const std::vector<Renderer*>& renderers, const shadow::Camera& camera,
+                                             const shadow::Light& light, double t, int warmup, int frames) {
+  struct Times {
+    std::vector<double> wall, sample, shadow, frame;
+  };
+  std::vector<Times> times(renderers.size());
   for (int i = 0; i < warmup + frames; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    renderer.render(camera, light, t);
-    glFinish();
-    if (i < warmup) continue;
-    wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    sample.push_back(renderer.stats().sample_ms);
-    shadow.push_back(renderer.stats().shadow_pass_ms);
-    frame.push_back(renderer.stats().frame_pass_ms);
+    for (std::size_t r = 0; r < renderers.size(); ++r) {
+      const auto start = std::chrono::steady_clock::now();
+      renderers[r]->render(camera, light, t);
+      glFinish();
+      if (i < warmup) continue;
+      const FrameStats& stats = renderers[r]->stats();
+      times[r].wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+      times[r].sample.push_back(stats.sample_ms);
+      times[r].shadow.push_back(stats.shadow_pass_ms);
+      times[r].frame.push_back(stats.frame_pass_ms);
+    }
   }
-  return {median(wall), median(sample), median(shadow), median(frame), frames};
+  std::vector<FrameTiming> timings;
+  for (Times& m : times) timings.push_back({median(m.wall), median(m.sample), median(m.shadow), median(m.frame), frames});
+  return timings;
 }
 
 }  // namespace ecoview

@@ -21,4 +21,10 @@ struct FrameTiming {
 FrameTiming time_frames(Renderer& renderer, const shadow::Camera& camera, const shadow::Light& light, double t,
                         int warmup, int frames);
 
+// The same for several renderers of one view, their frames taken in turn (one of each, then the
+// next of each), so that a slow spell of a shared machine falls on all of them alike and their
+// ratios hold; one timing per renderer.
+std::vector<FrameTiming> time_frames_in_turn(const std::vector<Renderer*>& renderers, const shadow::Camera& camera,
+                                             const shadow::Light& light, double t, int warmup, int frames);
+
 }  // namespace ecoview
