@@ -75,6 +75,45 @@ TEST(SurfaceSamples, SameSeedSameListOtherSeedOtherList) {
   }
 }
 
+// A flat grid of `side` × `side` unit squares in y = 0, two triangles each, all of area 1/2.
+TriangleMesh flat_grid(int side) {
+  TriangleMesh m;
+  for (int z = 0; z <= side; ++z) {
+    for (int x = 0; x <= side; ++x) m.positions.emplace_back(x, 0, z);
+  }
+  m.normals.assign(m.positions.size(), glm::vec3(0, 1, 0));
+  m.colors.assign(m.positions.size(), glm::vec3(1));
+  const auto at = [side](int x, int z) { return static_cast<std::uint32_t>(z * (side + 1) + x); };
+  for (int z = 0; z < side; ++z) {
+    for (int x = 0; x < side; ++x) m.indices.insert(m.indices.end(), {at(x, z), at(x, z + 1), at(x + 1, z), at(x + 1, z), at(x, z + 1), at(x + 1, z + 1)});
+  }
+  return m;
+}
+
+// Independent draws would give each of 128 triangles a count scattered by the square root of its
+// share (10 at a share of 100, the largest of 128 off by about 25; 15 and 30 off at shares of 20
+// and 100 with the former sampler); the list's prefixes keep every count within two of its share,
+// and leave no square of the grid empty once it is due 6 points.
+TEST(SurfaceSamples, EveryPrefixCoversTheSurfaceEvenly) {
+  const int side = 8, triangles = 2 * side * side;
+  const std::vector<SurfaceSample> s = sample_surface(flat_grid(side), 100 * triangles, 3);
+  for (std::size_t n : {static_cast<std::size_t>(3 * triangles), static_cast<std::size_t>(20 * triangles), s.size()}) {
+    std::vector<int> per_square(side * side, 0), per_triangle(triangles, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const glm::vec3 p = s[i].position;
+      const int x = std::min(side - 1, static_cast<int>(p.x)), z = std::min(side - 1, static_cast<int>(p.z));
+      const bool upper = (p.x - x) + (p.z - z) > 1.0f;
+      ++per_square[z * side + x];
+      ++per_triangle[2 * (z * side + x) + upper];
+    }
+    const double share = static_cast<double>(n) / triangles;
+    int worst = 0;
+    for (int c : per_triangle) worst = std::max(worst, static_cast<int>(std::ceil(std::abs(c - share))));
+    EXPECT_LE(worst, 2) << "prefix of " << n << ": a triangle's count is " << worst << " off its share " << share;
+    EXPECT_GT(*std::min_element(per_square.begin(), per_square.end()), 0) << "prefix of " << n;
+  }
+}
+
 TEST(SurfaceArea, OfKnownShapes) {
   EXPECT_NEAR(surface_area(unit_box()), 6.0f, 1e-4f);
   EXPECT_NEAR(surface_area(two_triangles()), 2.0f, 1e-5f);

@@ -13,11 +13,13 @@ struct SurfaceSample {
   glm::vec3 color;
 };
 
-// `count` points on the surface of `mesh`, each drawn independently: a triangle with probability
-// proportional to its area (a cumulative area table), then a uniform point in it. Because the
-// draws are independent, every prefix of the list is itself a uniform sample of the surface, so a
-// renderer can draw the first n for any n and change n from frame to frame without the points
-// jumping. Same mesh and seed, same list.
+// `count` points on the surface of `mesh`, spread by area: the i-th is the i-th of a Halton
+// sequence shifted by a random offset per seed, its first coordinate a place along the triangles'
+// cumulative area table, its second a place across that triangle. Every point is uniform on the
+// surface and every prefix of the list is a uniform sample of it, spread more evenly than
+// independent draws would be (no triangle far off its share, few gaps), so a renderer can draw the
+// first n for any n and change n from frame to frame without the points jumping. Same mesh and
+// seed, same list.
 std::vector<SurfaceSample> sample_surface(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed);
 
 // The total area of the mesh's triangles, square metres.
