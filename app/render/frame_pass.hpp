@@ -40,8 +40,6 @@ class FramePass {
   // The aliasing factor (DESIGN.md) of the surface in each pixel; negative where no surface was
   // drawn, 0 without a shadow map.
   Image<float> read_aliasing() const;
-  // The linear view depth target (GL_R32F; negative where no surface was drawn).
-  GLuint depth_texture() const { return depth_.name(); }
   // The depth-stencil texture (GL_DEPTH32F_STENCIL8) the frame draws into.
   GLuint depth_stencil_texture() const { return depth_buffer_.name(); }
   // Whether to fill the aliasing target from the next frame on.

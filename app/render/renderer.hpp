@@ -2,7 +2,6 @@
 #include "app/gl/gpu_timer.hpp"
 #include "app/render/frame_pass.hpp"
 #include "app/render/gpu_scene.hpp"
-#include "app/render/nearest_depth.hpp"
 #include "app/render/point_samples.hpp"
 #include "app/render/point_splat.hpp"
 #include "app/render/shadow_pass.hpp"
@@ -116,7 +115,6 @@ class Renderer {
   pointgen::InstanceCells cells_;  // of tables_
   ShadowPass shadow_pass_;
   FramePass frame_pass_;
-  NearestDepth nearest_depth_;  // psm, auto
   PointSplat frame_points_;
   std::unique_ptr<PointSplat> shadow_points_;  // made with the first shadow map that needs it
   std::unique_ptr<ShadowVolumePass> volume_pass_;  // --method volumes
