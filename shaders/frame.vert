@@ -9,9 +9,6 @@ layout(location = 10) in vec3 instance_color;
 uniform mat4 view;
 uniform mat4 view_projection;
 
-// The same depth in the depth pre-pass and the shaded pass (FramePass::render).
-invariant gl_Position;
-
 out vec3 world_position;
 out vec3 world_normal;
 out vec3 albedo;

@@ -1,3 +1,3 @@
 #version 450 core
-// Depth only: the depth test writes the target (a shadow map, the frame's depth pre-pass).
+// Depth only: the depth test writes the map.
 void main() {}

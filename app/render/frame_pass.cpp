@@ -19,7 +19,6 @@ FramePass::FramePass(int width, int height, bool aliasing)
       height_(height),
       aliasing_wanted_(aliasing),
       program_(gl::build_program({"frame.vert", "frame.frag"})),
-      depth_program_(gl::build_program({"frame.vert", "shadow_depth.frag"})),
       point_program_(gl::build_program({"fullscreen.vert", "point_shade.frag"})) {
   glTextureStorage2D(color_.name(), 1, GL_RGBA8, width, height);
   glTextureStorage2D(visibility_.name(), 1, GL_R8, width, height);
@@ -57,23 +56,9 @@ void FramePass::render(const GpuScene& scene, const shadow::Camera& camera, cons
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
 
-  // Depth first, then each pixel shaded once: crowds and foliage lie many layers deep, and the
-  // shading (shadow lookups) costs more than a second pass over the vertices.
-  const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
-  glUseProgram(depth_program_.name());
-  gl::set_uniform(depth_program_, "view", camera.view());
-  gl::set_uniform(depth_program_, "view_projection", camera.projection(aspect) * camera.view());
-  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  scene.draw();
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-
-  glDepthFunc(GL_LEQUAL);
-  glDepthMask(GL_FALSE);
   glUseProgram(program_.name());
   set_lighting(program_, camera, light, shadow_map);
   scene.draw();
-  glDepthMask(GL_TRUE);
-  glDepthFunc(GL_LESS);
 }
 
 void FramePass::shade_points(const PointSplat& points, const shadow::Camera& camera, const shadow::Light& light,

@@ -63,7 +63,6 @@ class FramePass {
   gl::Texture depth_buffer_{GL_TEXTURE_2D};
   gl::Framebuffer framebuffer_;
   gl::Program program_;
-  gl::Program depth_program_;  // the depth pre-pass
   gl::Program point_program_;
   gl::VertexArray empty_vertex_array_;  // for the fullscreen triangle, which has no attributes
 };
