@@ -113,14 +113,15 @@ class DensityBench {
         Renderer points(scene, settings);
         const FrameTiming timing = time_frames(points, scene.camera, scene.lights[0], 0.0, plan_.warmup, plan_.frames);
         renders.points = grab(points);
-        const DensityFigures f = density_figures(renders, points.count_points());
+        const DensityFigures f = density_figures(renders, points.count_front_points());
         BenchRun run;
         run.params = {{"sweep", "quality"}, {"scene", scene_name}, {"k", k}, {"splat", splat}, {"geometry", "points"},
                       {"width", settings.width}, {"height", settings.height}, {"frames", timing.frames}};
         run.figures = {{"holes", f.holes}, {"psnr", f.psnr}, {"psnr_floor", psnr_floor}, {"pts_per_px", f.pts_per_px},
                        {"pts_per_px_cv", f.pts_per_px_cv}, {"pts_per_px_near", f.pts_per_px_near},
                        {"pts_per_px_middle", f.pts_per_px_middle}, {"pts_per_px_far", f.pts_per_px_far},
-                       {"pixels_near", f.third_pixels[0]}, {"pixels_middle", f.third_pixels[1]}, {"pixels_far", f.third_pixels[2]},
+                       {"depth_nearest", f.third_depths[0]}, {"depth_middle_from", f.third_depths[1]},
+                       {"depth_far_from", f.third_depths[2]}, {"depth_farthest", f.third_depths[3]},
                        {"points", points.stats().points}, {"triangles", points.stats().triangles},
                        {"frame_ms", timing.frame_ms}, {"sample_ms", timing.sample_ms}, {"frame_pass_ms", timing.frame_pass_ms},
                        {"sampler_mpts", timing.sample_ms > 0 ? 1e-3 * static_cast<double>(points.stats().points) / timing.sample_ms : 0.0}};

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 
 namespace ecoview {
 namespace {
@@ -51,39 +50,41 @@ Image8 coverage_map(const DensityRenders& renders) {
 DensityFigures density_figures(const DensityRenders& renders, const Image<std::uint32_t>& counts) {
   const std::vector<bool> covered = point_object_pixels(renders.polygons, renders.occluders);
   const std::vector<float>& depth = renders.polygons.depth.samples;
-  DensityFigures f;
-  float near = std::numeric_limits<float>::max(), far = 0.0f;
+  std::vector<std::size_t> nearest_first;
   for (std::size_t i = 0; i < covered.size(); ++i) {
-    if (!covered[i]) continue;
-    near = std::min(near, depth[i]);
-    far = std::max(far, depth[i]);
+    if (covered[i]) nearest_first.push_back(i);
   }
+  std::stable_sort(nearest_first.begin(), nearest_first.end(), [&](std::size_t a, std::size_t b) { return depth[a] < depth[b]; });
+  DensityFigures f;
+  f.covered = nearest_first.size();
+  if (f.covered == 0) return f;
   std::size_t holes = 0;
   double sum = 0.0, sum_squares = 0.0;
-  std::array<double, 3> third_points{};
-  for (std::size_t i = 0; i < covered.size(); ++i) {
-    if (!covered[i]) continue;
-    ++f.covered;
+  for (std::size_t i : nearest_first) {
     holes += !in_front(renders.points.depth.samples[i], renders.occluders.depth.samples[i]);
     const double n = counts.samples[i];
     sum += n;
     sum_squares += n * n;
-    const auto third = static_cast<std::size_t>(std::min(2.0f, 3.0f * (depth[i] - near) / std::max(far - near, 1e-6f)));
-    third_points[third] += n;
-    ++f.third_pixels[third];
   }
-  if (f.covered == 0) return f;
   const auto n_covered = static_cast<double>(f.covered);
   f.holes = static_cast<double>(holes) / n_covered;
   f.psnr = psnr_over(covered, renders.polygons.color, renders.points.color);
   f.pts_per_px = sum / n_covered;
   f.pts_per_px_cv = f.pts_per_px > 0.0 ? std::sqrt(std::max(0.0, sum_squares / n_covered - f.pts_per_px * f.pts_per_px)) / f.pts_per_px : 0.0;
-  const auto mean_in = [&](int third) {
-    return f.third_pixels[third] > 0 ? third_points[third] / static_cast<double>(f.third_pixels[third]) : 0.0;
-  };
-  f.pts_per_px_near = mean_in(0);
-  f.pts_per_px_middle = mean_in(1);
-  f.pts_per_px_far = mean_in(2);
+  // Thirds of the pixels, not of the depth range: a few far pixels seen through a gap stretch the
+  // range, and its outer thirds would hold next to nothing.
+  std::array<double, 3> third_means{};
+  for (std::size_t t = 0; t < 3; ++t) {
+    const std::size_t begin = t * f.covered / 3, end = (t + 1) * f.covered / 3;
+    double third_sum = 0.0;
+    for (std::size_t j = begin; j < end; ++j) third_sum += counts.samples[nearest_first[j]];
+    third_means[t] = end > begin ? third_sum / static_cast<double>(end - begin) : 0.0;
+    f.third_depths[t] = depth[nearest_first[begin]];
+  }
+  f.third_depths[3] = depth[nearest_first.back()];
+  f.pts_per_px_near = third_means[0];
+  f.pts_per_px_middle = third_means[1];
+  f.pts_per_px_far = third_means[2];
   return f;
 }
 

@@ -12,12 +12,12 @@ namespace ecoview {
 struct DensityFigures {
   double holes = 0.0;            // covered by polygons, not by points, over covered pixels
   double psnr = 0.0;             // colour PSNR (dB) of points against polygons over covered pixels
-  double pts_per_px = 0.0;       // points per covered pixel: mean
+  double pts_per_px = 0.0;       // points per covered pixel (the counts given): mean
   double pts_per_px_cv = 0.0;    // and coefficient of variation over pixels
-  double pts_per_px_near = 0.0;  // mean over covered pixels in the nearest third of their depth range
+  double pts_per_px_near = 0.0;  // mean over the nearest third of the covered pixels, by depth
   double pts_per_px_middle = 0.0;
   double pts_per_px_far = 0.0;
-  std::array<std::size_t, 3> third_pixels{};  // covered pixels in the nearest, middle and farthest third
+  std::array<float, 4> third_depths{};  // where the thirds begin and end: nearest, 1/3, 2/3, farthest
   std::size_t covered = 0;
 };
 
@@ -44,6 +44,7 @@ double psnr_over(const std::vector<bool>& pixels, const Image8& reference, const
 // brightness, holes among them red.
 Image8 coverage_map(const DensityRenders& renders);
 
+// `counts`: the point render's points per pixel (Renderer::count_front_points).
 DensityFigures density_figures(const DensityRenders& renders, const Image<std::uint32_t>& counts);
 
 }  // namespace ecoview

@@ -107,8 +107,11 @@ void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float d
   if (find_points) dispatch(resolve_program_, view_projection, splat_size, depth_bias, paraboloid);
 }
 
-Image<std::uint32_t> PointSplat::count_points(const glm::mat4& view_projection) {
+Image<std::uint32_t> PointSplat::count_front_points(const glm::mat4& view_projection, const glm::mat4& projection,
+                                                   float front_gap) {
   if (!count_program_) count_program_ = std::make_unique<gl::Program>(gl::build_program({"point_count.comp"}));
+  gl::set_uniform(*count_program_, "ndc_to_depth", glm::vec2(projection[2][2], projection[3][2]));
+  gl::set_uniform(*count_program_, "front_gap", front_gap);
   clear(winners_, 0u);
   if (total_points_ > 0) dispatch(*count_program_, view_projection, 1, 0.0f, glm::vec2(0.0f));
   std::vector<std::uint32_t> bottom_up(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));

@@ -149,7 +149,12 @@ void Renderer::change(ShadowMethod method, int shadow_size, float k) {
   make_method_passes();
 }
 
-Image<std::uint32_t> Renderer::count_points() { return frame_points_.count_points(view_projection_); }
+Image<std::uint32_t> Renderer::count_front_points() {
+  const float pixel_width = 2.0f * std::tan(glm::radians(camera_.fov_y_deg) / 2.0f) / static_cast<float>(settings_.height);
+  // A neighbour on the same surface, sloped up to 45 degrees, lies within a splat's width in depth.
+  return frame_points_.count_front_points(view_projection_, camera_.projection(aspect()),
+                                          static_cast<float>(settings_.splat_size) * pixel_width);
+}
 
 float Renderer::aspect() const { return static_cast<float>(settings_.width) / static_cast<float>(settings_.height); }
 

@@ -75,8 +75,9 @@ class Renderer {
   const std::vector<pointgen::InstanceTable>& tables() const { return tables_; }
   // Fill the aliasing target (RenderSettings::aliasing) from the next frame on, or stop.
   void set_aliasing(bool wanted) { frame_pass_.set_aliasing(wanted); }
-  // Points per pixel of the last frame (see PointSplat::count_points).
-  Image<std::uint32_t> count_points();
+  // Points of the front surface per pixel of the last frame (PointSplat::count_front_points), the
+  // front taken as deep as a splat is wide at its depth.
+  Image<std::uint32_t> count_front_points();
   // The exact visibility of the last frame's surfaces (ExactVisibility::trace), as the `shadow`
   // AOV encodes it.
   Image8 exact_visibility();

@@ -57,7 +57,7 @@ def thirds_chart(results, out):
     for i, third in enumerate(("near", "middle", "far")):
         ax.bar([x + 0.27 * i for x in range(len(line))], [r["figures"][f"pts_per_px_{third}"] for r in line], 0.27, label=third)
     ax.set_xticks([x + 0.27 for x in range(len(line))], labels, rotation=30, fontsize=7)
-    ax.set(ylabel="points per covered pixel", title="Density by depth third")
+    ax.set(ylabel="points of the seen surface per covered pixel", title="Density in the nearest, middle, farthest third of the pixels")
     ax.legend()
     fig.tight_layout()
     fig.savefig(f"{out}/chart_thirds.png", dpi=100)

@@ -1,0 +1,44 @@
+#include "app/bench/density_figures.hpp"
+
+#include <gtest/gtest.h>
+
+namespace ecoview {
+namespace {
+
+RenderedFrame frame(const std::vector<float>& depth) {
+  const int n = static_cast<int>(depth.size());
+  return {Image8{n, 1, 3, std::vector<std::uint8_t>(3 * depth.size(), 100)}, Image<float>{n, 1, 1, depth}};
+}
+
+// Eight pixels: one behind an occluder, one empty in the reference, six covered at depths 1 to 6
+// in shuffled order; the points cover all but the one at depth 5.
+DensityRenders eight_pixels() {
+  DensityRenders r;
+  r.polygons = frame({5, 1, 3, 9, -1, 2, 6, 4});
+  r.occluders = frame({-1, -1, -1, 8, -1, -1, -1, -1});
+  r.points = frame({-1, 1, 3, 8, -1, 2, 6, 4});
+  return r;
+}
+
+TEST(DensityFigures, HolesAreCoveredPixelsThePointsMiss) {
+  const DensityFigures f = density_figures(eight_pixels(), Image<std::uint32_t>{8, 1, 1, std::vector<std::uint32_t>(8, 1)});
+  EXPECT_EQ(f.covered, 6u);
+  EXPECT_DOUBLE_EQ(f.holes, 1.0 / 6.0);
+}
+
+TEST(DensityFigures, ThirdsSplitTheCoveredPixelsByDepth) {
+  // Counts chosen so that each pair of depths (1, 2), (3, 4), (5, 6) has its own mean.
+  const Image<std::uint32_t> counts{8, 1, 1, {10, 1, 5, 99, 99, 3, 14, 7}};
+  const DensityFigures f = density_figures(eight_pixels(), counts);
+  EXPECT_DOUBLE_EQ(f.pts_per_px_near, 2.0);    // depths 1 and 2: counts 1 and 3
+  EXPECT_DOUBLE_EQ(f.pts_per_px_middle, 6.0);  // depths 3 and 4: 5 and 7
+  EXPECT_DOUBLE_EQ(f.pts_per_px_far, 12.0);    // depths 5 and 6: 10 and 14
+  EXPECT_DOUBLE_EQ(f.pts_per_px, 40.0 / 6.0);
+  EXPECT_FLOAT_EQ(f.third_depths[0], 1.0f);
+  EXPECT_FLOAT_EQ(f.third_depths[1], 3.0f);
+  EXPECT_FLOAT_EQ(f.third_depths[2], 5.0f);
+  EXPECT_FLOAT_EQ(f.third_depths[3], 6.0f);
+}
+
+}  // namespace
+}  // namespace ecoview
