@@ -1,5 +1,6 @@
 // Point rendering against the polygon rendering of the same plants: the points must cover what
 // the polygons cover, and stand where they stand.
+#include "app/bench/density_figures.hpp"
 #include "app/gl/context.hpp"
 #include "app/render/renderer.hpp"
 #include "app/scene/scene_file.hpp"
@@ -12,14 +13,15 @@
 namespace ecoview {
 namespace {
 
-// A grove of trees 40 to 120 m away against the sky, so every covered pixel is a plant.
-std::string grove() {
+// A grove of plants `nearest` to `nearest` + 80 m away against the sky, so every covered pixel is
+// a plant.
+std::string grove(int nearest = 40, const std::string& species = "beech") {
   std::ostringstream s;
   s << R"({"camera": {"position": [0, 8, 0], "target": [0, 6, -60], "fov_y_deg": 40, "near": 0.5, "far": 400},
           "lights": [{"type": "directional", "direction": [0.4, -0.8, -0.3]}],
-          "objects": [{"type": "plant", "species": "beech", "positions": [)";
+          "objects": [{"type": "plant", "species": ")" << species << R"(", "positions": [)";
   for (int i = 0; i < 40; ++i) {
-    s << (i ? ", " : "") << "[" << (i % 8) * 14 - 49 << ", 0, " << -40 - (i / 8) * 20 << "]";
+    s << (i ? ", " : "") << "[" << (i % 8) * 14 - 49 << ", 0, " << -nearest - (i / 8) * 20 << "]";
   }
   s << "]}]}";
   return s.str();
@@ -86,6 +88,37 @@ TEST_F(PointRendering, PointDepthsMatchPolygonDepths) {
     close += std::abs(a.samples[i] - b.samples[i]) < 3.0f;
   }
   EXPECT_GT(static_cast<double>(close) / static_cast<double>(both), 0.8);
+}
+
+// View-adaptive: the sampler gives every surface about k points per pixel of its image, so the
+// points on the surface seen in a pixel do not depend on its distance (docs/point_density.md).
+// Cacti, whose stems are solid: far foliage finer than a pixel covers the pixels it is counted in
+// only in part, so its points per covered pixel fall with distance however right the count.
+TEST(PointDensity, PointsPerPixelOfTheSeenSurfaceDoNotFollowDistance) {
+  const std::unique_ptr<GlContext> context = create_headless_context("egl");
+  const Scene scene = load_scene({"grove.json", grove(80, "saguaro"), [](const std::string&) { return std::nullopt; }});
+  RenderSettings settings;
+  settings.width = 480;
+  settings.height = 270;
+  settings.points = false;
+  Renderer polygons(scene, settings);
+  polygons.render(scene.camera, scene.lights[0]);
+  settings.points = true;
+  Renderer points(scene, settings);
+  points.render(scene.camera, scene.lights[0]);
+  ASSERT_EQ(points.stats().triangles, 0u) << "every cactus should be points";
+  DensityRenders renders;
+  renders.polygons = {polygons.frame().read_color(), polygons.frame().read_depth()};
+  renders.points = {points.frame().read_color(), points.frame().read_depth()};
+  renders.occluders = renders.polygons;
+  std::fill(renders.occluders.depth.samples.begin(), renders.occluders.depth.samples.end(), -1.0f);
+  const DensityFigures f = density_figures(renders, points.count_points_on(renders.polygons.depth));
+  std::cout << "points per pixel of the seen surface: " << f.pts_per_px_near << " / " << f.pts_per_px_middle << " / "
+            << f.pts_per_px_far << " (" << f.third_depths[0] << " to " << f.third_depths[3] << " m)\n";
+  ASSERT_GT(f.third_depths[3], 1.5f * f.third_depths[0]);
+  EXPECT_GT(f.pts_per_px, 0.5 * settings.k);
+  EXPECT_LT(f.pts_per_px, 4.0 * settings.k);
+  EXPECT_NEAR(f.pts_per_px_far / f.pts_per_px_near, 1.0, 0.25);
 }
 
 }  // namespace

@@ -113,7 +113,7 @@ class DensityBench {
         Renderer points(scene, settings);
         const FrameTiming timing = time_frames(points, scene.camera, scene.lights[0], 0.0, plan_.warmup, plan_.frames);
         renders.points = grab(points);
-        const DensityFigures f = density_figures(renders, points.count_front_points());
+        const DensityFigures f = density_figures(renders, points.count_points_on(renders.polygons.depth));
         BenchRun run;
         run.params = {{"sweep", "quality"}, {"scene", scene_name}, {"k", k}, {"splat", splat}, {"geometry", "points"},
                       {"width", settings.width}, {"height", settings.height}, {"frames", timing.frames}};

@@ -107,11 +107,14 @@ void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float d
   if (find_points) dispatch(resolve_program_, view_projection, splat_size, depth_bias, paraboloid);
 }
 
-Image<std::uint32_t> PointSplat::count_front_points(const glm::mat4& view_projection, const glm::mat4& projection,
-                                                   float front_gap) {
+Image<std::uint32_t> PointSplat::count_points_on(const Image<float>& surface_depth, const glm::mat4& view_projection,
+                                                const glm::mat4& projection, float surface_gap) {
   if (!count_program_) count_program_ = std::make_unique<gl::Program>(gl::build_program({"point_count.comp"}));
   gl::set_uniform(*count_program_, "ndc_to_depth", glm::vec2(projection[2][2], projection[3][2]));
-  gl::set_uniform(*count_program_, "front_gap", front_gap);
+  gl::set_uniform(*count_program_, "surface_gap", surface_gap);
+  // Flipping the rows again puts them bottom up, as GL counts pixels.
+  const Image<float> rows_up = from_bottom_up(size_.x, size_.y, 1, surface_depth.samples);
+  glNamedBufferSubData(depths_.name(), 0, static_cast<GLsizeiptr>(rows_up.samples.size() * sizeof(float)), rows_up.samples.data());
   clear(winners_, 0u);
   if (total_points_ > 0) dispatch(*count_program_, view_projection, 1, 0.0f, glm::vec2(0.0f));
   std::vector<std::uint32_t> bottom_up(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));

@@ -23,11 +23,12 @@ class PointSplat {
   // its zoom and range (shadow::Paraboloid); zoom 0 for a projective view.
   void splat(const glm::mat4& view_projection, int splat_size, float depth_bias, bool find_points,
              glm::vec2 paraboloid = glm::vec2(0.0f));
-  // Points of the front surface per pixel, each counted once where its centre lands, rows from the
-  // top: for the density figures. A point is on the front surface where its view depth is within
-  // `front_gap` (a fraction of that depth) of the pixel's nearest splat. Reads the nearest depths
-  // of the last `splat` and overwrites the nearest points, so call it after the frame is shaded.
-  Image<std::uint32_t> count_front_points(const glm::mat4& view_projection, const glm::mat4& projection, float front_gap);
+  // Per pixel, the points on the surface `surface_depth` shows there (linear view depth, rows from
+  // the top, negative where none), each counted once where its centre lands, rows from the top: for
+  // the density figures. On the surface: within `surface_gap` of its depth, as a fraction of it.
+  // Overwrites the nearest depths and points, so call it after the frame is shaded.
+  Image<std::uint32_t> count_points_on(const Image<float>& surface_depth, const glm::mat4& view_projection,
+                                       const glm::mat4& projection, float surface_gap);
   // Binds the buffers and sets the draw count and target size a shading program reads.
   void bind_for(const gl::Program& program) const;
 

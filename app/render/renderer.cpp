@@ -149,11 +149,11 @@ void Renderer::change(ShadowMethod method, int shadow_size, float k) {
   make_method_passes();
 }
 
-Image<std::uint32_t> Renderer::count_front_points() {
+Image<std::uint32_t> Renderer::count_points_on(const Image<float>& surface_depth) {
   const float pixel_width = 2.0f * std::tan(glm::radians(camera_.fov_y_deg) / 2.0f) / static_cast<float>(settings_.height);
-  // A neighbour on the same surface, sloped up to 45 degrees, lies within a splat's width in depth.
-  return frame_points_.count_front_points(view_projection_, camera_.projection(aspect()),
-                                          static_cast<float>(settings_.splat_size) * pixel_width);
+  // A point on the same surface, sloped up to 45 degrees, lies within a splat's width in depth.
+  return frame_points_.count_points_on(surface_depth, view_projection_, camera_.projection(aspect()),
+                                       static_cast<float>(settings_.splat_size) * pixel_width);
 }
 
 float Renderer::aspect() const { return static_cast<float>(settings_.width) / static_cast<float>(settings_.height); }

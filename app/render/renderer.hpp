@@ -75,9 +75,10 @@ class Renderer {
   const std::vector<pointgen::InstanceTable>& tables() const { return tables_; }
   // Fill the aliasing target (RenderSettings::aliasing) from the next frame on, or stop.
   void set_aliasing(bool wanted) { frame_pass_.set_aliasing(wanted); }
-  // Points of the front surface per pixel of the last frame (PointSplat::count_front_points), the
-  // front taken as deep as a splat is wide at its depth.
-  Image<std::uint32_t> count_front_points();
+  // Per pixel, the last frame's points on the surface `surface_depth` shows there (linear view depth, of
+  // the frame's size, as FramePass::read_depth gives it), within a splat's width at that depth
+  // (PointSplat::count_points_on).
+  Image<std::uint32_t> count_points_on(const Image<float>& surface_depth);
   // The exact visibility of the last frame's surfaces (ExactVisibility::trace), as the `shadow`
   // AOV encodes it.
   Image8 exact_visibility();
