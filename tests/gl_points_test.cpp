@@ -121,5 +121,42 @@ TEST(PointDensity, PointsPerPixelOfTheSeenSurfaceDoNotFollowDistance) {
   EXPECT_NEAR(f.pts_per_px_far / f.pts_per_px_near, 1.0, 0.25);
 }
 
+// Caster culling (pointgen::ReceiverMask) skips casters by where the last frame saw surfaces: the
+// shadows the camera sees stay as they were, with fewer shadow points. A stand of trees and
+// bushes seen from its edge, where most of it is hidden behind its first rows.
+TEST(CasterCulling, KeepsTheShadowsTheCameraSees) {
+  const std::unique_ptr<GlContext> context = create_headless_context("egl");
+  const Scene scene = load_scene({"stand.json", R"({
+      "camera": {"position": [0, 10, 75], "target": [0, 4, 20], "fov_y_deg": 50, "near": 0.5, "far": 300},
+      "lights": [{"type": "directional", "direction": [0.5, -0.7, -0.3]}],
+      "objects": [{"type": "ecosystem", "seed": 5, "size": [100, 100], "terrain": {"relief": 0.5, "resolution": 16},
+                   "plants": [{"species": "oak", "count": 800}, {"species": "hazel", "count": 800}]}]})",
+                                  [](const std::string&) { return std::nullopt; }});
+  for (const ShadowMethod method : {ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::cascades}) {
+    RenderSettings settings;
+    settings.width = 480;
+    settings.height = 270;
+    settings.shadow_size = 1024;
+    settings.method = method;
+    Renderer culled(scene, settings);
+    settings.cull_casters = false;
+    Renderer every_caster(scene, settings);
+    culled.render(scene.camera, scene.lights[0]);
+    every_caster.render(scene.camera, scene.lights[0]);
+    const Image8 a = culled.frame().read_visibility(), b = every_caster.frame().read_visibility();
+    std::size_t changed = 0, shadowed = 0;
+    for (std::size_t i = 0; i < a.samples.size(); ++i) {
+      changed += a.samples[i] != b.samples[i];
+      shadowed += b.samples[i] < 128;
+    }
+    const double changed_share = static_cast<double>(changed) / static_cast<double>(a.samples.size());
+    std::cout << shadow_method_name(method) << ": shadow points " << culled.stats().shadow_points << " of "
+              << every_caster.stats().shadow_points << ", " << changed << " pixels changed, " << shadowed << " shadowed\n";
+    EXPECT_GT(shadowed, a.samples.size() / 20) << shadow_method_name(method);
+    EXPECT_LT(culled.stats().shadow_points, every_caster.stats().shadow_points * 4 / 5) << shadow_method_name(method);
+    EXPECT_LT(changed_share, 0.005) << shadow_method_name(method);
+  }
+}
+
 }  // namespace
 }  // namespace ecoview

@@ -21,4 +21,14 @@ std::vector<shadow::SurfacePoint> surface_points(const Image<float>& depth, cons
   return points;
 }
 
+std::vector<glm::vec3> surface_positions(const Image<float>& depth, const PixelRays& rays, int step) {
+  std::vector<glm::vec3> points;
+  for (int y = step / 2; y < depth.height; y += step) {
+    for (int x = step / 2; x < depth.width; x += step) {
+      if (const float d = depth.at(x, y); d > 0.0f) points.push_back(rays.point(x, y, d));
+    }
+  }
+  return points;
+}
+
 }  // namespace ecoview

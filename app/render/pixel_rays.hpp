@@ -42,5 +42,7 @@ class PixelRays {
 // normals from the neighbouring pixels' points turned to the eye; none where a neighbour shows no
 // surface or one much farther (an edge).
 std::vector<shadow::SurfacePoint> surface_points(const Image<float>& depth, const PixelRays& rays, int step);
+// The points of every `step`-th pixel that shows a surface, edges and all.
+std::vector<glm::vec3> surface_positions(const Image<float>& depth, const PixelRays& rays, int step);
 
 }  // namespace ecoview

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace ecoview {
 namespace {
@@ -242,6 +243,8 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
       // Layer under layer of canopy as the light sees it: counts follow the expected visible share
       // (docs/point_density.md, "Occlusion"; what it costs and saves in docs/benchmarks.md).
       view.full_count_transmittance = 1.0f;
+      std::optional<pointgen::ReceiverMask> receivers;
+      if (culls_casters() && !v.paraboloid) view.receivers = &receivers.emplace(v.view_projection(), last_receivers_);
       selections.push_back(pointgen::sample_view(view, tables_, samples_.meshes(), cells_));
       stats_.shadow_points += selections.back().point_count;
     }
@@ -324,15 +327,22 @@ void Renderer::pose(double t) {
 }
 
 void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, double t) {
-  // The PSM takes its near plane from the last frame, auto its surface: the first frame draws
-  // once without shadows to have one.
-  const bool needs_last_frame = settings_.method == ShadowMethod::psm || settings_.method == ShadowMethod::automatic;
-  if (needs_last_frame && !(nearest_visible_ > 0.0f)) {
+  // The PSM takes its near plane from the last frame, auto its surface, caster culling its
+  // receivers: the first frame draws once without shadows to have one.
+  const bool needs_last_frame =
+      settings_.method == ShadowMethod::psm || settings_.method == ShadowMethod::automatic || culls_casters();
+  if (needs_last_frame && !has_last_frame_) {
     draw(camera, light, t, false);
     remember_last_frame();
   }
   draw(camera, light, t, settings_.method != ShadowMethod::none);
   if (needs_last_frame) remember_last_frame();
+}
+
+bool Renderer::culls_casters() const {
+  const ShadowMethod m = settings_.method;
+  return settings_.points && settings_.cull_casters && m != ShadowMethod::none && m != ShadowMethod::volumes &&
+         m != ShadowMethod::reference;
 }
 
 // Read back and scanned on the CPU: on llvmpipe about 1 ms at 640×360, where a fragment pass
@@ -345,7 +355,10 @@ void Renderer::remember_last_frame() {
     if (d > 0.0f) nearest = std::min(nearest, d);
   }
   nearest_visible_ = std::isfinite(nearest) ? nearest : 0.0f;
-  if (settings_.method == ShadowMethod::automatic) last_surface_ = surface_points(depth, PixelRays(camera_, depth.width, depth.height), 16);
+  const PixelRays rays(camera_, depth.width, depth.height);
+  if (settings_.method == ShadowMethod::automatic) last_surface_ = surface_points(depth, rays, 16);
+  if (culls_casters()) last_receivers_ = surface_positions(depth, rays, 4);
+  has_last_frame_ = true;
 }
 
 void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows) {

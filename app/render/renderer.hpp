@@ -40,6 +40,8 @@ struct RenderSettings {
   // (their reference), or not at all (what the rest hides); those it makes polygons stay.
   enum class Measure { off, their_polygons, without_them } measure = Measure::off;
   bool aliasing = false;  // fill the frame's aliasing target (the `aliasing` AOV, alias_p95)
+  // Skip point casters whose shadows fall on nothing the last frame showed (pointgen::ReceiverMask).
+  bool cull_casters = true;
 };
 
 // What a frame drew, and how long its parts took.
@@ -95,7 +97,10 @@ class Renderer {
   void draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows);
   shadow::ShadowSetup make_shadow_setup(ShadowMethod method, const shadow::Camera& camera, const shadow::Light& light) const;
   shadow::ShadowSetup best_predicted_setup(const shadow::Camera& camera, const shadow::Light& light) const;
-  // Keeps what the next frame needs of this one: its nearest depth (PSM) and its surface (auto).
+  // Whether the shadow sampler skips casters by the last frame's receivers.
+  bool culls_casters() const;
+  // Keeps what the next frame needs of this one: its nearest depth (PSM), its surface (auto) and
+  // its receivers (culls_casters).
   void remember_last_frame();
   void render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
   // Shadow volumes in place of a map: the lit-pixel mask of this frame.
@@ -129,6 +134,8 @@ class Renderer {
   // (seed 000, Sect. 6); 0 until a frame was drawn.
   float nearest_visible_ = 0.0f;
   std::vector<shadow::SurfacePoint> last_surface_;  // auto: sampled from the last frame
+  std::vector<glm::vec3> last_receivers_;           // culls_casters: sampled from the last frame
+  bool has_last_frame_ = false;
   glm::mat4 view_projection_{1.0f};  // of the last frame
   FrameStats stats_;
   gl::GpuTimer shadow_timer_, frame_timer_;

@@ -23,18 +23,7 @@ CoverageGrid::CoverageGrid(const glm::mat4& view_projection, glm::ivec2 cells, i
 
 std::optional<CoverageGrid::Rect> CoverageGrid::project(const glm::vec3& center, const glm::vec3& half_size,
                                                         const glm::mat4& transform) const {
-  // The corners in clip space: the centre's image plus or minus the images of the half axes.
-  const glm::mat4 m = view_projection_ * transform;
-  const glm::vec4 middle = m * glm::vec4(center, 1.0f);
-  const glm::vec4 x = m[0] * half_size.x, y = m[1] * half_size.y, z = m[2] * half_size.z;
-  Rect rect{glm::vec2(INFINITY), glm::vec2(-INFINITY)};
-  for (int i = 0; i < 8; ++i) {
-    const glm::vec4 clip = middle + ((i & 1) ? x : -x) + ((i & 2) ? y : -y) + ((i & 4) ? z : -z);
-    if (!(clip.w > 1e-6f)) return std::nullopt;
-    rect.min = glm::min(rect.min, glm::vec2(clip) / clip.w);
-    rect.max = glm::max(rect.max, glm::vec2(clip) / clip.w);
-  }
-  return rect;
+  return project_box(view_projection_ * transform, center, half_size);
 }
 
 float CoverageGrid::ndc_area_per_square_metre(const glm::vec3& point) const {

@@ -1,4 +1,6 @@
 #pragma once
+#include "pointgen/sampling/screen_rect.hpp"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -14,13 +16,7 @@ namespace pointgen {
 // fraction through which objects behind can still be seen.
 class CoverageGrid {
  public:
-  // A rectangle in normalized device coordinates.
-  struct Rect {
-    glm::vec2 min, max;
-    float area() const { return (max.x - min.x) * (max.y - min.y); }
-    // Whether any of it lies on screen.
-    bool on_screen() const { return max.x >= -1.0f && min.x <= 1.0f && max.y >= -1.0f && min.y <= 1.0f; }
-  };
+  using Rect = ScreenRect;
 
   static constexpr int tile_cells = 8;  // per side of a tile
 

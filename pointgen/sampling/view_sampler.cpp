@@ -150,7 +150,7 @@ class ViewSampling {
     std::vector<Seen> seen;
     for (const std::vector<InstanceCell>& table_cells : cells.by_table()) {
       for (const InstanceCell& cell : table_cells) {
-        if (!box_in_view(cell)) continue;
+        if (!box_in_view(cell) || !shadows_receivers(0.5f * (cell.min + cell.max), 0.5f * (cell.max - cell.min), glm::mat4(1.0f))) continue;
         float order = INFINITY;
         for (int i = 0; i < 8; ++i) {
           const glm::vec3 corner((i & 1) ? cell.max.x : cell.min.x, (i & 2) ? cell.max.y : cell.min.y, (i & 4) ? cell.max.z : cell.min.z);
@@ -191,6 +191,12 @@ class ViewSampling {
   };
   static bool later(const OpenCell& a, const OpenCell& b) { return before(b.front(), a.front()); }
 
+  // Whether a box (centre and half sizes, placed by `transform`) may shadow what the camera saw:
+  // always without a receiver mask.
+  bool shadows_receivers(const glm::vec3& center, const glm::vec3& half_size, const glm::mat4& transform) const {
+    return !view_.receivers || view_.receivers->may_shadow(center, half_size, transform);
+  }
+
   bool box_in_view(const InstanceCell& cell) const {
     const glm::vec3 center = 0.5f * (cell.min + cell.max);
     return inside_any(frusta_, center, 0.5f * glm::length(cell.max - cell.min));
@@ -213,7 +219,7 @@ class ViewSampling {
       const float scale = uniform_scale(m);
       Candidate whole{cell.table, i, nullptr, glm::vec3(m * glm::vec4(mesh.center, 1.0f)), mesh.radius * scale,
                       mesh.area * scale * scale};
-      if (!inside_any(frusta_, whole.center, whole.radius)) continue;
+      if (!inside_any(frusta_, whole.center, whole.radius) || !shadows_receivers(mesh.center, mesh.half_size, m)) continue;
       if (!occlusion_ || !counted_by_parts(view_, *occlusion_, mesh, m, whole)) {
         whole.order = depth_order(view_, whole.center);
         open.candidates.push_back(whole);
@@ -233,7 +239,7 @@ class ViewSampling {
     for (const MeshPart& part : mesh.parts) {
       Candidate c{whole.table, whole.instance, &part, glm::vec3(transform * glm::vec4(part.center, 1.0f)), part.radius * scale,
                   part.area * scale * scale};
-      if (!inside_any(frusta_, c.center, c.radius)) continue;
+      if (!inside_any(frusta_, c.center, c.radius) || !shadows_receivers(part.center, part.half_size, transform)) continue;
       c.order = depth_order(view_, c.center);
       out.push_back(c);
     }

@@ -3,6 +3,7 @@
 #include "pointgen/sampling/instance_cells.hpp"
 #include "pointgen/sampling/mesh_parts.hpp"
 #include "pointgen/sampling/point_count.hpp"
+#include "pointgen/sampling/receiver_mask.hpp"
 
 #include <vector>
 
@@ -50,6 +51,9 @@ struct SamplerView {
   // For a shadow map: counts follow the camera, but the map holds no more than k points per texel
   // of a caster's projected surface, so no caster gets more (with one view).
   bool cap_to_pixels = false;
+  // For a shadow map's view (with one view): where the camera saw surfaces; casters whose boxes
+  // cover none of it are skipped. None: every caster counts.
+  const ReceiverMask* receivers = nullptr;
 };
 
 // One instance, or one part of it, drawn as points: `count` samples of its mesh's list from
