@@ -145,7 +145,9 @@ void Renderer::change(ShadowMethod method, int shadow_size, float k) {
     shadow_pass_ = ShadowPass(wanted.shadow_size);
     shadow_points_.reset();
   }
-  if (wanted.method != settings_.method) nearest_visible_ = 0.0f;  // PSM and auto start again from a frame without shadows
+  // What the last frame left (near plane, surface, receivers) depends on the method and k: the next
+  // frame starts again from one without shadows, as a fresh renderer's does.
+  has_last_frame_ = false;
   settings_ = wanted;
   make_method_passes();
 }
