@@ -44,7 +44,7 @@ double psnr_over(const std::vector<bool>& pixels, const Image8& reference, const
 // brightness, holes among them red.
 Image8 coverage_map(const DensityRenders& renders);
 
-// `counts`: the point render's points per pixel (Renderer::count_front_points).
+// `counts`: the point render's points per pixel (Renderer::count_points_on).
 DensityFigures density_figures(const DensityRenders& renders, const Image<std::uint32_t>& counts);
 
 }  // namespace ecoview

@@ -366,6 +366,7 @@ void Renderer::remember_last_frame() {
     const int step = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<float>(depth.width * depth.height) / predicting_pixels))));
     last_surface_ = surface_points(depth, rays, step);
   }
+  // Every 4th pixel each way: far denser than the mask's tiles (docs/point_density.md, "Receivers").
   if (culls_casters()) last_receivers_ = surface_positions(depth, rays, 4);
   has_last_frame_ = true;
 }
