@@ -39,8 +39,9 @@ class PixelRays {
 };
 
 // Surface points of a frame (its linear view depth) on a grid of every `step`-th pixel, with
-// normals from the neighbouring pixels' points turned to the eye; none where a neighbour shows no
-// surface or one much farther (an edge).
+// normals from the neighbouring pixels' points turned to the eye: across and down, from whichever
+// neighbour on each axis shows the same surface (so a pixel at a silhouette keeps its normal from
+// the side it belongs to); none where neither does on an axis (a sliver thinner than a pixel).
 std::vector<shadow::SurfacePoint> surface_points(const Image<float>& depth, const PixelRays& rays, int step);
 // The points of every `step`-th pixel that shows a surface, edges and all.
 std::vector<glm::vec3> surface_positions(const Image<float>& depth, const PixelRays& rays, int step);
