@@ -1,5 +1,5 @@
-// Shading shared by polygons (frame.frag) and points (point_shade.frag): Blinn-Phong with one
-// shadowing light. The shadow term dims the diffuse light instead of removing it (seed 003):
+// The lighting of shade.frag: Blinn-Phong with one shadowing light. The shadow term dims the
+// diffuse light instead of removing it (seed 003):
 // (ambient + diffuse_shade * diffuse) * albedo + visibility * specular.
 const int DIRECTIONAL = 0, POINT = 1, SPOT = 2;
 uniform int light_type;

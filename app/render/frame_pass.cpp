@@ -5,12 +5,28 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace ecoview {
 namespace {
 
 const glm::vec3 sky_color(0.62f, 0.74f, 0.86f);  // sRGB
+
+// Attaches `targets` as colour attachments 0, 1, ... and draws into all of them.
+void attach(const gl::Framebuffer& framebuffer, std::initializer_list<const gl::Texture*> targets) {
+  std::vector<GLenum> buffers;
+  for (const gl::Texture* target : targets) {
+    const GLenum attachment = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(buffers.size());
+    glNamedFramebufferTexture(framebuffer.name(), attachment, target->name(), 0);
+    buffers.push_back(attachment);
+  }
+  glNamedFramebufferDrawBuffers(framebuffer.name(), static_cast<GLsizei>(buffers.size()), buffers.data());
+  if (glCheckNamedFramebufferStatus(framebuffer.name(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    throw RuntimeFailure("the frame's render targets are not supported by this driver; try another --backend");
+  }
+}
 
 }  // namespace
 
@@ -18,70 +34,76 @@ FramePass::FramePass(int width, int height, bool aliasing)
     : width_(width),
       height_(height),
       aliasing_wanted_(aliasing),
-      program_(gl::build_program({"frame.vert", "frame.frag"})),
-      point_program_(gl::build_program({"fullscreen.vert", "point_shade.frag"})) {
+      surface_program_(gl::build_program({"frame.vert", "surface.frag"})),
+      point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})),
+      shade_program_(gl::build_program({"fullscreen.vert", "shade.frag"})) {
+  glTextureStorage2D(positions_.name(), 1, GL_RGBA32F, width, height);
+  glTextureStorage2D(normals_.name(), 1, GL_RGBA32F, width, height);
+  glTextureStorage2D(albedos_.name(), 1, GL_RGBA32F, width, height);
+  glTextureStorage2D(depth_.name(), 1, GL_R32F, width, height);
+  glTextureStorage2D(depth_buffer_.name(), 1, GL_DEPTH32F_STENCIL8, width, height);
+  glNamedFramebufferTexture(surfaces_.name(), GL_DEPTH_STENCIL_ATTACHMENT, depth_buffer_.name(), 0);
+  attach(surfaces_, {&positions_, &normals_, &albedos_, &depth_});
+
   glTextureStorage2D(color_.name(), 1, GL_RGBA8, width, height);
   glTextureStorage2D(visibility_.name(), 1, GL_R8, width, height);
-  glTextureStorage2D(depth_.name(), 1, GL_R32F, width, height);
   glTextureStorage2D(aliasing_.name(), 1, GL_R32F, width, height);
-  glTextureStorage2D(depth_buffer_.name(), 1, GL_DEPTH32F_STENCIL8, width, height);
-  const GLuint fb = framebuffer_.name();
-  glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT0, color_.name(), 0);
-  glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT1, visibility_.name(), 0);
-  glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT2, depth_.name(), 0);
-  glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT3, aliasing_.name(), 0);
-  glNamedFramebufferTexture(fb, GL_DEPTH_STENCIL_ATTACHMENT, depth_buffer_.name(), 0);
-  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
-  glNamedFramebufferDrawBuffers(fb, 4, buffers);
-  if (glCheckNamedFramebufferStatus(fb, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-    throw RuntimeFailure("the frame's render targets are not supported by this driver; try another --backend");
-  }
+  attach(lit_, {&color_, &visibility_, &aliasing_});
 }
 
-void FramePass::render(const GpuScene& scene, const shadow::Camera& camera, const shadow::Light& light,
-                       const std::optional<ShadowLookup>& shadow_map) const {
-  const GLuint fb = framebuffer_.name();
+void FramePass::set_camera(const gl::Program& program, const shadow::Camera& camera) const {
+  const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+  gl::set_uniform(program, "view", camera.view());
+  gl::set_uniform(program, "view_projection", camera.projection(aspect) * camera.view());
+  gl::set_uniform(program, "camera_position", camera.position);
+}
+
+void FramePass::draw_surfaces(const GpuScene& scene, const shadow::Camera& camera) const {
+  const GLuint fb = surfaces_.name();
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glViewport(0, 0, width_, height_);
-  const float sky[4] = {sky_color.r, sky_color.g, sky_color.b, 1.0f};
-  const float fully_visible[4] = {1.0f, 0.0f, 0.0f, 0.0f};
   const float no_surface[4] = {-1.0f, 0.0f, 0.0f, 0.0f};
   const float far_depth = 1.0f;
-  glClearNamedFramebufferfv(fb, GL_COLOR, 0, sky);
-  glClearNamedFramebufferfv(fb, GL_COLOR, 1, fully_visible);
-  glClearNamedFramebufferfv(fb, GL_COLOR, 2, no_surface);
   glClearNamedFramebufferfv(fb, GL_COLOR, 3, no_surface);
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
-
-  glUseProgram(program_.name());
-  set_lighting(program_, camera, light, shadow_map);
+  glUseProgram(surface_program_.name());
+  set_camera(surface_program_, camera);
   scene.draw();
 }
 
-void FramePass::shade_points(const PointSplat& points, const shadow::Camera& camera, const shadow::Light& light,
-                             const std::optional<ShadowLookup>& shadow_map) const {
+void FramePass::add_points(const PointSplat& points, const shadow::Camera& camera) const {
   if (points.point_count() == 0) return;
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.name());
+  glBindFramebuffer(GL_FRAMEBUFFER, surfaces_.name());
   glViewport(0, 0, width_, height_);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glUseProgram(point_program_.name());
-  set_lighting(point_program_, camera, light, shadow_map);
+  set_camera(point_program_, camera);
   points.bind_for(point_program_);
   glBindVertexArray(empty_vertex_array_.name());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
 }
 
-void FramePass::set_lighting(const gl::Program& program, const shadow::Camera& camera, const shadow::Light& light,
-                             const std::optional<ShadowLookup>& shadow_map) const {
-  const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
-  gl::set_uniform(program, "view", camera.view());
-  gl::set_uniform(program, "view_projection", camera.projection(aspect) * camera.view());
-  gl::set_uniform(program, "camera_position", camera.position);
+void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,
+                      const std::optional<ShadowLookup>& shadow_map) const {
+  const GLuint fb = lit_.name();
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  glViewport(0, 0, width_, height_);
+  const float sky[4] = {sky_color.r, sky_color.g, sky_color.b, 1.0f};
+  const float fully_visible[4] = {1.0f, 0.0f, 0.0f, 0.0f};
+  const float no_surface[4] = {-1.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(fb, GL_COLOR, 0, sky);
+  glClearNamedFramebufferfv(fb, GL_COLOR, 1, fully_visible);
+  glClearNamedFramebufferfv(fb, GL_COLOR, 2, no_surface);
+  glDisable(GL_DEPTH_TEST);
+
+  const gl::Program& program = shade_program_;
+  glUseProgram(program.name());
+  set_camera(program, camera);
   gl::set_uniform(program, "frame_size", glm::vec2(width_, height_));
   gl::set_uniform(program, "light_type", static_cast<int>(light.type));
   gl::set_uniform(program, "light_position", light.position);
@@ -102,26 +124,35 @@ void FramePass::set_lighting(const gl::Program& program, const shadow::Camera& c
     gl::set_uniform(program, "shadow_size", static_cast<float>(shadow_map->size));
     glBindTextureUnit(setup.selection == shadow::ViewSelection::screen_mask ? 1 : 0, shadow_map->texture);
   }
+  glBindTextureUnit(2, positions_.name());
+  glBindTextureUnit(3, normals_.name());
+  glBindTextureUnit(4, albedos_.name());
+  glBindTextureUnit(5, depth_.name());
+  glBindVertexArray(empty_vertex_array_.name());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glEnable(GL_DEPTH_TEST);
 }
 
 template <class Sample>
-Image<Sample> FramePass::read(GLenum attachment, int channels, GLenum format, GLenum type) const {
+Image<Sample> FramePass::read(const gl::Framebuffer& framebuffer, GLenum attachment, int channels, GLenum format,
+                              GLenum type) const {
   std::vector<Sample> bottom_up(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * static_cast<std::size_t>(channels));
-  glNamedFramebufferReadBuffer(framebuffer_.name(), attachment);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.name());
+  glNamedFramebufferReadBuffer(framebuffer.name(), attachment);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.name());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width_, height_, format, type, bottom_up.data());
   return from_bottom_up(width_, height_, channels, bottom_up);
 }
 
-Image8 FramePass::read_color() const { return read<std::uint8_t>(GL_COLOR_ATTACHMENT0, 3, GL_RGB, GL_UNSIGNED_BYTE); }
-Image8 FramePass::read_visibility() const { return read<std::uint8_t>(GL_COLOR_ATTACHMENT1, 1, GL_RED, GL_UNSIGNED_BYTE); }
-Image<float> FramePass::read_depth() const { return read<float>(GL_COLOR_ATTACHMENT2, 1, GL_RED, GL_FLOAT); }
-Image<float> FramePass::read_aliasing() const { return read<float>(GL_COLOR_ATTACHMENT3, 1, GL_RED, GL_FLOAT); }
+Image8 FramePass::read_color() const { return read<std::uint8_t>(lit_, GL_COLOR_ATTACHMENT0, 3, GL_RGB, GL_UNSIGNED_BYTE); }
+Image8 FramePass::read_visibility() const { return read<std::uint8_t>(lit_, GL_COLOR_ATTACHMENT1, 1, GL_RED, GL_UNSIGNED_BYTE); }
+Image<float> FramePass::read_depth() const { return read<float>(surfaces_, GL_COLOR_ATTACHMENT3, 1, GL_RED, GL_FLOAT); }
+Image<float> FramePass::read_aliasing() const { return read<float>(lit_, GL_COLOR_ATTACHMENT2, 1, GL_RED, GL_FLOAT); }
 
 void FramePass::present(int width, int height) const {
-  glNamedFramebufferReadBuffer(framebuffer_.name(), GL_COLOR_ATTACHMENT0);
-  glBlitNamedFramebuffer(framebuffer_.name(), 0, 0, 0, width_, height_, 0, 0, width, height,
+  glNamedFramebufferReadBuffer(lit_.name(), GL_COLOR_ATTACHMENT0);
+  glBlitNamedFramebuffer(lit_.name(), 0, 0, 0, width_, height_, 0, 0, width, height,
                          GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }
 

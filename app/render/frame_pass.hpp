@@ -11,12 +11,19 @@
 
 namespace ecoview {
 
-// Renders the camera's view with Blinn-Phong shading into four targets: sRGB colour, light
-// visibility (the `shadow` AOV), linear view depth and the shadow map's aliasing factor.
+// Renders the camera's view in two steps (deferred shading): first the nearest surface of each
+// pixel, polygons and point splats depth-tested together, into position, normal, albedo and
+// linear view depth; then Blinn-Phong lighting once per pixel into sRGB colour, light visibility
+// (the `shadow` AOV) and the shadow map's aliasing factor.
 class FramePass {
  public:
   // `aliasing`: also fill the aliasing target (it costs shading time; otherwise it holds 0).
   FramePass(int width, int height, bool aliasing);
+
+  // Clears the frame and draws the polygons' surfaces.
+  void draw_surfaces(const GpuScene& scene, const shadow::Camera& camera) const;
+  // Adds the nearest splatted point of each pixel, depth-tested against the polygons.
+  void add_points(const PointSplat& points, const shadow::Camera& camera) const;
 
   // `shadow_map`: the depth-texture array with one layer per view of `setup`, or for
   // ViewSelection::screen_mask a frame-sized mask (1 where lit); without one every surface facing
@@ -26,12 +33,8 @@ class FramePass {
     const shadow::ShadowSetup& setup;
     int size;
   };
-  void render(const GpuScene& scene, const shadow::Camera& camera, const shadow::Light& light,
-              const std::optional<ShadowLookup>& shadow_map) const;
-  // Shades the nearest splatted point of each pixel into the frame, depth-tested against the
-  // polygons render() drew.
-  void shade_points(const PointSplat& points, const shadow::Camera& camera, const shadow::Light& light,
-                    const std::optional<ShadowLookup>& shadow_map) const;
+  // Lights the surfaces drawn.
+  void shade(const shadow::Camera& camera, const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;
 
   Image8 read_color() const;
   Image8 read_visibility() const;
@@ -50,20 +53,26 @@ class FramePass {
 
  private:
   template <class Sample>
-  Image<Sample> read(GLenum attachment, int channels, GLenum format, GLenum type) const;
-  void set_lighting(const gl::Program& program, const shadow::Camera& camera, const shadow::Light& light,
-                    const std::optional<ShadowLookup>& shadow_map) const;
+  Image<Sample> read(const gl::Framebuffer& framebuffer, GLenum attachment, int channels, GLenum format, GLenum type) const;
+  void set_camera(const gl::Program& program, const shadow::Camera& camera) const;
 
   int width_, height_;
   bool aliasing_wanted_;
+  // The surfaces: written by draw_surfaces and add_points.
+  gl::Texture positions_{GL_TEXTURE_2D};
+  gl::Texture normals_{GL_TEXTURE_2D};
+  gl::Texture albedos_{GL_TEXTURE_2D};
+  gl::Texture depth_{GL_TEXTURE_2D};
+  gl::Texture depth_buffer_{GL_TEXTURE_2D};
+  gl::Framebuffer surfaces_;
+  // Their lighting: written by shade.
   gl::Texture color_{GL_TEXTURE_2D};
   gl::Texture visibility_{GL_TEXTURE_2D};
-  gl::Texture depth_{GL_TEXTURE_2D};
   gl::Texture aliasing_{GL_TEXTURE_2D};
-  gl::Texture depth_buffer_{GL_TEXTURE_2D};
-  gl::Framebuffer framebuffer_;
-  gl::Program program_;
+  gl::Framebuffer lit_;
+  gl::Program surface_program_;
   gl::Program point_program_;
+  gl::Program shade_program_;
   gl::VertexArray empty_vertex_array_;  // for the fullscreen triangle, which has no attributes
 };
 

@@ -307,11 +307,12 @@ FramePass::ShadowLookup Renderer::render_reference_mask(const shadow::Camera& ca
 
 void Renderer::draw_frame(const shadow::Camera& camera, const shadow::Light& light,
                           const std::optional<FramePass::ShadowLookup>& lookup) {
-  frame_pass_.render(gpu_scene_, camera, light, lookup);
+  frame_pass_.draw_surfaces(gpu_scene_, camera);
   if (settings_.points) {
     frame_points_.splat(view_projection_, settings_.splat_size, 0.0f, true);
-    frame_pass_.shade_points(frame_points_, camera, light, lookup);
+    frame_pass_.add_points(frame_points_, camera);
   }
+  frame_pass_.shade(camera, light, lookup);
 }
 
 void Renderer::pose(double t) {
