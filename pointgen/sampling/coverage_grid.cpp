@@ -1,6 +1,7 @@
 #include "pointgen/sampling/coverage_grid.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace pointgen {
@@ -10,9 +11,8 @@ CoverageGrid::CoverageGrid(const glm::mat4& view_projection, glm::ivec2 cells, i
       cells_(glm::max(cells, glm::ivec2(1))),
       tiles_((cells_ + tile_cells - 1) / tile_cells),
       splat_(std::max(splat, 1)),
-      covered_(static_cast<std::size_t>(cells_.x) * cells_.y, 0),
-      transmittance_(static_cast<std::size_t>(tiles_.x) * tiles_.y, 1.0f),
-      cell_share_(transmittance_.size()) {
+      covered_(static_cast<std::size_t>(tiles_.x) * tiles_.y, 0),
+      cell_share_(covered_.size()) {
   for (int ty = 0; ty < tiles_.y; ++ty) {
     for (int tx = 0; tx < tiles_.x; ++tx) {
       const int w = std::min(tile_cells, cells_.x - tx * tile_cells), h = std::min(tile_cells, cells_.y - ty * tile_cells);
@@ -57,12 +57,13 @@ float CoverageGrid::transmittance(const Rect& rect) const {
   // counts as hidden where it is; large ones by tiles.
   if (cells_in(rect) <= static_cast<float>(max_cells_read)) {
     for_squares(rect, 1, cells_, [&](std::size_t cell, float fraction) {
-      sum += covered_[cell] ? 0.0f : fraction;
+      const int x = static_cast<int>(cell % static_cast<std::size_t>(cells_.x)), y = static_cast<int>(cell / static_cast<std::size_t>(cells_.x));
+      sum += (covered_[tile_of(x, y)] >> bit_of(x, y) & 1u) ? 0.0f : fraction;
       weight += fraction;
     });
   } else {
     for_squares(rect, tile_cells, tiles_, [&](std::size_t tile, float fraction) {
-      sum += fraction * transmittance_[tile];
+      sum += fraction * (1.0f - static_cast<float>(std::popcount(covered_[tile])) * cell_share_[tile]);
       weight += fraction;
     });
   }
@@ -88,12 +89,6 @@ void CoverageGrid::cover(std::span<const glm::vec3> points, const glm::mat4& tra
   }
 }
 
-void CoverageGrid::cover_cell(int x, int y) {
-  std::uint8_t& covered = covered_[static_cast<std::size_t>(y) * cells_.x + x];
-  if (covered) return;
-  covered = 1;
-  const std::size_t tile = static_cast<std::size_t>(y / tile_cells) * tiles_.x + x / tile_cells;
-  transmittance_[tile] = std::max(0.0f, transmittance_[tile] - cell_share_[tile]);
-}
+void CoverageGrid::cover_cell(int x, int y) { covered_[tile_of(x, y)] |= std::uint64_t{1} << bit_of(x, y); }
 
 }  // namespace pointgen

@@ -12,8 +12,8 @@ namespace pointgen {
 
 // Which parts of a view are already covered, as objects are added front to back: the sampler's
 // occlusion model (docs/point_density.md, "Occlusion"). The view is cut into cells, one per pixel,
-// each covered once a point's splat covers it; tiles of 8 x 8 cells keep their transmittance, the
-// fraction through which objects behind can still be seen.
+// each covered once a point's splat covers it; a tile of 8 x 8 cells has a transmittance, the
+// fraction of its cells through which objects behind can still be seen.
 class CoverageGrid {
  public:
   using Rect = ScreenRect;
@@ -39,7 +39,9 @@ class CoverageGrid {
  private:
   static constexpr int max_cells_read = 256;  // a rectangle's transmittance from its cells up to this
 
-  void cover_cell(int x, int y);  // and takes it off its tile's transmittance, once
+  void cover_cell(int x, int y);
+  std::size_t tile_of(int x, int y) const { return static_cast<std::size_t>(y / tile_cells) * tiles_.x + x / tile_cells; }
+  static int bit_of(int x, int y) { return (y % tile_cells) * tile_cells + x % tile_cells; }
   // Calls visit(index, fraction of the square inside rect) for each square the rect overlaps, of
   // a grid of `squares` over the view, each `cells_per_side` cells wide.
   template <class Visit>
@@ -48,9 +50,10 @@ class CoverageGrid {
   glm::mat4 view_projection_;
   glm::ivec2 cells_, tiles_;
   int splat_;
-  std::vector<std::uint8_t> covered_;  // per cell
-  std::vector<float> transmittance_;   // per tile
-  std::vector<float> cell_share_;      // per tile: what one of its cells is of it (edge tiles are smaller)
+  // Per tile, a bit per cell (row by row): 64 cells in one word, so that covering a splat touches
+  // one cache line, and the grid of a 2048² shadow view fits in 512 KiB.
+  std::vector<std::uint64_t> covered_;
+  std::vector<float> cell_share_;  // per tile: what one of its cells is of it (edge tiles are smaller)
 };
 
 }  // namespace pointgen
