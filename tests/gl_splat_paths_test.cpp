@@ -91,7 +91,7 @@ Image<float> compute_splat(const std::vector<pointgen::PointDraw>& draws, const 
                            const glm::mat4& view_projection) {
   PointSplat splat({width, height});
   splat.upload(draws, scene.groups, samples);
-  splat.splat(view_projection, 1, 0.0f, true);
+  splat.splat(view_projection, 1, 0.0f);
   // PointSplat keeps the nearest window depth per pixel as float bits, at storage binding 6
   // (point_common.glsl), rows from the bottom; all ones where nothing landed.
   const std::vector<std::uint32_t> bits = storage_at<std::uint32_t>(6);

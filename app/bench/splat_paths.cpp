@@ -54,7 +54,7 @@ std::vector<BenchRun> measure_splat_paths(const Scene& scene, const std::string&
   const std::pair<const char*, std::function<void()>> paths[] = {
       {"gl_points", [&] { raster.draw_all(view_projection); }},
       {"indirect", [&] { raster.draw_indirect(view_projection); }},
-      {"compute", [&] { splat.splat(view_projection, 1, 0.0f, true); }},
+      {"compute", [&] { splat.splat(view_projection, 1, 0.0f); }},
   };
   std::vector<BenchRun> runs;
   const auto points = static_cast<double>(raster.point_count());

@@ -31,6 +31,12 @@ void fill(gl::Buffer& buffer, std::size_t& capacity, const std::vector<T>& data)
   if (!data.empty()) glNamedBufferSubData(buffer.name(), 0, static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data());
 }
 
+// Before the buffers are overwritten. GL orders that after earlier passes that read them, but on
+// llvmpipe a clear sometimes overtook the reads of the pass before (a cascade's map reusing the
+// buffers of the one before it: 1 capture in 8 to 16 gave other bytes; none in 32 with this
+// barrier, nor in 80 with a barrier or glFinish before each cascade).
+void overwrite_barrier() { glMemoryBarrier(GL_ALL_BARRIER_BITS); }
+
 void clear(const gl::Buffer& buffer, GLuint value) {
   glClearNamedBufferData(buffer.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
 }
@@ -98,18 +104,30 @@ void PointSplat::dispatch(const gl::Program& program, const glm::mat4& view_proj
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
-void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float depth_bias, bool find_points,
-                       glm::vec2 paraboloid) {
-  // GL orders a buffer clear after earlier draws that read the buffer, but on llvmpipe the clear
-  // below sometimes overtook the last pass's reads (a cascade's map reusing the buffers of the one
-  // before it: 1 capture in 8 to 16 gave other bytes; none in 32 with this barrier, nor in 80
-  // with a barrier or glFinish before each cascade).
-  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float depth_bias) {
+  overwrite_barrier();
   clear(depths_, 0xFFFFFFFFu);
-  if (find_points) clear(winners_, 0xFFFFFFFFu);
+  clear(winners_, 0xFFFFFFFFu);
   if (total_points_ == 0) return;
+  dispatch(depth_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f));
+  dispatch(resolve_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f));
+}
+
+// The layer's depths go into the depth buffer and back, copied by GL from and to a pixel buffer:
+// on llvmpipe a fullscreen pass writing each texel's depth took 80-140 ms a 4096² layer.
+void PointSplat::splat_onto(GLuint depth_texture, int layer, const glm::mat4& view_projection, int splat_size,
+                            float depth_bias, glm::vec2 paraboloid) {
+  if (total_points_ == 0) return;
+  const auto bytes = static_cast<GLsizei>(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y) * sizeof(float));
+  overwrite_barrier();
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, depths_.name());
+  glGetTextureSubImage(depth_texture, 0, 0, 0, layer, size_.x, size_.y, 1, GL_DEPTH_COMPONENT, GL_FLOAT, bytes, nullptr);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
   dispatch(depth_program_, view_projection, splat_size, depth_bias, paraboloid);
-  if (find_points) dispatch(resolve_program_, view_projection, splat_size, depth_bias, paraboloid);
+  glMemoryBarrier(GL_PIXEL_BUFFER_BARRIER_BIT);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, depths_.name());
+  glTextureSubImage3D(depth_texture, 0, 0, 0, layer, size_.x, size_.y, 1, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
 }
 
 Image<std::uint32_t> PointSplat::count_points_on(const Image<float>& surface_depth, const glm::mat4& view_projection,

@@ -18,11 +18,14 @@ class PointSplat {
   // The points to draw: the first `count` samples of each drawn instance.
   void upload(const std::vector<pointgen::PointDraw>& draws, const std::vector<pointgen::InstanceTable>& tables,
               const PointSamples& samples);
-  // Pass 1 (and 2 when `find_points`), with splats of splat_size x splat_size pixels. For a
-  // paraboloid shadow view, `view_projection` is its world → light space matrix and `paraboloid`
-  // its zoom and range (shadow::Paraboloid); zoom 0 for a projective view.
-  void splat(const glm::mat4& view_projection, int splat_size, float depth_bias, bool find_points,
-             glm::vec2 paraboloid = glm::vec2(0.0f));
+  // Passes 1 and 2, with splats of splat_size x splat_size pixels, for shading.
+  void splat(const glm::mat4& view_projection, int splat_size, float depth_bias);
+  // Pass 1 onto one layer of a depth-texture array of the target's size (a shadow map): each
+  // texel keeps the nearer of its depth and the points'. For a paraboloid shadow view,
+  // `view_projection` is its world → light space matrix and `paraboloid` its zoom and range
+  // (shadow::Paraboloid); zoom 0 for a projective view.
+  void splat_onto(GLuint depth_texture, int layer, const glm::mat4& view_projection, int splat_size, float depth_bias,
+                  glm::vec2 paraboloid);
   // Per pixel, the points on the surface `surface_depth` shows there (linear view depth, rows from
   // the top, negative where none), each counted once where its centre lands, rows from the top: for
   // the density figures. On the surface: within `surface_gap` of its depth, as a fraction of it.

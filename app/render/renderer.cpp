@@ -260,8 +260,8 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
     if (!settings_.points) continue;
     const shadow::ShadowView& v = setup_.views[layer];
     shadow_points_->upload(selections[layer].points, tables_, samples_);
-    shadow_points_->splat(v.view_projection(), settings_.shadow_splat_size, shadow_point_bias, false, v.paraboloid_parameters());
-    shadow_pass_.add_points(*shadow_points_, static_cast<int>(layer));
+    shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
+                               settings_.shadow_splat_size, shadow_point_bias, v.paraboloid_parameters());
   }
   stats_.shadow_pass_ms = shadow_timer_.stop_ms();
 }
@@ -309,7 +309,7 @@ void Renderer::draw_frame(const shadow::Camera& camera, const shadow::Light& lig
                           const std::optional<FramePass::ShadowLookup>& lookup) {
   frame_pass_.draw_surfaces(gpu_scene_, camera);
   if (settings_.points) {
-    frame_points_.splat(view_projection_, settings_.splat_size, 0.0f, true);
+    frame_points_.splat(view_projection_, settings_.splat_size, 0.0f);
     frame_pass_.add_points(frame_points_, camera);
   }
   frame_pass_.shade(camera, light, lookup);

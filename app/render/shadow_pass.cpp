@@ -16,8 +16,7 @@ ShadowPass::ShadowPass(int size)
     : size_(size),
       program_(gl::build_program({"shadow_depth.vert", "shadow_depth.frag"})),
       paraboloid_program_(gl::build_program({"world_position.vert", "shadow_paraboloid.tesc", "shadow_paraboloid.tese",
-                                             "shadow_depth.frag"})),
-      point_program_(gl::build_program({"fullscreen.vert", "point_shadow.frag"})) {
+                                             "shadow_depth.frag"})) {
   allocate(1);
 }
 
@@ -70,30 +69,11 @@ void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup,
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
-}  // namespace ecoview
-
-namespace ecoview {
-
 Image<float> ShadowPass::read_layer(int layer) const {
   std::vector<float> bottom_up(static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_));
   glGetTextureSubImage(depth_.name(), 0, 0, 0, layer, size_, size_, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
                        static_cast<GLsizei>(bottom_up.size() * sizeof(float)), bottom_up.data());
   return from_bottom_up(size_, size_, 1, bottom_up);
-}
-
-void ShadowPass::add_points(const PointSplat& points, int layer) const {
-  if (points.point_count() == 0) return;
-  const GLuint fb = framebuffer_.name();
-  glNamedFramebufferTextureLayer(fb, GL_DEPTH_ATTACHMENT, depth_.name(), 0, layer);
-  glBindFramebuffer(GL_FRAMEBUFFER, fb);
-  glViewport(0, 0, size_, size_);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glUseProgram(point_program_.name());
-  points.bind_for(point_program_);
-  glBindVertexArray(empty_vertex_array_.name());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
 }
 
 }  // namespace ecoview

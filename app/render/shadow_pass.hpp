@@ -2,7 +2,6 @@
 #include "app/gl/gl_objects.hpp"
 #include "app/render/gpu_scene.hpp"
 #include "app/render/image.hpp"
-#include "app/render/point_splat.hpp"
 #include "shadow/shadow_setup.hpp"
 
 namespace ecoview {
@@ -15,9 +14,6 @@ class ShadowPass {
   explicit ShadowPass(int size);
   // Draws one view of the setup into its layer.
   void render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer);
-  // Adds splatted point depths (a PointSplat of size x size) to one layer, depth-tested against
-  // what render() drew there.
-  void add_points(const PointSplat& points, int layer) const;
   GLuint depth_texture() const { return depth_.name(); }
   // One layer's depths, window depth 0 (near) to 1 (far), rows from the top.
   Image<float> read_layer(int layer) const;
@@ -32,8 +28,6 @@ class ShadowPass {
   gl::Framebuffer framebuffer_;
   gl::Program program_;
   gl::Program paraboloid_program_;
-  gl::Program point_program_;
-  gl::VertexArray empty_vertex_array_;
 };
 
 }  // namespace ecoview
