@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <future>
 #include <optional>
 
 namespace ecoview {
@@ -380,6 +381,20 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   light_ = light;
   const bool volumes = settings_.method == ShadowMethod::volumes;
   const bool reference = settings_.method == ShadowMethod::reference;
+  // The frame's points are chosen on another thread while this one chooses the shadow map's and
+  // draws it: sampling is CPU work, and on llvmpipe the GL work is too, so the two overlap on two
+  // cores. The sampler only reads what pose() left.
+  std::future<pointgen::SampledFrame> frame_sample;
+  double frame_sample_ms = 0.0;
+  if (settings_.points) {
+    frame_sample = std::async(std::launch::async, [this, &camera, &frame_sample_ms] {
+      const auto start = std::chrono::steady_clock::now();
+      pointgen::SampledFrame sampled =
+          pointgen::sample_view(sampler_view(camera, settings_, {view_projection_}), tables_, samples_.meshes(), cells_);
+      frame_sample_ms = ms_since(start);
+      return sampled;
+    });
+  }
   std::optional<FramePass::ShadowLookup> lookup;
   if (shadows && !volumes && !reference) {
     render_shadow_map(camera, light);
@@ -387,9 +402,8 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   }
   pointgen::SampledFrame selection;
   if (settings_.points) {
-    const auto start = std::chrono::steady_clock::now();
-    selection = pointgen::sample_view(sampler_view(camera, settings_, {view_projection_}), tables_, samples_.meshes(), cells_);
-    stats_.sample_ms += ms_since(start);
+    selection = frame_sample.get();
+    stats_.sample_ms += frame_sample_ms;
     if (settings_.measure != RenderSettings::Measure::off) selection = measured(selection);
     upload_polygons(selection);
     frame_points_.upload(selection.points, tables_, samples_);
