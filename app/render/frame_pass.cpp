@@ -83,27 +83,11 @@ void FramePass::add_points(const PointSplat& points, const shadow::Camera& camer
   glUseProgram(point_program_.name());
   set_camera(point_program_, camera);
   points.bind_for(point_program_);
-  glBindVertexArray(empty_vertex_array_.name());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
+  draw_fullscreen();
 }
 
-void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,
-                      const std::optional<ShadowLookup>& shadow_map) const {
-  const GLuint fb = lit_.name();
-  glBindFramebuffer(GL_FRAMEBUFFER, fb);
-  glViewport(0, 0, width_, height_);
-  const float sky[4] = {sky_color.r, sky_color.g, sky_color.b, 1.0f};
-  const float fully_visible[4] = {1.0f, 0.0f, 0.0f, 0.0f};
-  const float no_surface[4] = {-1.0f, 0.0f, 0.0f, 0.0f};
-  glClearNamedFramebufferfv(fb, GL_COLOR, 0, sky);
-  glClearNamedFramebufferfv(fb, GL_COLOR, 1, fully_visible);
-  glClearNamedFramebufferfv(fb, GL_COLOR, 2, no_surface);
-  glDisable(GL_DEPTH_TEST);
-
+void FramePass::set_light(const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const {
   const gl::Program& program = shade_program_;
-  glUseProgram(program.name());
-  set_camera(program, camera);
   gl::set_uniform(program, "frame_size", glm::vec2(width_, height_));
   gl::set_uniform(program, "light_type", static_cast<int>(light.type));
   gl::set_uniform(program, "light_position", light.position);
@@ -124,14 +108,36 @@ void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,
     gl::set_uniform(program, "shadow_size", static_cast<float>(shadow_map->size));
     glBindTextureUnit(setup.selection == shadow::ViewSelection::screen_mask ? 1 : 0, shadow_map->texture);
   }
+}
+
+void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,
+                      const std::optional<ShadowLookup>& shadow_map) const {
+  const GLuint fb = lit_.name();
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  glViewport(0, 0, width_, height_);
+  const float sky[4] = {sky_color.r, sky_color.g, sky_color.b, 1.0f};
+  const float fully_visible[4] = {1.0f, 0.0f, 0.0f, 0.0f};
+  const float no_surface[4] = {-1.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(fb, GL_COLOR, 0, sky);
+  glClearNamedFramebufferfv(fb, GL_COLOR, 1, fully_visible);
+  glClearNamedFramebufferfv(fb, GL_COLOR, 2, no_surface);
+  glDisable(GL_DEPTH_TEST);
+
+  glUseProgram(shade_program_.name());
+  set_camera(shade_program_, camera);
+  set_light(light, shadow_map);
   glBindTextureUnit(2, positions_.name());
   glBindTextureUnit(3, normals_.name());
   glBindTextureUnit(4, albedos_.name());
   glBindTextureUnit(5, depth_.name());
+  draw_fullscreen();
+  glEnable(GL_DEPTH_TEST);
+}
+
+void FramePass::draw_fullscreen() const {
   glBindVertexArray(empty_vertex_array_.name());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
-  glEnable(GL_DEPTH_TEST);
 }
 
 template <class Sample>

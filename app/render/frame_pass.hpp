@@ -55,6 +55,8 @@ class FramePass {
   template <class Sample>
   Image<Sample> read(const gl::Framebuffer& framebuffer, GLenum attachment, int channels, GLenum format, GLenum type) const;
   void set_camera(const gl::Program& program, const shadow::Camera& camera) const;
+  void set_light(const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;  // of shade_program_
+  void draw_fullscreen() const;  // one triangle over the viewport
 
   int width_, height_;
   bool aliasing_wanted_;
