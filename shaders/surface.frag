@@ -1,8 +1,8 @@
 #version 450 core
 // The frame's first pass (deferred shading): the nearest polygon surface of each pixel, lit once
 // per pixel by shade.frag. Plants' leaves are many triangles smaller than a pixel, and llvmpipe
-// runs a fragment shader on whole 4x4 blocks of them: lighting them here cost about twice the
-// whole frame pass (docs/benchmarks.md, "Deferred shading").
+// runs a fragment shader on a whole 4x4 block for each: lighting them here made the ecosystem's
+// frame pass about 1.5 times as long (docs/benchmarks.md, "Deferred shading").
 in vec3 world_position;
 in vec3 world_normal;
 in vec3 albedo;
