@@ -4,11 +4,13 @@
 #include "app/bench/splat_paths.hpp"
 #include "app/cli/options.hpp"
 #include "app/gl/context.hpp"
+#include "app/gl/gl_objects.hpp"
 #include "pointgen/primitives.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -185,6 +187,45 @@ TEST_F(SplatPaths, ComputeSplatWalksManySmallDraws) {
   for (std::uint32_t i = 0; i < grid.groups[0].size(); ++i) small.push_back({0, i, 1 + i % 31});
   expect_close(compare(cpu_splat(small, grid, grid_samples, view_projection),
                        compute_splat(small, grid, grid_samples, view_projection)));
+}
+
+// The shadow map's way: points splatted onto one layer of a depth-texture array leave each texel
+// the nearer of its depth and theirs, and the other layers as they were.
+TEST_F(SplatPaths, ComputeSplatOntoADepthLayerKeepsTheNearer) {
+  const auto texels = static_cast<std::size_t>(width) * height;
+  const auto bytes = static_cast<GLsizei>(texels * sizeof(float));
+  // The left half at a depth among the spheres' (window depths 0.92 at 6 m to 0.99 at 30 m), the
+  // right half empty.
+  auto layer_before = [](int x) { return x < width / 2 ? 0.975f : no_point; };
+  std::vector<float> before(texels), other(texels, 0.25f);
+  for (std::size_t i = 0; i < texels; ++i) before[i] = layer_before(static_cast<int>(i % width));
+  gl::Texture layers(GL_TEXTURE_2D_ARRAY);
+  glTextureStorage3D(layers.name(), 1, GL_DEPTH_COMPONENT32F, width, height, 2);
+  glTextureSubImage3D(layers.name(), 0, 0, 0, 0, width, height, 1, GL_DEPTH_COMPONENT, GL_FLOAT, other.data());
+  glTextureSubImage3D(layers.name(), 0, 0, 0, 1, width, height, 1, GL_DEPTH_COMPONENT, GL_FLOAT, before.data());
+
+  PointSplat splat({width, height});
+  splat.upload(draws, scene.groups, samples);
+  splat.splat_onto(layers.name(), 1, view_projection, 1, 0.0f, glm::vec2(0.0f));
+  auto read = [&](int layer) {
+    std::vector<float> bottom_up(texels);
+    glGetTextureSubImage(layers.name(), 0, 0, 0, layer, width, height, 1, GL_DEPTH_COMPONENT, GL_FLOAT, bytes, bottom_up.data());
+    return from_bottom_up(width, height, 1, bottom_up);
+  };
+  const Image<float> after = read(1);
+
+  Image<float> expected = reference;
+  std::size_t kept = 0, replaced = 0;
+  for (std::size_t i = 0; i < texels; ++i) {
+    const float layer = layer_before(static_cast<int>(i % width));
+    kept += layer < no_point && reference.samples[i] > layer;
+    replaced += layer < no_point && reference.samples[i] < layer;
+    expected.samples[i] = std::min(layer, reference.samples[i]);
+  }
+  ASSERT_GT(kept, 1000u) << "the layer should be nearer than the points somewhere";
+  ASSERT_GT(replaced, 1000u) << "the points should be nearer than the layer somewhere";
+  expect_close(compare(expected, after));
+  EXPECT_EQ(read(0).samples, other);
 }
 
 TEST_F(SplatPaths, MeasuresEveryPathOnTheSamePoints) {
