@@ -9,14 +9,12 @@ layout(location = 10) in vec3 instance_color;
 uniform mat4 view;
 uniform mat4 view_projection;
 
-out vec3 world_position;
 out vec3 world_normal;
 out vec3 albedo;
 out float view_depth;
 
 void main() {
   vec4 world = model * vec4(position, 1.0);
-  world_position = world.xyz;
   world_normal = normal_matrix * normal;
   albedo = vertex_color * instance_color;
   view_depth = -(view * world).z;

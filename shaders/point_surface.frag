@@ -4,10 +4,9 @@
 // polygons.
 #include "point_common.glsl"
 
-layout(location = 0) out vec4 out_position;
-layout(location = 1) out vec4 out_normal;
-layout(location = 2) out vec4 out_albedo;
-layout(location = 3) out float out_depth;
+layout(location = 0) out vec4 out_normal;
+layout(location = 1) out vec4 out_albedo;
+layout(location = 2) out float out_depth;
 
 uniform mat4 view;
 uniform vec3 camera_position;
@@ -24,7 +23,6 @@ void main() {
   vec3 n = normalize(mat3(instance.model) * normals[s].xyz);
   if (dot(n, camera_position - position) < 0.0) n = -n;
   gl_FragDepth = uintBitsToFloat(depths[index]);
-  out_position = vec4(position, 1.0);
   out_normal = vec4(n, 0.0);
   out_albedo = vec4(colors[s].rgb * instance.tint.rgb, 1.0);
   out_depth = -(view * vec4(position, 1.0)).z;

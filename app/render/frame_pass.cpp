@@ -37,13 +37,12 @@ FramePass::FramePass(int width, int height, bool aliasing)
       surface_program_(gl::build_program({"frame.vert", "surface.frag"})),
       point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})),
       shade_program_(gl::build_program({"fullscreen.vert", "shade.frag"})) {
-  glTextureStorage2D(positions_.name(), 1, GL_RGBA32F, width, height);
   glTextureStorage2D(normals_.name(), 1, GL_RGBA32F, width, height);
   glTextureStorage2D(albedos_.name(), 1, GL_RGBA32F, width, height);
   glTextureStorage2D(depth_.name(), 1, GL_R32F, width, height);
   glTextureStorage2D(depth_buffer_.name(), 1, GL_DEPTH32F_STENCIL8, width, height);
   glNamedFramebufferTexture(surfaces_.name(), GL_DEPTH_STENCIL_ATTACHMENT, depth_buffer_.name(), 0);
-  attach(surfaces_, {&positions_, &normals_, &albedos_, &depth_});
+  attach(surfaces_, {&normals_, &albedos_, &depth_});
 
   glTextureStorage2D(color_.name(), 1, GL_RGBA8, width, height);
   glTextureStorage2D(visibility_.name(), 1, GL_R8, width, height);
@@ -56,6 +55,8 @@ void FramePass::set_camera(const gl::Program& program, const shadow::Camera& cam
   gl::set_uniform(program, "view", camera.view());
   gl::set_uniform(program, "view_projection", camera.projection(aspect) * camera.view());
   gl::set_uniform(program, "camera_position", camera.position);
+  gl::set_uniform(program, "camera_forward", camera.forward());
+  gl::set_uniform(program, "pixel_to_world", glm::inverse(camera.projection(aspect) * camera.view()));
 }
 
 void FramePass::draw_surfaces(const GpuScene& scene, const shadow::Camera& camera) const {
@@ -64,7 +65,7 @@ void FramePass::draw_surfaces(const GpuScene& scene, const shadow::Camera& camer
   glViewport(0, 0, width_, height_);
   const float no_surface[4] = {-1.0f, 0.0f, 0.0f, 0.0f};
   const float far_depth = 1.0f;
-  glClearNamedFramebufferfv(fb, GL_COLOR, 3, no_surface);
+  glClearNamedFramebufferfv(fb, GL_COLOR, 2, no_surface);
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -126,10 +127,9 @@ void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,
   glUseProgram(shade_program_.name());
   set_camera(shade_program_, camera);
   set_light(light, shadow_map);
-  glBindTextureUnit(2, positions_.name());
-  glBindTextureUnit(3, normals_.name());
-  glBindTextureUnit(4, albedos_.name());
-  glBindTextureUnit(5, depth_.name());
+  glBindTextureUnit(2, normals_.name());
+  glBindTextureUnit(3, albedos_.name());
+  glBindTextureUnit(4, depth_.name());
   draw_fullscreen();
   glEnable(GL_DEPTH_TEST);
 }
@@ -153,7 +153,7 @@ Image<Sample> FramePass::read(const gl::Framebuffer& framebuffer, GLenum attachm
 
 Image8 FramePass::read_color() const { return read<std::uint8_t>(lit_, GL_COLOR_ATTACHMENT0, 3, GL_RGB, GL_UNSIGNED_BYTE); }
 Image8 FramePass::read_visibility() const { return read<std::uint8_t>(lit_, GL_COLOR_ATTACHMENT1, 1, GL_RED, GL_UNSIGNED_BYTE); }
-Image<float> FramePass::read_depth() const { return read<float>(surfaces_, GL_COLOR_ATTACHMENT3, 1, GL_RED, GL_FLOAT); }
+Image<float> FramePass::read_depth() const { return read<float>(surfaces_, GL_COLOR_ATTACHMENT2, 1, GL_RED, GL_FLOAT); }
 Image<float> FramePass::read_aliasing() const { return read<float>(lit_, GL_COLOR_ATTACHMENT2, 1, GL_RED, GL_FLOAT); }
 
 void FramePass::present(int width, int height) const {

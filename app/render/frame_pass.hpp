@@ -12,9 +12,10 @@
 namespace ecoview {
 
 // Renders the camera's view in two steps (deferred shading): first the nearest surface of each
-// pixel, polygons and point splats depth-tested together, into position, normal, albedo and
-// linear view depth; then Blinn-Phong lighting once per pixel into sRGB colour, light visibility
-// (the `shadow` AOV) and the shadow map's aliasing factor.
+// pixel, polygons and point splats depth-tested together, into normal, albedo and linear view
+// depth; then Blinn-Phong lighting once per pixel, at the point of that depth on the ray through
+// the pixel's centre, into sRGB colour, light visibility (the `shadow` AOV) and the shadow map's
+// aliasing factor.
 class FramePass {
  public:
   // `aliasing`: also fill the aliasing target (it costs shading time; otherwise it holds 0).
@@ -61,7 +62,6 @@ class FramePass {
   int width_, height_;
   bool aliasing_wanted_;
   // The surfaces: written by draw_surfaces and add_points.
-  gl::Texture positions_{GL_TEXTURE_2D};
   gl::Texture normals_{GL_TEXTURE_2D};
   gl::Texture albedos_{GL_TEXTURE_2D};
   gl::Texture depth_{GL_TEXTURE_2D};
