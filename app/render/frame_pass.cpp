@@ -55,8 +55,6 @@ void FramePass::set_camera(const gl::Program& program, const shadow::Camera& cam
   gl::set_uniform(program, "view", camera.view());
   gl::set_uniform(program, "view_projection", camera.projection(aspect) * camera.view());
   gl::set_uniform(program, "camera_position", camera.position);
-  gl::set_uniform(program, "camera_forward", camera.forward());
-  gl::set_uniform(program, "pixel_to_world", glm::inverse(camera.projection(aspect) * camera.view()));
 }
 
 void FramePass::draw_surfaces(const GpuScene& scene, const shadow::Camera& camera) const {
@@ -126,6 +124,9 @@ void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,
 
   glUseProgram(shade_program_.name());
   set_camera(shade_program_, camera);
+  const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+  gl::set_uniform(shade_program_, "camera_forward", camera.forward());
+  gl::set_uniform(shade_program_, "pixel_to_world", glm::inverse(camera.projection(aspect) * camera.view()));
   set_light(light, shadow_map);
   glBindTextureUnit(2, normals_.name());
   glBindTextureUnit(3, albedos_.name());
