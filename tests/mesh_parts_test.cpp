@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <numeric>
 
 namespace pointgen {
@@ -54,6 +55,38 @@ TEST(MeshParts, PartsHoldEverySampleOnceInTheWholeListsOrderInDisjointBoxes) {
       EXPECT_GE(glm::max(gap.x, glm::max(gap.y, gap.z)), -1e-5f) << "parts " << a << " and " << b << " overlap";
     }
   }
+}
+
+TEST(MeshParts, TrianglePartsHoldEveryTriangleOnceInsideTheirBoxes) {
+  TriangleMesh mesh;
+  mesh.positions = random_points(600, {4.0f, 8.0f, 2.0f}, 5);
+  Random rng(6);
+  for (int t = 0; t < 900; ++t) {
+    for (int corner = 0; corner < 3; ++corner) mesh.indices.push_back(rng.below(static_cast<std::uint32_t>(mesh.positions.size())));
+  }
+  const TriangleSplit split = split_triangles(mesh);
+  ASSERT_EQ(split.indices.size(), mesh.indices.size());
+  ASSERT_LE(split.parts.size(), 64u);
+  ASSERT_GT(split.parts.size(), 1u);
+  const auto triangles_of = [](const std::vector<std::uint32_t>& indices) {
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    for (std::size_t i = 0; i < indices.size(); i += 3) triangles.push_back({indices[i], indices[i + 1], indices[i + 2]});
+    std::sort(triangles.begin(), triangles.end());
+    return triangles;
+  };
+  EXPECT_EQ(triangles_of(split.indices), triangles_of(mesh.indices)) << "every triangle once, its corners in order";
+  std::uint32_t next = 0;
+  for (const PolygonPart& part : split.parts) {
+    EXPECT_EQ(part.first_index, next) << "the parts follow each other";
+    EXPECT_GT(part.index_count, 0u);
+    EXPECT_EQ(part.index_count % 3, 0u);
+    next = part.first_index + part.index_count;
+    for (std::uint32_t i = part.first_index; i < next; ++i) {
+      const glm::vec3 p = mesh.positions[split.indices[i]];
+      EXPECT_TRUE(glm::all(glm::lessThanEqual(glm::abs(p - part.center), part.half_size + 1e-5f))) << "corner inside its part's box";
+    }
+  }
+  EXPECT_EQ(next, split.indices.size());
 }
 
 // Two parallel 4 m plates 2 m apart, facing the camera (normals along z), as one mesh whose sample
@@ -145,6 +178,41 @@ TEST(ViewSampler, AnInstanceLeftWholeForPolygonsIsCountedByPartsOnceItsHiddenSha
   EXPECT_TRUE(f.polygons[0].empty());
   EXPECT_GT(right, 2000u) << "the front plate's right half: about 2 * 256^2 * 8 / 19^2 = 2,900";
   EXPECT_LT(left, right / 20) << "the hidden half";
+}
+
+TEST(ViewSampler, AnInstanceDrawnAsPolygonsDrawsThePartsThatNearerObjectsLeaveToBeSeen) {
+  SamplerView view;
+  view.views = {glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f)};
+  view.density = {256.0f, 2.0f};
+  view.pixels = {512, 512};
+  // The plates 12 m away need 2 * 256^2 * 32 / 12^2 = 29,000 points, more than their polygons'
+  // 12,000: polygons, in a left and a right half. A screen 6 m away hides the left half's box
+  // (x in [-2/11, 0] on screen, the screen covering [-1.6/6, 0]).
+  SampledMesh plates = two_plates();
+  plates.triangles = 3000;
+  plates.polygon_parts = {{0, 4500, {-1.0f, 0.0f, 0.0f}, {1.0f, 2.0f, 1.0f}}, {4500, 4500, {1.0f, 0.0f, 0.0f}, {1.0f, 2.0f, 1.0f}}};
+  SampledMesh screen;
+  screen.sample_positions = grid_points(-1.6f, 0.0f, 1.6f, 96);  // 1.4 pixels apart or less: 2-pixel splats cover it
+  screen.area = 100.0f;  // points: 2 * 256^2 * 100 / 6^2 = 364,000, less than its list and its polygons
+  screen.samples = 500000;
+  screen.triangles = 1000000;
+  screen.center = {-0.8f, 0.0f, 0.0f};
+  screen.half_size = {0.8f, 1.6f, 0.0f};
+  screen.radius = glm::length(screen.half_size);
+  std::vector<InstanceTable> tables(2);
+  tables[0].add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -12.0f}), glm::vec3(1.0f), 7);
+  tables[1].mesh = 1;
+  tables[1].add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -6.0f}), glm::vec3(1.0f), 8);
+  const SampledFrame hidden_left = sample_view(view, tables, {plates, screen});
+  ASSERT_EQ(hidden_left.polygons[0], (std::vector<std::uint32_t>{0}));
+  ASSERT_EQ(hidden_left.polygon_parts[0].size(), 1u);
+  EXPECT_EQ(hidden_left.polygon_parts[0][0], 0b10u) << "the right half only";
+  EXPECT_EQ(hidden_left.triangle_count, 1500u);
+  tables[1].transforms[0] = glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, 5.0f});  // behind the eye
+  const SampledFrame unhidden = sample_view(view, tables, {plates, screen});
+  ASSERT_EQ(unhidden.polygon_parts[0].size(), 1u);
+  EXPECT_EQ(unhidden.polygon_parts[0][0], 0b11u);
+  EXPECT_EQ(unhidden.triangle_count, 3000u);
 }
 
 TEST(ViewSampler, AnInstanceWhoseSphereReachesIntoTheViewButNotItsBoxGetsNothing) {

@@ -163,7 +163,9 @@ TEST(Ecosystem, EachLayerKeepsItsMinimumDistanceAndTreesKeepOutOfClearings) {
     ASSERT_GT(radius, 0.6f * full);
     for (std::size_t i = 0; i < points.size(); ++i) {
       for (std::size_t j = i + 1; j < points.size(); ++j) ASSERT_GE(glm::distance(points[i], points[j]), radius * 0.999f);
-      if (layer < 2) EXPECT_GE(glm::distance(points[i], glm::vec2(0.0f)), 15.0f) << "a tree or bush in the clearing";
+      if (layer < 2) {
+        EXPECT_GE(glm::distance(points[i], glm::vec2(0.0f)), 15.0f) << "a tree or bush in the clearing";
+      }
     }
   }
 }

@@ -173,7 +173,7 @@ InstanceTable table_at(const std::vector<glm::vec3>& positions) {
 }
 
 TEST(ViewSampler, CullsWhatIsOutOfViewAndCountsTheRest) {
-  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}, glm::mat3(0.0f)};  // 2 m² in 1,000 triangles: break-even at 4,000 points
+  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}, glm::mat3(0.0f), {}};  // 2 m² in 1,000 triangles: break-even at 4,000 points
   const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, 40}, {0, 0, -40}, {100, 0, -40}})}, {mesh});
   ASSERT_EQ(f.points.size(), 1u) << "the instances behind and beside the view are culled";
   EXPECT_EQ(f.points[0].instance, 1u);
@@ -185,7 +185,7 @@ TEST(ViewSampler, CullsWhatIsOutOfViewAndCountsTheRest) {
 }
 
 TEST(ViewSampler, NearInstancesArePolygonsAndTheBandBetweenDrawsBoth) {
-  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}, glm::mat3(0.0f)};
+  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}, glm::mat3(0.0f), {}};
   // Points needed = 131072 / z^2: 4,000 (break-even) at z = 5.7 m; the band is 5.1 to 6.4 m.
   const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, -3.5f}, {0, 0, -5.8f}, {0, 0, -9.5f}})}, {mesh});
   ASSERT_EQ(f.polygons[0], (std::vector<std::uint32_t>{0, 1}));
@@ -201,7 +201,7 @@ TEST(ViewSampler, NearInstancesArePolygonsAndTheBandBetweenDrawsBoth) {
 
 TEST(ViewSampler, CountsOfSmallInstancesAreRoundedWithoutBias) {
   // 4,000 instances needing 0.3 points each: some get one point, most none, about 1,200 in all.
-  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}, glm::mat3(0.0f)};
+  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}, glm::mat3(0.0f), {}};
   InstanceTable table;
   for (int i = 0; i < 4000; ++i) table.add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -200.0f}), glm::vec3(1.0f), derive_seed(5, i));
   SamplerView view = test_view();
@@ -212,7 +212,7 @@ TEST(ViewSampler, CountsOfSmallInstancesAreRoundedWithoutBias) {
 
 TEST(ViewSampler, AFarCellIsCountedWholeWithOnePointForEachOfAsManyInstancesAsItNeeds) {
   // 20,000 instances on a 20 m square 400 m ahead, each needing about a quarter of a point.
-  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}, glm::mat3(0.0f)};
+  const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}, glm::mat3(0.0f), {}};
   InstanceTable table;
   Random rng(12);
   for (int i = 0; i < 20000; ++i) {
@@ -263,8 +263,8 @@ std::vector<glm::vec3> face_points(bool left_half_only) {
 TEST(ViewSampler, InstancesHiddenBehindOthersGetNoPoints) {
   // A 4 m box 10 m ahead whose points fill its front face; behind it at 40 m one small ball
   // straight back, one off to the side.
-  SampledMesh opaque{400.0f, glm::vec3(0.0f), 3.5f, 100000, 500000, glm::vec3(2.0f), face_points(false), {}, glm::mat3(0.0f)};
-  const SampledMesh small{0.3f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.3f), {glm::vec3(0.0f)}, {}, glm::mat3(0.0f)};
+  SampledMesh opaque{400.0f, glm::vec3(0.0f), 3.5f, 100000, 500000, glm::vec3(2.0f), face_points(false), {}, glm::mat3(0.0f), {}};
+  const SampledMesh small{0.3f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.3f), {glm::vec3(0.0f)}, {}, glm::mat3(0.0f), {}};
   std::vector<InstanceTable> tables = {table_at({{0, 0, -40}, {25, 0, -40}}), table_at({{0, 0, -10}})};
   tables[1].mesh = 1;
   SamplerView view = test_view();

@@ -1,5 +1,7 @@
 #include "app/render/gpu_scene.hpp"
 
+#include "pointgen/sampling/mesh_parts.hpp"
+
 #include <algorithm>
 
 namespace ecoview {
@@ -35,23 +37,32 @@ void attribute(GLuint vao, GLuint location, GLuint binding, GLint size, GLuint o
 }  // namespace
 
 GpuScene::GpuScene(const Scene& scene) {
-  for (const pointgen::TriangleMesh& mesh : scene.meshes) {
+  for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+    const pointgen::TriangleMesh& mesh = scene.meshes[i];
     std::vector<Vertex> vertices;
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-      vertices.push_back({mesh.positions[i], mesh.normals[i], mesh.colors[i]});
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+      vertices.push_back({mesh.positions[v], mesh.normals[v], mesh.colors[v]});
     }
     Mesh& m = meshes_.emplace_back();
     gl::store(m.vertices, vertices);
-    gl::store(m.indices, mesh.indices);
     m.index_count = static_cast<GLsizei>(mesh.indices.size());
+    if (!scene.point_meshes[i]) {
+      gl::store(m.indices, mesh.indices);
+      continue;
+    }
+    // In the order of the parts the sampler chooses from (PointSamples makes the same split).
+    const pointgen::TriangleSplit split = pointgen::split_triangles(mesh);
+    gl::store(m.indices, split.indices);
+    for (const pointgen::PolygonPart& part : split.parts) m.parts.push_back({part.first_index, static_cast<GLsizei>(part.index_count)});
   }
   for (const pointgen::InstanceTable& group : scene.groups) {
     const std::vector<Instance> instances = instances_of(group);
     const Mesh& mesh = meshes_[group.mesh];
     Group& g = groups_.emplace_back();
     gl::store(g.instances, instances, GL_DYNAMIC_STORAGE_BIT);
-    g.index_count = mesh.index_count;
+    g.mesh = group.mesh;
     g.instance_count = static_cast<GLsizei>(instances.size());
+    g.whole = {0, g.instance_count};
     g.capacity = instances.size();
 
     const GLuint vao = g.vertex_array.name();
@@ -68,19 +79,60 @@ GpuScene::GpuScene(const Scene& scene) {
   }
 }
 
-void GpuScene::update(std::size_t group, const pointgen::InstanceTable& table) {
-  Group& g = groups_[group];
-  const std::vector<Instance> instances = instances_of(table);
-  g.instance_count = static_cast<GLsizei>(std::min(instances.size(), g.capacity));
-  glNamedBufferSubData(g.instances.name(), 0, static_cast<GLsizeiptr>(static_cast<std::size_t>(g.instance_count) * sizeof(Instance)),
-                       instances.data());
+void GpuScene::reserve(Group& group, std::size_t instances) {
+  if (instances <= group.capacity) return;
+  group.capacity = std::max(instances, 2 * group.capacity);
+  group.instances = gl::Buffer();
+  glNamedBufferStorage(group.instances.name(), static_cast<GLsizeiptr>(group.capacity * sizeof(Instance)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glVertexArrayVertexBuffer(group.vertex_array.name(), 1, group.instances.name(), 0, sizeof(Instance));
 }
 
-void GpuScene::draw(GLenum mode) const {
+void GpuScene::update(std::size_t group, const pointgen::InstanceTable& table, const std::vector<std::uint64_t>& parts) {
+  Group& g = groups_[group];
+  std::vector<Instance> instances = instances_of(table);
+  const std::size_t n = instances.size();
+  g.instance_count = static_cast<GLsizei>(n);
+  g.whole = {0, g.instance_count};
+  g.part_instances.clear();
+  const std::vector<Range>& mesh_parts = meshes_[g.mesh].parts;
+  if (parts.size() == n && n > 0 && !mesh_parts.empty()) {
+    // After the table: the instances with every part drawn whole, then each part's.
+    const std::uint64_t every_part = mesh_parts.size() >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << mesh_parts.size()) - 1;
+    const auto whole = [&](std::uint64_t bits) { return (bits & every_part) == every_part; };
+    const auto add_those = [&](auto chosen) {
+      Range range{static_cast<GLuint>(instances.size()), 0};
+      for (std::size_t i = 0; i < n; ++i) {
+        if (chosen(parts[i])) instances.push_back(instances[i]);
+      }
+      range.count = static_cast<GLsizei>(instances.size() - range.first);
+      return range;
+    };
+    g.whole = add_those(whole);
+    for (std::size_t p = 0; p < mesh_parts.size(); ++p) {
+      g.part_instances.push_back(add_those([&](std::uint64_t bits) { return !whole(bits) && (bits >> p & 1u); }));
+    }
+  }
+  reserve(g, instances.size());
+  glNamedBufferSubData(g.instances.name(), 0, static_cast<GLsizeiptr>(instances.size() * sizeof(Instance)), instances.data());
+}
+
+void GpuScene::draw(GLenum mode, Parts parts) const {
   for (const Group& group : groups_) {
-    if (group.instance_count == 0) continue;
+    const Mesh& mesh = meshes_[group.mesh];
     glBindVertexArray(group.vertex_array.name());
-    glDrawElementsInstanced(mode, group.index_count, GL_UNSIGNED_INT, nullptr, group.instance_count);
+    const auto draw_range = [&](Range indices, Range instances) {
+      if (instances.count == 0 || indices.count == 0) return;
+      glDrawElementsInstancedBaseInstance(mode, indices.count, GL_UNSIGNED_INT,
+                                          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(indices.first) * sizeof(GLuint)),
+                                          instances.count, instances.first);
+    };
+    const Range all_indices{0, mesh.index_count};
+    if (parts == Parts::all) {
+      draw_range(all_indices, {0, group.instance_count});
+      continue;
+    }
+    draw_range(all_indices, group.whole);
+    for (std::size_t p = 0; p < group.part_instances.size(); ++p) draw_range(mesh.parts[p], group.part_instances[p]);
   }
   glBindVertexArray(0);
 }

@@ -7,30 +7,44 @@
 namespace ecoview {
 
 // The scene's meshes and instance tables in GL buffers: each mesh once, drawn with one instanced
-// call per group. Vertex attributes: 0 position, 1 normal, 2 colour; per instance: 3–6 model
-// matrix, 7–9 normal matrix, 10 colour.
+// call per group, or per polygon part of a point mesh (pointgen::split_triangles) when the sampler
+// chose parts. Vertex attributes: 0 position, 1 normal, 2 colour; per instance: 3–6 model matrix,
+// 7–9 normal matrix, 10 colour.
 class GpuScene {
  public:
   explicit GpuScene(const Scene& scene);
-  // `mode` GL_PATCHES (of 3 vertices) for programs that tessellate.
-  void draw(GLenum mode = GL_TRIANGLES) const;
+  enum class Parts { chosen, all };
+  // `mode` GL_PATCHES (of 3 vertices) for programs that tessellate. `all`: every instance whole,
+  // whatever parts were chosen (shadow volumes need the casters the camera does not see).
+  void draw(GLenum mode = GL_TRIANGLES, Parts parts = Parts::chosen) const;
   // Replaces the instances of a group with `table`, which has at most as many as the scene's
-  // group: posed moving objects, or the subset a pass draws as polygons.
-  void update(std::size_t group, const pointgen::InstanceTable& table);
+  // group: posed moving objects, or the subset a pass draws as polygons. `parts`, for a point
+  // mesh's group, has for each instance the polygon parts to draw, a bit each; none: all.
+  void update(std::size_t group, const pointgen::InstanceTable& table, const std::vector<std::uint64_t>& parts = {});
 
  private:
+  struct Range {
+    GLuint first = 0;
+    GLsizei count = 0;
+  };
   struct Mesh {
     gl::Buffer vertices;
     gl::Buffer indices;
     GLsizei index_count = 0;
+    std::vector<Range> parts;  // index ranges of its polygon parts (point meshes)
   };
   struct Group {
     gl::VertexArray vertex_array;
     gl::Buffer instances;
-    GLsizei index_count = 0;
-    GLsizei instance_count = 0;  // drawn
+    std::size_t mesh = 0;
+    GLsizei instance_count = 0;  // the table's: the buffer's first instances
+    // The chosen parts: the buffer's instances drawn whole (the table's when it has no parts),
+    // and per polygon part the range of those that draw it (empty without parts).
+    Range whole;
+    std::vector<Range> part_instances;
     std::size_t capacity = 0;
   };
+  void reserve(Group& group, std::size_t instances);
   std::vector<Mesh> meshes_;
   std::vector<Group> groups_;
 };

@@ -11,6 +11,9 @@ namespace {
 
 // Longest sample list of one mesh; an instance needing more is drawn as polygons.
 constexpr std::size_t max_samples = 1u << 17;
+// A list holds this many times the points its polygons cost: enough for a mostly hidden near
+// instance's parts in a shadow map, and for the samples that tell which pixels its polygons cover.
+constexpr float list_per_polygon_equivalent = 6.0f;
 
 }  // namespace
 
@@ -29,8 +32,7 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle) {
     info.triangles = mesh.triangle_count();
     first_.push_back(static_cast<std::uint32_t>(positions.size()));
     if (scene.point_meshes[m]) {
-      // Enough for the top of the band in which an instance is drawn both ways.
-      info.samples = std::min(max_samples, static_cast<std::size_t>(std::ceil(1.3f * points_per_triangle * static_cast<float>(info.triangles))));
+      info.samples = std::min(max_samples, static_cast<std::size_t>(std::ceil(list_per_polygon_equivalent * points_per_triangle * static_cast<float>(info.triangles))));
       const std::vector<pointgen::SurfaceSample> samples = pointgen::sample_surface(mesh, info.samples, pointgen::derive_seed(0x5a3, m));
       std::vector<glm::vec3> sample_normals;
       for (const pointgen::SurfaceSample& s : samples) {
@@ -40,6 +42,7 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle) {
       info.normal_moments = pointgen::normal_moments(sample_normals);
       pointgen::MeshSplit split = pointgen::split_into_parts(info.sample_positions, sample_normals, info.area);
       info.parts = std::move(split.parts);
+      info.polygon_parts = pointgen::split_triangles(mesh).parts;  // as GpuScene orders the triangles
       const auto add = [&](const pointgen::SurfaceSample& s) {
         positions.emplace_back(s.position, 1.0f);
         normals.emplace_back(s.normal, 0.0f);

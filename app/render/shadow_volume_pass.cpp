@@ -56,7 +56,7 @@ void ShadowVolumePass::render(const GpuScene& scene, const glm::mat4& view_proje
   // Leaving a volume behind the surface (a back face failing the depth test) counts +1.
   glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
   glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
-  scene.draw();
+  scene.draw(GL_TRIANGLES, GpuScene::Parts::all);
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_DEPTH_CLAMP);
   glDepthMask(GL_TRUE);

@@ -70,7 +70,7 @@ float CoverageGrid::transmittance(const Rect& rect) const {
   return weight > 0.0f ? sum / weight : 1.0f;
 }
 
-void CoverageGrid::cover(std::span<const glm::vec3> points, const glm::mat4& transform) {
+void CoverageGrid::cover_splats(std::span<const glm::vec3> points, const glm::mat4& transform, int splat) {
   const glm::mat4 m = view_projection_ * transform;
   const glm::vec2 size(cells_);
   for (const glm::vec3& p : points) {
@@ -81,12 +81,20 @@ void CoverageGrid::cover(std::span<const glm::vec3> points, const glm::mat4& tra
     const glm::vec3 ndc = glm::vec3(clip) / clip.w;
     if (!(std::abs(ndc.x) <= 1.0f && std::abs(ndc.y) <= 1.0f && std::abs(ndc.z) <= 1.0f)) continue;
     // The splat's corner cell as the shader finds it.
-    const glm::vec2 corner = glm::floor((glm::vec2(ndc) * 0.5f + 0.5f) * size - 0.5f * static_cast<float>(splat_ - 1));
+    const glm::vec2 corner = glm::floor((glm::vec2(ndc) * 0.5f + 0.5f) * size - 0.5f * static_cast<float>(splat - 1));
     const int x0 = static_cast<int>(corner.x), y0 = static_cast<int>(corner.y);
-    for (int y = std::max(y0, 0); y < std::min(y0 + splat_, cells_.y); ++y) {
-      for (int x = std::max(x0, 0); x < std::min(x0 + splat_, cells_.x); ++x) cover_cell(x, y);
+    for (int y = std::max(y0, 0); y < std::min(y0 + splat, cells_.y); ++y) {
+      for (int x = std::max(x0, 0); x < std::min(x0 + splat, cells_.x); ++x) cover_cell(x, y);
     }
   }
+}
+
+void CoverageGrid::cover(std::span<const glm::vec3> points, const glm::mat4& transform) {
+  cover_splats(points, transform, splat_);
+}
+
+void CoverageGrid::cover_surface(std::span<const glm::vec3> points, const glm::mat4& transform) {
+  cover_splats(points, transform, 1);
 }
 
 void CoverageGrid::cover_cell(int x, int y) { covered_[tile_of(x, y)] |= std::uint64_t{1} << bit_of(x, y); }

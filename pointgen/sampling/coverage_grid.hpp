@@ -35,11 +35,16 @@ class CoverageGrid {
   float transmittance(const Rect& rect) const;
   // Covers the cells of the splats of `points` (in their object's frame, placed by `transform`).
   void cover(std::span<const glm::vec3> points, const glm::mat4& transform);
+  // Covers the cells that `points` fall in: samples of a surface drawn as polygons, which cover
+  // no more than the surface itself.
+  void cover_surface(std::span<const glm::vec3> points, const glm::mat4& transform);
 
  private:
   static constexpr int max_cells_read = 256;  // a rectangle's transmittance from its cells up to this
 
   void cover_cell(int x, int y);
+  // Covers the `splat` x `splat` cells around each of `points`.
+  void cover_splats(std::span<const glm::vec3> points, const glm::mat4& transform, int splat);
   std::size_t tile_of(int x, int y) const { return static_cast<std::size_t>(y / tile_cells) * tiles_.x + x / tile_cells; }
   static int bit_of(int x, int y) { return (y % tile_cells) * tile_cells + x % tile_cells; }
   // Calls visit(index, fraction of the square inside rect) for each square the rect overlaps, of

@@ -1,4 +1,6 @@
 #pragma once
+#include "pointgen/triangle_mesh.hpp"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -31,5 +33,23 @@ struct MeshSplit {
   std::vector<std::uint32_t> order;
 };
 MeshSplit split_into_parts(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals, float area, int cells = 4);
+
+// A piece of a mesh drawn as polygons that the sampler can skip where nearer objects hide it
+// (docs/point_density.md, "Polygon parts"): a range of the reordered index list, and the bounds
+// of its triangles.
+struct PolygonPart {
+  std::uint32_t first_index = 0;
+  std::uint32_t index_count = 0;
+  glm::vec3 center{0.0f};
+  glm::vec3 half_size{0.0f};
+};
+
+// The mesh's triangles grouped by the cell of a grid of `cells`³ over its bounds that holds
+// each one's centroid: the index list in that order, and a part per non-empty cell (at most 64).
+struct TriangleSplit {
+  std::vector<std::uint32_t> indices;
+  std::vector<PolygonPart> parts;
+};
+TriangleSplit split_triangles(const TriangleMesh& mesh, int cells = 4);
 
 }  // namespace pointgen

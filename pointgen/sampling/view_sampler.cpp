@@ -112,6 +112,27 @@ void cover(CoverageGrid& coverage, const SampledMesh& mesh, std::uint32_t first,
   coverage.cover(list.first(std::min({drawn, enough, list.size()})), transform);
 }
 
+// Covers the cells an instance's polygons cover, as far as its sample list tells: each sample the
+// cell it falls in (a splat's worth would close the gaps between leaves that show what is behind),
+// up to one sample per cell of its rectangle. A large one part by part, skipping those whose
+// cells are already covered (a near tree behind others: most of its list).
+void cover_polygons(CoverageGrid& coverage, const SampledMesh& mesh, const glm::mat4& transform, const CoverageGrid::Rect& rect) {
+  const std::span<const glm::vec3> list(mesh.sample_positions);
+  const auto cover_prefix = [&](std::size_t first, std::size_t samples, const CoverageGrid::Rect& r) {
+    const auto enough = static_cast<std::size_t>(coverage.cells_in(r)) + 1;
+    coverage.cover_surface(list.subspan(first, std::min({enough, samples, list.size() - first})), transform);
+  };
+  if (mesh.parts.empty() || !(coverage.cells_in(rect) > pixels_to_split)) {
+    cover_prefix(0, mesh.samples, rect);
+    return;
+  }
+  for (const MeshPart& part : mesh.parts) {
+    const std::optional<CoverageGrid::Rect> part_rect = coverage.project(part.center, part.half_size, transform);
+    if (!part_rect || !part_rect->on_screen() || coverage.transmittance(*part_rect) < hidden_transmittance) continue;
+    cover_prefix(part.first, part.samples, *part_rect);
+  }
+}
+
 // The candidate's threshold in [0, 1) for rounding its count: fixed per instance and part.
 float rounding(const InstanceTable& table, const Candidate& c, const SampledMesh& mesh) {
   const std::uint64_t seed = table.seeds.size() > c.instance ? table.seeds[c.instance] : c.instance;
@@ -136,6 +157,7 @@ class ViewSampling {
   ViewSampling(const SamplerView& view, const std::vector<InstanceTable>& tables, const std::vector<SampledMesh>& meshes)
       : view_(view), tables_(tables), meshes_(meshes) {
     frame_.polygons.resize(tables.size());
+    frame_.polygon_parts.resize(tables.size());
     for (const glm::mat4& m : view.views) frusta_.push_back(frustum_planes(m));
     // Occlusion and the cap need one image; several views (cube maps) count every instance whole.
     if ((view.occlusion || view.cap_to_pixels) && view.views.size() == 1) coverage_.emplace(view.views.front(), view.pixels, view.splat_pixels);
@@ -286,51 +308,126 @@ class ViewSampling {
     add(c);
   }
 
-  // Counts one instance or part, chooses points or polygons, and covers what it hides.
-  void add(const Candidate& c) {
-    const SampledMesh& mesh = meshes_[tables_[c.table].mesh];
-    const glm::mat4& transform = tables_[c.table].transforms[c.instance];
+  // An instance's or part's rectangle in the occlusion grid and its count with what is already
+  // covered in front; none when it is hidden or off screen.
+  struct Counted {
+    std::optional<CoverageGrid::Rect> rect;  // none without occlusion or for meshes that never hide
+    float transmittance = 1.0f;
+    float needed = 0.0f;
+  };
+  std::optional<Counted> count(const Candidate& c, const SampledMesh& mesh, const glm::mat4& transform) const {
+    Counted counted;
     // Only point meshes hide others and are hidden: ground and buildings are large and far from
     // their bounds.
-    std::optional<CoverageGrid::Rect> rect;
-    float share = 1.0f;
-    if (occlusion_ && !mesh.sample_positions.empty()) rect = rect_of(*occlusion_, c, mesh, transform);
-    if (rect) {
-      if (!rect->on_screen()) return;  // its sphere reached into the view, its box does not
-      const float transmittance = occlusion_->transmittance(*rect);
-      if (transmittance < hidden_transmittance) return;
-      share = visible_share(transmittance, view_.full_count_transmittance);
+    if (occlusion_ && !mesh.sample_positions.empty()) counted.rect = rect_of(*occlusion_, c, mesh, transform);
+    if (counted.rect) {
+      if (!counted.rect->on_screen()) return std::nullopt;  // its sphere reached into the view, its box does not
+      counted.transmittance = occlusion_->transmittance(*counted.rect);
+      if (counted.transmittance < hidden_transmittance) return std::nullopt;
     }
-    const float needed = unoccluded_count(view_, coverage_ ? &*coverage_ : nullptr, c, mesh, transform) * share;
+    counted.needed = unoccluded_count(view_, coverage_ ? &*coverage_ : nullptr, c, mesh, transform) *
+                     visible_share(counted.transmittance, view_.full_count_transmittance);
+    return counted;
+  }
+
+  // The points a mostly hidden instance needs counted part by part, each by its own rectangle's
+  // transmittance; infinity when a part needs more than its list holds.
+  float needed_by_parts(const std::vector<Candidate>& parts, const SampledMesh& mesh, const glm::mat4& transform) const {
+    float total = 0.0f;
+    for (const Candidate& part : parts) {
+      const std::optional<Counted> counted = count(part, mesh, transform);
+      if (!counted) continue;
+      if (counted->needed > static_cast<float>(part.part->samples)) return INFINITY;
+      total += counted->needed;
+    }
+    return total;
+  }
+
+  // An instance's parts in view, front to back.
+  std::vector<Candidate> sorted_parts(const Candidate& whole, const SampledMesh& mesh, const glm::mat4& transform) const {
+    std::vector<Candidate> parts;
+    add_parts(whole, mesh, transform, parts);
+    std::sort(parts.begin(), parts.end(), before);
+    return parts;
+  }
+
+  // Counts one instance or part, chooses points or polygons, and covers what it hides. A part's
+  // count is scaled by `thinning` (in the band, over its instance's polygons).
+  void add(const Candidate& c, float thinning = 1.0f) {
+    const SampledMesh& mesh = meshes_[tables_[c.table].mesh];
+    const glm::mat4& transform = tables_[c.table].transforms[c.instance];
+    const std::optional<Counted> counted = count(c, mesh, transform);
+    if (!counted) return;
+    const std::optional<CoverageGrid::Rect>& rect = counted->rect;
+    const float needed = counted->needed;
     const std::uint32_t first = c.part ? c.part->first : 0;
     const std::size_t samples = c.part ? c.part->samples : mesh.samples;
     const float ratio = needed / polygon_equivalent(view_, mesh);
     const bool as_polygons = !c.part && (ratio > band_low || needed > static_cast<float>(samples));
-    const bool as_points = (c.part || ratio < band_high) && samples > 0;
-    if (!c.part && !as_polygons && rect && occlusion_->cells_in(*rect) > pixels_to_split && !mesh.parts.empty() &&
-        needed >= static_cast<float>(mesh.parts.size())) {
+    const bool large = !c.part && rect && occlusion_->cells_in(*rect) > pixels_to_split && !mesh.parts.empty();
+    if (large && !as_polygons && needed >= static_cast<float>(mesh.parts.size())) {
       // Left whole in case it needed polygons, it needs points after all now that so much of it
       // is hidden: counted by parts, front to back, so that its points go where it can be seen.
-      std::vector<Candidate> parts;
-      add_parts(c, mesh, transform, parts);
-      std::sort(parts.begin(), parts.end(), before);
-      for (const Candidate& part : parts) add(part);
+      for (const Candidate& part : sorted_parts(c, mesh, transform)) add(part);
       return;
     }
-    const float drawn = as_polygons ? needed * std::clamp((band_high - ratio) / (band_high - band_low), 0.0f, 1.0f) : needed;
+    if (large && as_polygons && counts_follow_visible_share() && ratio * counted->transmittance < band_high) {
+      // Mostly hidden, where counts follow the visible share (a shadow map's view): counted by
+      // parts, it may need fewer points than its polygons cost; the band as for whole instances.
+      // (In the frame a part keeps its full count until nearly hidden, and the polygons of the
+      // parts that show cost less.)
+      const std::vector<Candidate> parts = sorted_parts(c, mesh, transform);
+      const float parts_ratio = needed_by_parts(parts, mesh, transform) / polygon_equivalent(view_, mesh);
+      if (parts_ratio < band_high) {
+        for (const Candidate& part : parts) add(part, band_thinning(parts_ratio));
+        if (parts_ratio > band_low) add_polygons(c, mesh, transform, *rect);
+        return;
+      }
+    }
+    const float drawn = (as_polygons ? band_thinning(ratio) : 1.0f) * thinning * needed;
     // Rounded up or down at the candidate's own fixed threshold: unbiased over many small
     // instances, and steady from frame to frame.
     const auto count = static_cast<std::uint32_t>(std::min(std::floor(drawn + rounding(tables_[c.table], c, mesh)),
                                                            static_cast<float>(samples)));
+    const bool as_points = (c.part || ratio < band_high) && samples > 0;
     if (as_points && count > 0) {
       frame_.points.push_back({c.table, c.instance, count, first});
       frame_.point_count += count;
     }
     if (as_polygons) {
-      frame_.polygons[c.table].push_back(c.instance);
-      frame_.triangle_count += mesh.triangles;
+      add_polygons(c, mesh, transform, rect);
+    } else if (rect) {
+      cover(*occlusion_, mesh, first, transform, *rect, as_points ? count : 0);
     }
-    if (rect) cover(*occlusion_, mesh, first, transform, *rect, as_polygons ? mesh.samples : (as_points ? count : 0));
+  }
+
+  bool counts_follow_visible_share() const { return view_.full_count_transmittance >= 1.0f; }
+
+  // The share of its count an instance keeps as points at `ratio` of its polygons' cost: all below
+  // the band, none above, thinning out over its polygons in between.
+  static float band_thinning(float ratio) { return std::clamp((band_high - ratio) / (band_high - band_low), 0.0f, 1.0f); }
+
+  // Draws the instance as polygons, those of its parts that nearer objects leave to be seen, and
+  // covers what they hide.
+  void add_polygons(const Candidate& c, const SampledMesh& mesh, const glm::mat4& transform, const std::optional<CoverageGrid::Rect>& rect) {
+    std::uint64_t drawn = ~std::uint64_t{0};
+    std::size_t triangles = mesh.triangles;
+    if (rect && !mesh.polygon_parts.empty()) {
+      drawn = 0;
+      triangles = 0;
+      for (std::size_t i = 0; i < mesh.polygon_parts.size(); ++i) {
+        const PolygonPart& part = mesh.polygon_parts[i];
+        const std::optional<CoverageGrid::Rect> part_rect = occlusion_->project(part.center, part.half_size, transform);
+        if (part_rect && (!part_rect->on_screen() || occlusion_->transmittance(*part_rect) < hidden_transmittance)) continue;
+        drawn |= std::uint64_t{1} << i;
+        triangles += part.index_count / 3;
+      }
+      if (drawn == 0) return;
+    }
+    frame_.polygons[c.table].push_back(c.instance);
+    frame_.polygon_parts[c.table].push_back(drawn);
+    frame_.triangle_count += triangles;
+    if (rect) cover_polygons(*occlusion_, mesh, transform, *rect);
   }
 
   const SamplerView& view_;

@@ -23,6 +23,8 @@ struct SampledMesh {
   // Large near instances are counted part by part (none: always whole).
   std::vector<MeshPart> parts;
   glm::mat3 normal_moments{0.0f};  // of its samples (point_count.hpp; zero: facing every way)
+  // Its triangles' parts when drawn as polygons, at most 64 (none: always drawn whole).
+  std::vector<PolygonPart> polygon_parts;
 };
 
 // The view: what to cull against, the eye, and the density.
@@ -67,8 +69,10 @@ struct PointDraw {
 
 struct SampledFrame {
   std::vector<PointDraw> points;  // an instance counted by parts has one per part
-  // Per table, the instances drawn as polygons.
+  // Per table, the instances drawn as polygons, and for each the polygon parts of its mesh drawn,
+  // a bit each (the others are hidden; all ones for a mesh without parts).
   std::vector<std::vector<std::uint32_t>> polygons;
+  std::vector<std::vector<std::uint64_t>> polygon_parts;
   std::size_t point_count = 0;
   std::size_t triangle_count = 0;
 };
