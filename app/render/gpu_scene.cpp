@@ -98,7 +98,7 @@ void GpuScene::update(std::size_t group, const pointgen::InstanceTable& table, c
   if (parts.size() == n && n > 0 && !mesh_parts.empty()) {
     // After the table: the instances with every part drawn whole, then each part's.
     const std::uint64_t every_part = mesh_parts.size() >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << mesh_parts.size()) - 1;
-    const auto whole = [&](std::uint64_t bits) { return (bits & every_part) == every_part; };
+    const auto all_parts = [&](std::uint64_t bits) { return (bits & every_part) == every_part; };
     const auto add_those = [&](auto chosen) {
       Range range{static_cast<GLuint>(instances.size()), 0};
       for (std::size_t i = 0; i < n; ++i) {
@@ -107,9 +107,9 @@ void GpuScene::update(std::size_t group, const pointgen::InstanceTable& table, c
       range.count = static_cast<GLsizei>(instances.size() - range.first);
       return range;
     };
-    g.whole = add_those(whole);
+    g.whole = add_those(all_parts);
     for (std::size_t p = 0; p < mesh_parts.size(); ++p) {
-      g.part_instances.push_back(add_those([&](std::uint64_t bits) { return !whole(bits) && (bits >> p & 1u); }));
+      g.part_instances.push_back(add_those([&](std::uint64_t bits) { return !all_parts(bits) && (bits >> p & 1u); }));
     }
   }
   reserve(g, instances.size());
