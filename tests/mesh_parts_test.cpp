@@ -146,6 +146,20 @@ std::vector<glm::vec3> grid_points(float x0, float x1, float h, int n) {
   return points;
 }
 
+// A screen over x in [-1.6, 0], y in [-1.6, 1.6] at z = 0 (its frame): a grid of n x n samples,
+// drawn as points.
+SampledMesh left_screen(int n, float area) {
+  SampledMesh screen;
+  screen.sample_positions = grid_points(-1.6f, 0.0f, 1.6f, n);
+  screen.area = area;
+  screen.samples = 500000;
+  screen.triangles = 1000000;
+  screen.center = {-0.8f, 0.0f, 0.0f};
+  screen.half_size = {0.8f, 1.6f, 0.0f};
+  screen.radius = glm::length(screen.half_size);
+  return screen;
+}
+
 TEST(ViewSampler, AnInstanceLeftWholeForPolygonsIsCountedByPartsOnceItsHiddenShareMakesItPoints) {
   SamplerView view;
   view.views = {glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f)};
@@ -156,14 +170,8 @@ TEST(ViewSampler, AnInstanceLeftWholeForPolygonsIsCountedByPartsOnceItsHiddenSha
   // left whole. A screen 10 m away hides the left half of them (x < 0 in their frame).
   SampledMesh plates = two_plates();
   plates.triangles = 3000;
-  SampledMesh screen;
-  screen.sample_positions = grid_points(-1.6f, 0.0f, 1.6f, 48);  // 1.7 pixels apart or less: 2-pixel splats cover it
-  screen.area = 400.0f;  // enough points for all of the grid
-  screen.samples = 500000;
-  screen.triangles = 1000000;
-  screen.center = {-0.8f, 0.0f, 0.0f};
-  screen.half_size = {0.8f, 1.6f, 0.0f};
-  screen.radius = glm::length(screen.half_size);
+  // 1.7 pixels apart or less: 2-pixel splats cover it; its area asks for all of its grid.
+  const SampledMesh screen = left_screen(48, 400.0f);
   std::vector<InstanceTable> tables(2);
   tables[0].add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -20.0f}), glm::vec3(1.0f), 7);
   tables[1].mesh = 1;
@@ -191,14 +199,9 @@ TEST(ViewSampler, AnInstanceDrawnAsPolygonsDrawsThePartsThatNearerObjectsLeaveTo
   SampledMesh plates = two_plates();
   plates.triangles = 3000;
   plates.polygon_parts = {{0, 4500, {-1.0f, 0.0f, 0.0f}, {1.0f, 2.0f, 1.0f}}, {4500, 4500, {1.0f, 0.0f, 0.0f}, {1.0f, 2.0f, 1.0f}}};
-  SampledMesh screen;
-  screen.sample_positions = grid_points(-1.6f, 0.0f, 1.6f, 96);  // 1.4 pixels apart or less: 2-pixel splats cover it
-  screen.area = 100.0f;  // points: 2 * 256^2 * 100 / 6^2 = 364,000, less than its list and its polygons
-  screen.samples = 500000;
-  screen.triangles = 1000000;
-  screen.center = {-0.8f, 0.0f, 0.0f};
-  screen.half_size = {0.8f, 1.6f, 0.0f};
-  screen.radius = glm::length(screen.half_size);
+  // 1.4 pixels apart or less: 2-pixel splats cover it. Points: 2 * 256^2 * 100 * 0.5 / 6^2 =
+  // 182,000, fewer than its list and its polygons cost.
+  const SampledMesh screen = left_screen(96, 100.0f);
   std::vector<InstanceTable> tables(2);
   tables[0].add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -12.0f}), glm::vec3(1.0f), 7);
   tables[1].mesh = 1;
