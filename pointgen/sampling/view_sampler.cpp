@@ -407,12 +407,13 @@ class ViewSampling {
   // the band, none above, thinning out over its polygons in between.
   static float band_thinning(float ratio) { return std::clamp((band_high - ratio) / (band_high - band_low), 0.0f, 1.0f); }
 
-  // Draws the instance as polygons, those of its parts that nearer objects leave to be seen, and
-  // covers what they hide.
+  // Draws the instance as polygons, and covers what they hide. A large one (over pixels_to_split)
+  // draws those of its parts that nearer objects leave to be seen; for a small one the parts'
+  // tests and draw calls cost more than the triangles they could skip.
   void add_polygons(const Candidate& c, const SampledMesh& mesh, const glm::mat4& transform, const std::optional<CoverageGrid::Rect>& rect) {
     std::uint64_t drawn = ~std::uint64_t{0};
     std::size_t triangles = mesh.triangles;
-    if (rect && !mesh.polygon_parts.empty()) {
+    if (rect && !mesh.polygon_parts.empty() && occlusion_->cells_in(*rect) > pixels_to_split) {
       drawn = 0;
       triangles = 0;
       for (std::size_t i = 0; i < mesh.polygon_parts.size(); ++i) {
