@@ -160,6 +160,15 @@ SampledMesh left_screen(int n, float area) {
   return screen;
 }
 
+// Table 0: the plates (mesh 0) `plates_at` metres ahead; table 1: the screen (mesh 1) `screen_at`.
+std::vector<InstanceTable> plates_and_screen(float plates_at, float screen_at) {
+  std::vector<InstanceTable> tables(2);
+  tables[0].add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -plates_at}), glm::vec3(1.0f), 7);
+  tables[1].mesh = 1;
+  tables[1].add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -screen_at}), glm::vec3(1.0f), 8);
+  return tables;
+}
+
 TEST(ViewSampler, AnInstanceLeftWholeForPolygonsIsCountedByPartsOnceItsHiddenShareMakesItPoints) {
   SamplerView view;
   view.views = {glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f)};
@@ -172,10 +181,7 @@ TEST(ViewSampler, AnInstanceLeftWholeForPolygonsIsCountedByPartsOnceItsHiddenSha
   plates.triangles = 3000;
   // 1.7 pixels apart or less: 2-pixel splats cover it; its area asks for all of its grid.
   const SampledMesh screen = left_screen(48, 400.0f);
-  std::vector<InstanceTable> tables(2);
-  tables[0].add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -20.0f}), glm::vec3(1.0f), 7);
-  tables[1].mesh = 1;
-  tables[1].add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -10.0f}), glm::vec3(1.0f), 8);
+  std::vector<InstanceTable> tables = plates_and_screen(20.0f, 10.0f);
   const SampledFrame f = sample_view(view, tables, {plates, screen});
   std::size_t left = 0, right = 0;
   for (const PointDraw& d : f.points) {
@@ -202,10 +208,7 @@ TEST(ViewSampler, AnInstanceDrawnAsPolygonsDrawsThePartsThatNearerObjectsLeaveTo
   // 1.4 pixels apart or less: 2-pixel splats cover it. Points: 2 * 256^2 * 100 * 0.5 / 6^2 =
   // 182,000, fewer than its list and its polygons cost.
   const SampledMesh screen = left_screen(96, 100.0f);
-  std::vector<InstanceTable> tables(2);
-  tables[0].add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -12.0f}), glm::vec3(1.0f), 7);
-  tables[1].mesh = 1;
-  tables[1].add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -6.0f}), glm::vec3(1.0f), 8);
+  std::vector<InstanceTable> tables = plates_and_screen(12.0f, 6.0f);
   const SampledFrame hidden_left = sample_view(view, tables, {plates, screen});
   ASSERT_EQ(hidden_left.polygons[0], (std::vector<std::uint32_t>{0}));
   ASSERT_EQ(hidden_left.polygon_parts[0].size(), 1u);
