@@ -100,6 +100,7 @@ TEST(PointDensity, PointsPerPixelOfTheSeenSurfaceDoNotFollowDistance) {
   RenderSettings settings;
   settings.width = 480;
   settings.height = 270;
+  settings.k = 1.5f;  // low enough that every cactus is points
   settings.points = false;
   Renderer polygons(scene, settings);
   polygons.render(scene.camera, scene.lights[0]);

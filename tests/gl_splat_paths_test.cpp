@@ -232,6 +232,7 @@ TEST_F(SplatPaths, MeasuresEveryPathOnTheSamePoints) {
   RenderSettings settings;
   settings.width = width;
   settings.height = height;
+  settings.k = 1.5f;  // low enough that the spheres are points
   const std::vector<BenchRun> runs = measure_splat_paths(scene, "spheres", settings, 0, 1);
   ASSERT_EQ(runs.size(), 3u);
   for (const BenchRun& run : runs) {

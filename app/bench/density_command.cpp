@@ -32,9 +32,11 @@ struct Plan {
   bool temporal_reference;  // the moving camera's change also with every plant as polygons (two slow frames)
 };
 
+// k at half, at and at twice the default.
 Plan plan_for(bool quick) {
-  if (quick) return {{1.5}, {2}, {300, 3000}, 1, 3, 1, false};
-  return {{0.75, 1.5, 3.0}, {1, 2}, {1000, 10000, 100000}, 1, 5, 1, true};  // under 10 minutes here
+  const double k = RenderSettings{}.k;
+  if (quick) return {{k}, {2}, {300, 3000}, 1, 3, 1, false};
+  return {{0.5 * k, k, 2.0 * k}, {1, 2}, {1000, 10000, 100000}, 1, 5, 1, true};  // under 10 minutes here
 }
 
 // A flat stand of trees and bushes, `count` plants on 250 x 250 m, seen from its edge.
@@ -126,7 +128,7 @@ class DensityBench {
                        {"frame_ms", timing.frame_ms}, {"sample_ms", timing.sample_ms}, {"frame_pass_ms", timing.frame_pass_ms},
                        {"sampler_mpts", timing.sample_ms > 0 ? 1e-3 * static_cast<double>(points.stats().points) / timing.sample_ms : 0.0}};
         results_.runs.push_back(run);
-        if (k == 1.5 && splat == 2) save_images(renders);
+        if (k == base_.k && splat == base_.splat_size) save_images(renders);
         progress.step();
       }
     }
@@ -187,12 +189,14 @@ class DensityBench {
   }
 
   void finish(const std::string& renderer_name) {
+    std::ostringstream defaults;
+    defaults << "k = " << base_.k << ", " << base_.splat_size << "-pixel splats";
     results_.machine = machine_info(renderer_name, o_.run.backend);
     write_results(out_, results_);
     draw_charts(out_, "density_charts.py");
     write_report(out_, "ecoview density",
                  "<h2>Charts</h2><img src=\"chart_quality.png\"><img src=\"chart_scale.png\"><img src=\"chart_thirds.png\">\n"
-                 "<h2>Images (k = 1.5, 2-pixel splats: the defaults)</h2><table><tr><th>polygons</th><th>points</th><th>difference × 4</th><th>measured pixels (holes red)</th></tr>"
+                 "<h2>Images (" + defaults.str() + ": the defaults)</h2><table><tr><th>polygons</th><th>points</th><th>difference × 4</th><th>measured pixels (holes red)</th></tr>"
                  "<tr><td><img src=\"images/polygons.png\"></td><td><img src=\"images/points.png\"></td>"
                  "<td><img src=\"images/difference.png\"></td><td><img src=\"images/coverage.png\"></td></tr></table>\n",
                  results_);

@@ -40,8 +40,8 @@ struct RenderOptions {
   int shadow_size = 2048;
   std::string method = "uniform";
   std::string geometry = "points";
-  double k = 1.5;
-  int splat = 2;
+  double k = RenderSettings{}.k;
+  int splat = RenderSettings{}.splat_size;
 };
 void add_render_options(CLI::App& command, RenderOptions& options);
 // Validated settings; throws InputError naming the option.

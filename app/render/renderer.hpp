@@ -31,7 +31,9 @@ struct RenderSettings {
   int shadow_size = 2048;
   ShadowMethod method = ShadowMethod::uniform;
   bool points = true;       // far plants, people and animals as point splats; false: all polygons
-  float k = 1.5f;           // points per pixel of projected surface (docs/point_density.md)
+  // Points per pixel of projected surface (docs/point_density.md); 2.5 keeps the holes of 2-pixel
+  // splats under 1 % (docs/benchmarks.md, "`ecoview density`").
+  float k = 2.5f;
   int splat_size = 2;       // pixels per side of one point's splat in the frame
   int shadow_splat_size = 2;  // texels per side in the shadow map
   float points_per_triangle = 4.0f;  // a point costs 1/this of a triangle (the point-or-polygon choice)

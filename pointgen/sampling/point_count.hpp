@@ -10,7 +10,7 @@ namespace pointgen {
 // (image height / 2) / tan(vertical field of view / 2), and the density k in points per pixel.
 struct PointDensity {
   float pixels_per_radian = 600.0f;
-  float k = 1.5f;
+  float k = 2.5f;  // the renderer's default (app/render/renderer.hpp)
 };
 
 // Expected number of points for k points per pixel of projected surface, for a two-sided surface
