@@ -35,7 +35,9 @@ struct RenderSettings {
   // splats under 1 % (docs/benchmarks.md, "`ecoview density`").
   float k = 2.5f;
   int splat_size = 2;       // pixels per side of one point's splat in the frame
-  int shadow_splat_size = 2;  // texels per side in the shadow map
+  // Texels per side in the shadow map. One: with k points per texel a splat of 2 x 2 closes the
+  // gaps between leaves, and the plants' shadows grow (docs/benchmarks.md, "`ecoview bench`").
+  int shadow_splat_size = 1;
   float points_per_triangle = 4.0f;  // a point costs 1/this of a triangle (the point-or-polygon choice)
   bool point_meshes_only = false;    // draw nothing else (for the density figures)
   // For the density figures: draw the instances the sampler makes points as polygons instead
