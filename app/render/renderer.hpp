@@ -31,9 +31,7 @@ struct RenderSettings {
   int shadow_size = 2048;
   ShadowMethod method = ShadowMethod::uniform;
   bool points = true;       // far plants, people and animals as point splats; false: all polygons
-  // Points per pixel of projected surface (docs/point_density.md); 2.5 keeps the holes of 2-pixel
-  // splats under 1 % (docs/benchmarks.md, "`ecoview density`").
-  float k = 2.5f;
+  float k = pointgen::PointDensity{}.k;  // points per pixel of projected surface (docs/point_density.md)
   int splat_size = 2;       // pixels per side of one point's splat in the frame
   // Texels per side in the shadow map. One: with k points per texel a splat of 2 x 2 closes the
   // gaps between leaves, and the plants' shadows grow (docs/benchmarks.md, "`ecoview bench`").
