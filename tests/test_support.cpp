@@ -48,7 +48,7 @@ std::vector<std::string> files_in(const std::filesystem::path& folder) {
 
 CommandResult run_ecoview(const std::vector<std::string>& args) {
   std::string command = "ecoview";
-  for (const std::string& a : args) command += " " + shell_quote(a);
+  for (const std::string& a : args) command.append(" ").append(shell_quote(a));
   return run_shell(command);
 }
 

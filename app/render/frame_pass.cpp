@@ -100,7 +100,7 @@ void FramePass::set_light(const shadow::Light& light, const std::optional<Shadow
     gl::set_uniform(program, "shadow_view_count", static_cast<int>(setup.views.size()));
     for (std::size_t i = 0; i < setup.views.size(); ++i) {
       const shadow::ShadowView& view = setup.views[i];
-      const std::string index = "[" + std::to_string(i) + "]";
+      const std::string index = std::string("[").append(std::to_string(i)).append("]");
       gl::set_uniform(program, ("shadow_matrices" + index).c_str(), view.view_projection());
       gl::set_uniform(program, ("shadow_paraboloids" + index).c_str(), view.paraboloid_parameters());
     }
