@@ -64,8 +64,8 @@ float aliasing_factor(const ShadowSetup& setup, const Light& light, int map_size
   return 0.5f * (std::sqrt(frobenius + 2.0f * d) + std::sqrt(std::max(frobenius - 2.0f * d, 0.0f)));
 }
 
-float predicted_alias_p95(const ShadowSetup& setup, const Light& light, int map_size, const FrameView& frame,
-                          const std::vector<SurfacePoint>& surface) {
+float predicted_aliasing(const ShadowSetup& setup, const Light& light, int map_size, const FrameView& frame,
+                         const std::vector<SurfacePoint>& surface, float fraction) {
   if (setup.views.empty()) return 0.0f;
   std::vector<float> factors;
   for (const SurfacePoint& s : surface) {
@@ -73,14 +73,14 @@ float predicted_alias_p95(const ShadowSetup& setup, const Light& light, int map_
       factors.push_back(aliasing_factor(setup, light, map_size, frame, s.position, s.normal));
     }
   }
-  return percentile_95(std::move(factors));
+  return percentile(std::move(factors), fraction);
 }
 
-float percentile_95(std::vector<float> values) {
+float percentile(std::vector<float> values, float fraction) {
   if (values.empty()) return 0.0f;
-  const auto p95 = values.begin() + static_cast<std::ptrdiff_t>(0.95 * static_cast<double>(values.size() - 1));
-  std::nth_element(values.begin(), p95, values.end());
-  return *p95;
+  const auto at = values.begin() + static_cast<std::ptrdiff_t>(static_cast<double>(fraction) * static_cast<double>(values.size() - 1));
+  std::nth_element(values.begin(), at, values.end());
+  return *at;
 }
 
 }  // namespace shadow

@@ -5,8 +5,8 @@
 #include <vector>
 
 // The aliasing factor of DESIGN.md on the CPU, from a setup's matrices alone: what the frame's
-// shader computes per pixel (shaders/lighting.glsl), for predicting a method's alias_p95 before
-// it renders (`--method auto`).
+// shader computes per pixel (shaders/lighting.glsl), for predicting a method's aliasing before it
+// renders (`--method auto`).
 namespace shadow {
 
 // The view of `setup` whose map holds p's shadow, as the frame's shader picks it.
@@ -28,11 +28,12 @@ struct SurfacePoint {
   glm::vec3 normal;  // turned to the eye
 };
 
-// The 95th percentile of some values (0 for none): alias_p95's statistic.
-float percentile_95(std::vector<float> values);
+// The value `fraction` of the way up some values in rank (0 for none): 0.95 for alias_p95.
+float percentile(std::vector<float> values, float fraction);
 
-// alias_p95 predicted over surface points the light faces (0 when it faces none).
-float predicted_alias_p95(const ShadowSetup& setup, const Light& light, int map_size, const FrameView& frame,
-                          const std::vector<SurfacePoint>& surface);
+// A percentile (`fraction`) of the aliasing factor over surface points the light faces, predicted
+// from the setup's matrices (0 when the light faces none).
+float predicted_aliasing(const ShadowSetup& setup, const Light& light, int map_size, const FrameView& frame,
+                         const std::vector<SurfacePoint>& surface, float fraction);
 
 }  // namespace shadow

@@ -187,7 +187,7 @@ class ShadowBench {
     const Image8 visibility = renderer.frame().read_visibility();
     const ShadowErrors e = shadow_errors(visibility, reference(renderer, view, depth), depth);
     run.figures.update({{"err", e.err}, {"err_near", e.err_near}, {"acne", e.acne}, {"leak", e.leak},
-                        {"alias_p95", alias_p95(renderer.frame().read_aliasing(), visibility)},
+                        {"alias_p95", alias_percentile(renderer.frame().read_aliasing(), visibility, 0.95f)},
                         {"points", renderer.stats().points}, {"triangles", renderer.stats().triangles},
                         {"shadow_points", renderer.stats().shadow_points}});
     run.params["shadow_setup"] = renderer.shadow_setup().description;

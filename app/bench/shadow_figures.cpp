@@ -15,12 +15,12 @@ double ratio(std::size_t a, std::size_t b) { return b ? static_cast<double>(a) /
 
 }  // namespace
 
-double alias_p95(const Image<float>& aliasing, const Image8& visibility) {
+double alias_percentile(const Image<float>& aliasing, const Image8& visibility, float fraction) {
   std::vector<float> lit;
   for (std::size_t i = 0; i < aliasing.samples.size(); ++i) {
     if (aliasing.samples[i] > 0.0f && visibility.samples[i] >= 128) lit.push_back(aliasing.samples[i]);
   }
-  return shadow::percentile_95(std::move(lit));
+  return shadow::percentile(std::move(lit), fraction);
 }
 
 ShadowErrors shadow_errors(const Image8& visibility, const Image8& reference, const Image<float>& depth) {

@@ -3,9 +3,9 @@
 
 namespace ecoview {
 
-// alias_p95 (DESIGN.md): the 95th percentile of the aliasing factor over the lit receiver pixels
-// (a surface drawn, visibility >= 0.5); 0 where there are none.
-double alias_p95(const Image<float>& aliasing, const Image8& visibility);
+// A percentile (`fraction`) of the aliasing factor over the lit receiver pixels (a surface drawn,
+// visibility >= 0.5); 0 where there are none. At 0.95, alias_p95 (DESIGN.md).
+double alias_percentile(const Image<float>& aliasing, const Image8& visibility, float fraction);
 
 // The shadow's errors against the exact reference (DESIGN.md), as fractions of the pixels that
 // show a surface (linear view depth > 0): `err` where the binary states (visibility < 0.5)

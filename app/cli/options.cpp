@@ -63,8 +63,8 @@ void add_render_options(CLI::App& command, RenderOptions& o) {
                                          "take point and spot lights, directional ones get the uniform map), volumes (exact shadows of "
                                          "polygons by z-fail stencil shadow volumes; point splats cast none), reference (exact: rays to "
                                          "the light against every triangle, plants as meshes, with Embree), auto (each frame the method "
-                                         "whose alias_p95, predicted from its matrices on the last frame's surface, "
-                                         "is least) or none")
+                                         "whose median aliasing factor, predicted from its matrices on the last "
+                                         "frame's surface, is least) or none")
       ->capture_default_str();
   command.add_option("--geometry", o.geometry, "points: far plants, people and animals as view-adaptive point "
                                                "splats; polygons: everything as polygons")->capture_default_str();

@@ -204,8 +204,10 @@ shadow::ShadowSetup Renderer::make_shadow_setup(ShadowMethod method, const shado
   }
 }
 
-// --method auto: each candidate's alias_p95 predicted from its matrices on the surface the last
-// frame showed; the least wins.
+// --method auto: each candidate's median aliasing factor predicted from its matrices on the
+// surface the last frame showed; the least wins. The median, not alias_p95: `err` counts pixels,
+// and where every method undersamples the typical pixel tells more of it than the worst 5 %
+// (docs/benchmarks.md, "What auto chooses by").
 shadow::ShadowSetup Renderer::best_predicted_setup(const shadow::Camera& camera, const shadow::Light& light) const {
   const std::vector<ShadowMethod> candidates =
       light.type == shadow::LightType::directional
@@ -217,7 +219,7 @@ shadow::ShadowSetup Renderer::best_predicted_setup(const shadow::Camera& camera,
   ShadowMethod chosen = candidates.front();
   for (ShadowMethod method : candidates) {
     shadow::ShadowSetup setup = make_shadow_setup(method, camera, light);
-    const float predicted = shadow::predicted_alias_p95(setup, light, settings_.shadow_size, frame, last_surface_);
+    const float predicted = shadow::predicted_aliasing(setup, light, settings_.shadow_size, frame, last_surface_, 0.5f);
     if (predicted < least) {
       least = predicted;
       best = std::move(setup);
@@ -226,7 +228,7 @@ shadow::ShadowSetup Renderer::best_predicted_setup(const shadow::Camera& camera,
   }
   char figure[32];
   std::snprintf(figure, sizeof figure, "%.2f", least);
-  best.description = "auto: " + shadow_method_name(chosen) + ", predicted alias_p95 " + figure + " (" + best.description + ")";
+  best.description = "auto: " + shadow_method_name(chosen) + ", predicted median aliasing " + figure + " (" + best.description + ")";
   return best;
 }
 
@@ -361,9 +363,9 @@ void Renderer::remember_last_frame() {
   nearest_visible_ = std::isfinite(nearest) ? nearest : 0.0f;
   const PixelRays rays(camera_, depth.width, depth.height);
   if (settings_.method == ShadowMethod::automatic) {
-    // auto predicts alias_p95 from about this many of the frame's pixels, whatever its size: the
-    // 95th percentile of n samples stands within about sqrt(0.05 × 0.95 / n) of its rank (0.7
-    // points of percentile at n = 1,000, 0.2 at 10,000), and aliasing's upper tail is steep.
+    // auto predicts the median aliasing from about this many of the frame's pixels, whatever its
+    // size: the median of n samples stands within about sqrt(0.25 / n) of its rank (0.5 points of
+    // percentile at n = 10,000).
     constexpr float predicting_pixels = 10000.0f;
     const int step = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<float>(depth.width * depth.height) / predicting_pixels))));
     last_surface_ = surface_points(depth, rays, step);
