@@ -28,8 +28,10 @@ struct SurfacePoint {
   glm::vec3 normal;  // turned to the eye
 };
 
-// The value `fraction` of the way up some values in rank (0 for none): 0.95 for alias_p95.
+// The value `fraction` of the way up some values in rank (0 for none).
 float percentile(std::vector<float> values, float fraction);
+// The fractions of alias_p95 (DESIGN.md) and of the median, which `--method auto` predicts.
+constexpr float p95_fraction = 0.95f, median_fraction = 0.5f;
 
 // A percentile (`fraction`) of the aliasing factor over surface points the light faces, predicted
 // from the setup's matrices (0 when the light faces none).

@@ -5,6 +5,7 @@
 #include "app/render/pixel_rays.hpp"
 #include "app/render/renderer.hpp"
 #include "app/scene/scene_file.hpp"
+#include "shadow/aliasing.hpp"
 
 #include <gtest/gtest.h>
 
@@ -35,7 +36,7 @@ TEST(AliasingFactor, IsTheUniformMapsTexelInPixelsOnAPlaneSeenFromAbove) {
   for (const auto& [x, y] : {std::pair{width / 2, height / 2}, std::pair{10, 10}, std::pair{width - 10, height - 10}}) {
     EXPECT_NEAR(aliasing.at(x, y), expected, 0.01 * expected) << "pixel " << x << ", " << y;
   }
-  EXPECT_NEAR(alias_percentile(aliasing, renderer.frame().read_visibility(), 0.95f), expected, 0.01 * expected);
+  EXPECT_NEAR(alias_percentile(aliasing, renderer.frame().read_visibility(), shadow::p95_fraction), expected, 0.01 * expected);
 }
 
 TEST(AliasingFactor, IsZeroWithoutAShadowMapAndNegativeWhereNothingIsDrawn) {
@@ -68,7 +69,7 @@ TEST(PredictedAliasing, MatchesTheFramesMedianAndAliasP95) {
     const shadow::FrameView frame{scene.camera.projection(static_cast<float>(width) / height) * scene.camera.view(),
                                   glm::vec2(width, height)};
     const std::vector<shadow::SurfacePoint> surface = surface_points(depth, PixelRays(scene.camera, width, height), 8);
-    for (float fraction : {0.5f, 0.95f}) {
+    for (float fraction : {shadow::median_fraction, shadow::p95_fraction}) {
       const float predicted = shadow::predicted_aliasing(renderer.shadow_setup(), light, 1024, frame, surface, fraction);
       const double measured = alias_percentile(renderer.frame().read_aliasing(), renderer.frame().read_visibility(), fraction);
       EXPECT_NEAR(predicted, measured, 0.15 * measured) << shadow_method_name(method) << ", percentile " << fraction;

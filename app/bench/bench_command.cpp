@@ -11,6 +11,7 @@
 #include "app/reference/exact_visibility.hpp"
 #include "app/scene/camera_path.hpp"
 #include "app/scene/scene_file.hpp"
+#include "shadow/aliasing.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -187,7 +188,7 @@ class ShadowBench {
     const Image8 visibility = renderer.frame().read_visibility();
     const ShadowErrors e = shadow_errors(visibility, reference(renderer, view, depth), depth);
     run.figures.update({{"err", e.err}, {"err_near", e.err_near}, {"acne", e.acne}, {"leak", e.leak},
-                        {"alias_p95", alias_percentile(renderer.frame().read_aliasing(), visibility, 0.95f)},
+                        {"alias_p95", alias_percentile(renderer.frame().read_aliasing(), visibility, shadow::p95_fraction)},
                         {"points", renderer.stats().points}, {"triangles", renderer.stats().triangles},
                         {"shadow_points", renderer.stats().shadow_points}});
     run.params["shadow_setup"] = renderer.shadow_setup().description;

@@ -4,7 +4,7 @@
 namespace ecoview {
 
 // A percentile (`fraction`) of the aliasing factor over the lit receiver pixels (a surface drawn,
-// visibility >= 0.5); 0 where there are none. At 0.95, alias_p95 (DESIGN.md).
+// visibility >= 0.5); 0 where there are none. At shadow::p95_fraction, alias_p95 (DESIGN.md).
 double alias_percentile(const Image<float>& aliasing, const Image8& visibility, float fraction);
 
 // The shadow's errors against the exact reference (DESIGN.md), as fractions of the pixels that

@@ -219,7 +219,7 @@ shadow::ShadowSetup Renderer::best_predicted_setup(const shadow::Camera& camera,
   ShadowMethod chosen = candidates.front();
   for (ShadowMethod method : candidates) {
     shadow::ShadowSetup setup = make_shadow_setup(method, camera, light);
-    const float predicted = shadow::predicted_aliasing(setup, light, settings_.shadow_size, frame, last_surface_, 0.5f);
+    const float predicted = shadow::predicted_aliasing(setup, light, settings_.shadow_size, frame, last_surface_, shadow::median_fraction);
     if (predicted < least) {
       least = predicted;
       best = std::move(setup);
