@@ -8,13 +8,17 @@ uniform vec3 light_direction;  // the way the light travels
 uniform float spot_cos_cone;
 uniform vec3 camera_position;
 
-uniform int shadows_enabled;
+// What the frame's shadows need is fixed when the program is built (FramePass::ShadeVariant,
+// from the defines SHADOWS, SHADOW_SELECTION, PARABOLOID_VIEWS and ALIASING): llvmpipe runs both
+// sides of a branch, so code no pixel takes would cost every pixel.
+const bool shadows_enabled = SHADOWS;
 // The views of the shadow setup (shadow::ShadowSetup), one map layer each, and how a point picks
 // its view: one map, cube faces by the major axis of (point - light), the first cascade that
 // holds it, or the paraboloid whose hemisphere holds it.
 const int SINGLE = 0, CUBE_FACES = 1, FIRST_CONTAINING = 2, HEMISPHERES = 3, SCREEN_MASK = 4;
 const float CASCADE_MARGIN_TEXELS = 2.0;  // shadow::cascade_margin_texels
-uniform int shadow_selection;
+const int shadow_selection = SHADOW_SELECTION;
+const bool paraboloid_views = PARABOLOID_VIEWS;  // whether any view is a paraboloid's
 uniform int shadow_view_count;
 // A view's world → clip matrix; for a paraboloid view (zoom, range in shadow_paraboloids, zoom 0
 // for the others) its world → light space matrix.
@@ -29,7 +33,7 @@ layout(binding = 1) uniform sampler2D light_mask;  // SCREEN_MASK (shadow volume
 #include "paraboloid.glsl"
 
 vec4 shadow_clip(int layer, vec3 p) {
-  if (shadow_paraboloids[layer].x == 0.0) return shadow_matrices[layer] * vec4(p, 1.0);
+  if (!paraboloid_views || shadow_paraboloids[layer].x == 0.0) return shadow_matrices[layer] * vec4(p, 1.0);
   return paraboloid_clip(shadow_matrices[layer], shadow_paraboloids[layer], p);
 }
 
@@ -55,7 +59,7 @@ float cell_world_size(mat4 m, vec2 cells, vec3 p) {
 // texels of 2 zoom (1 - d.z) / shadow_size radians (shadow/paraboloid_map.cpp).
 float texel_world_size(int layer, vec3 p) {
   vec2 paraboloid = shadow_paraboloids[layer];
-  if (paraboloid.x != 0.0) {
+  if (paraboloid_views && paraboloid.x != 0.0) {
     vec3 q = (shadow_matrices[layer] * vec4(p, 1.0)).xyz;
     return 2.0 * paraboloid.x * (length(q) - q.z) / shadow_size;
   }
@@ -123,7 +127,7 @@ mat2 screen_jacobian(mat4 m, vec3 p, vec3 t1, vec3 t2) {
 mat2 shadow_jacobian(int layer, vec3 p, vec3 t1, vec3 t2) {
   mat4 m = shadow_matrices[layer];
   float zoom = shadow_paraboloids[layer].x;
-  if (zoom == 0.0) return screen_jacobian(m, p, t1, t2);
+  if (!paraboloid_views || zoom == 0.0) return screen_jacobian(m, p, t1, t2);
   vec3 q = (m * vec4(p, 1.0)).xyz;
   vec3 d = normalize(q);
   vec3 s1 = mat3(m) * t1, s2 = mat3(m) * t2;
@@ -133,13 +137,13 @@ mat2 shadow_jacobian(int layer, vec3 p, vec3 t1, vec3 t2) {
   return screen_jacobian(direction_to_clip, d, s1, s2);
 }
 
-uniform int aliasing_wanted;
+const bool aliasing_wanted = ALIASING;
 
 // The aliasing factor (DESIGN.md): the size in screen pixels of one shadow-map texel projected
 // onto the surface at p with normal n; the largest singular value of pixels per texel along the
 // surface. 0 without a shadow map (none, volumes), or when not wanted.
 float aliasing_factor(vec3 p, vec3 n) {
-  if (shadows_enabled == 0 || aliasing_wanted == 0 || shadow_selection == SCREEN_MASK) return 0.0;
+  if (!shadows_enabled || !aliasing_wanted || shadow_selection == SCREEN_MASK) return 0.0;
   vec3 t1 = normalize(abs(n.y) < 0.9 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
   vec3 t2 = cross(n, t1);
   mat2 texels = 0.5 * shadow_size * shadow_jacobian(shadow_view(p), p, t1, t2);
@@ -175,7 +179,7 @@ Shading shade(vec3 position, vec3 n, vec3 albedo) {
     falloff = smoothstep(spot_cos_cone, mix(spot_cos_cone, 1.0, 0.25), cos_angle);
   }
   float visibility = n_dot_l > 0.0 ? cone : 0.0;
-  if (visibility > 0.0 && shadows_enabled != 0) visibility *= shadow_test(position, n, n_dot_l);
+  if (shadows_enabled && visibility > 0.0) visibility *= shadow_test(position, n, n_dot_l);
 
   vec3 view_dir = normalize(camera_position - position);
   vec3 half_dir = normalize(to_light + view_dir);

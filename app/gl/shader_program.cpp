@@ -25,8 +25,15 @@ std::string source_of(const std::string& file, int depth = 0) {
   return out;
 }
 
-Shader compile(GLenum type, const std::string& file) {
-  const std::string source = source_of(file);
+// The source with `defines` after its first line, which is its `#version`.
+std::string with_defines(const std::string& source, const std::string& defines) {
+  const std::size_t line_end = source.find('\n');
+  if (defines.empty() || line_end == std::string::npos) return source;
+  return source.substr(0, line_end + 1) + defines + source.substr(line_end + 1);
+}
+
+Shader compile(GLenum type, const std::string& file, const std::string& defines) {
+  const std::string source = with_defines(source_of(file), defines);
   Shader shader(type);
   const char* text = source.data();
   const auto length = static_cast<GLint>(source.size());
@@ -56,11 +63,11 @@ GLenum stage_of(const std::string& file) {
 
 }  // namespace
 
-Program build_program(std::initializer_list<std::string> files) {
+Program build_program(std::initializer_list<std::string> files, const std::string& defines) {
   std::vector<Shader> shaders;
   std::string names;
   for (const std::string& file : files) {
-    shaders.push_back(compile(stage_of(file), file));
+    shaders.push_back(compile(stage_of(file), file, defines));
     names += (names.empty() ? "" : " + ") + file;
   }
   Program program;

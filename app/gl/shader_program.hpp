@@ -9,8 +9,9 @@
 namespace ecoview::gl {
 
 // Compiles and links the embedded shaders at shaders/<file>, each for the stage its extension
-// names: .vert, .tesc, .tese, .geom, .frag, or .comp alone.
-Program build_program(std::initializer_list<std::string> files);
+// names: .vert, .tesc, .tese, .geom, .frag, or .comp alone. `defines` (lines of `#define NAME
+// VALUE`) go into each file after its `#version` line.
+Program build_program(std::initializer_list<std::string> files, const std::string& defines = {});
 
 // Uniform setters by name; a name the linker dropped is ignored, as GL does.
 void set_uniform(const Program& program, const char* name, const glm::mat4& value);

@@ -35,8 +35,7 @@ FramePass::FramePass(int width, int height, bool aliasing)
       height_(height),
       aliasing_wanted_(aliasing),
       surface_program_(gl::build_program({"frame.vert", "surface.frag"})),
-      point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})),
-      shade_program_(gl::build_program({"fullscreen.vert", "shade.frag"})) {
+      point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})) {
   glTextureStorage2D(normals_.name(), 1, GL_RGBA32F, width, height);
   glTextureStorage2D(albedos_.name(), 1, GL_RGBA32F, width, height);
   glTextureStorage2D(depth_.name(), 1, GL_R32F, width, height);
@@ -85,18 +84,35 @@ void FramePass::add_points(const PointSplat& points, const shadow::Camera& camer
   draw_fullscreen();
 }
 
-void FramePass::set_light(const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const {
-  const gl::Program& program = shade_program_;
+FramePass::ShadeVariant FramePass::shade_variant(const std::optional<ShadowLookup>& shadow_map) const {
+  ShadeVariant variant;
+  variant.aliasing = aliasing_wanted_;
+  if (!shadow_map) return variant;
+  variant.shadows = true;
+  variant.selection = static_cast<int>(shadow_map->setup.selection);
+  for (const shadow::ShadowView& view : shadow_map->setup.views) variant.paraboloid |= view.paraboloid.has_value();
+  return variant;
+}
+
+const gl::Program& FramePass::shade_program(const ShadeVariant& variant) const {
+  auto found = shade_programs_.find(variant);
+  if (found != shade_programs_.end()) return found->second;
+  const auto boolean = [](bool b) { return b ? std::string("true") : std::string("false"); };
+  const std::string defines = "#define SHADOWS " + boolean(variant.shadows) + "\n#define SHADOW_SELECTION " +
+                              std::to_string(variant.selection) + "\n#define PARABOLOID_VIEWS " +
+                              boolean(variant.paraboloid) + "\n#define ALIASING " + boolean(variant.aliasing) + "\n";
+  return shade_programs_.emplace(variant, gl::build_program({"fullscreen.vert", "shade.frag"}, defines)).first->second;
+}
+
+void FramePass::set_light(const gl::Program& program, const shadow::Light& light,
+                          const std::optional<ShadowLookup>& shadow_map) const {
   gl::set_uniform(program, "frame_size", glm::vec2(width_, height_));
   gl::set_uniform(program, "light_type", static_cast<int>(light.type));
   gl::set_uniform(program, "light_position", light.position);
   gl::set_uniform(program, "light_direction", glm::normalize(light.direction));
   gl::set_uniform(program, "spot_cos_cone", std::cos(glm::radians(light.cone_deg)));
-  gl::set_uniform(program, "shadows_enabled", shadow_map ? 1 : 0);
-  gl::set_uniform(program, "aliasing_wanted", aliasing_wanted_ ? 1 : 0);
   if (shadow_map) {
     const shadow::ShadowSetup& setup = shadow_map->setup;
-    gl::set_uniform(program, "shadow_selection", static_cast<int>(setup.selection));
     gl::set_uniform(program, "shadow_view_count", static_cast<int>(setup.views.size()));
     for (std::size_t i = 0; i < setup.views.size(); ++i) {
       const shadow::ShadowView& view = setup.views[i];
@@ -122,12 +138,13 @@ void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,
   glClearNamedFramebufferfv(fb, GL_COLOR, 2, no_surface);
   glDisable(GL_DEPTH_TEST);
 
-  glUseProgram(shade_program_.name());
-  set_camera(shade_program_, camera);
+  const gl::Program& program = shade_program(shade_variant(shadow_map));
+  glUseProgram(program.name());
+  set_camera(program, camera);
   const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
-  gl::set_uniform(shade_program_, "camera_forward", camera.forward());
-  gl::set_uniform(shade_program_, "pixel_to_world", glm::inverse(camera.projection(aspect) * camera.view()));
-  set_light(light, shadow_map);
+  gl::set_uniform(program, "camera_forward", camera.forward());
+  gl::set_uniform(program, "pixel_to_world", glm::inverse(camera.projection(aspect) * camera.view()));
+  set_light(program, light, shadow_map);
   glBindTextureUnit(2, normals_.name());
   glBindTextureUnit(3, albedos_.name());
   glBindTextureUnit(4, depth_.name());

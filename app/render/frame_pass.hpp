@@ -7,6 +7,7 @@
 #include "shadow/light.hpp"
 #include "shadow/shadow_setup.hpp"
 
+#include <map>
 #include <optional>
 
 namespace ecoview {
@@ -55,8 +56,21 @@ class FramePass {
  private:
   template <class Sample>
   Image<Sample> read(const gl::Framebuffer& framebuffer, GLenum attachment, int channels, GLenum format, GLenum type) const;
+  // What the shading program is built for: whether there are shadows, how a point picks its view
+  // (shadow::ViewSelection), whether any view is a paraboloid's, and whether to fill the aliasing
+  // target (shaders/lighting.glsl).
+  struct ShadeVariant {
+    bool shadows = false;
+    int selection = 0;
+    bool paraboloid = false;
+    bool aliasing = false;
+    auto operator<=>(const ShadeVariant&) const = default;
+  };
+  ShadeVariant shade_variant(const std::optional<ShadowLookup>& shadow_map) const;
+  // Built when a frame first needs it, then kept.
+  const gl::Program& shade_program(const ShadeVariant& variant) const;
   void set_camera(const gl::Program& program, const shadow::Camera& camera) const;
-  void set_light(const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;  // of shade_program_
+  void set_light(const gl::Program& program, const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;
   void draw_fullscreen() const;  // one triangle over the viewport
 
   int width_, height_;
@@ -74,7 +88,7 @@ class FramePass {
   gl::Framebuffer lit_;
   gl::Program surface_program_;
   gl::Program point_program_;
-  gl::Program shade_program_;
+  mutable std::map<ShadeVariant, gl::Program> shade_programs_;
   gl::VertexArray empty_vertex_array_;  // for the fullscreen triangle, which has no attributes
 };
 
