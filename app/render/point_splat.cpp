@@ -14,8 +14,9 @@ struct GpuInstance {
 };
 
 constexpr GLuint draws_binding = 1, instances_binding = 2, positions_binding = 3, normals_binding = 4,
-                 colors_binding = 5, depths_binding = 6, winners_binding = 7;
+                 colors_binding = 5, depths_binding = 6, winners_binding = 7, block_draws_binding = 8;
 constexpr GLuint threads_per_group = 64, points_per_thread = 16;  // point_walk.glsl
+constexpr std::uint64_t points_per_block = 16;                    // point_common.glsl
 constexpr GLuint max_groups_per_dispatch = 65535;                   // GL's guaranteed minimum
 // Point indices are 32-bit in the shaders (and the last one marks "no point").
 constexpr std::uint64_t max_points = 0xFFFFFFFEu;
@@ -58,19 +59,23 @@ void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std
   std::vector<GpuInstance> instances;
   gpu_draws.reserve(draws.size());
   instances.reserve(draws.size());
+  std::vector<std::uint32_t> block_draws;  // per block of points, the draw holding its first point
   std::uint64_t first_point = 0;
   for (const pointgen::PointDraw& d : draws) {
     const pointgen::InstanceTable& table = tables[d.table];
     if (first_point + d.count > max_points) {
       throw RuntimeFailure("a frame needs more than " + std::to_string(max_points) + " points; lower --k or the frame size");
     }
+    const auto draw = static_cast<std::uint32_t>(gpu_draws.size());
     gpu_draws.emplace_back(static_cast<std::uint32_t>(first_point), d.count, samples.first_sample(table.mesh) + d.first,
                            static_cast<std::uint32_t>(instances.size()));
     instances.push_back({table.transforms[d.instance], glm::vec4(table.tints[d.instance], 1.0f)});
     first_point += d.count;
+    while (block_draws.size() * points_per_block < first_point) block_draws.push_back(draw);
   }
   fill(draws_, draws_capacity_, gpu_draws);
   fill(instances_, instances_capacity_, instances);
+  fill(block_draws_, block_draws_capacity_, block_draws);
   total_points_ = first_point;
   draw_count_ = draws.size();
   samples_ = &samples;
@@ -81,6 +86,7 @@ void PointSplat::bind_for(const gl::Program& program) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, instances_binding, instances_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, depths_binding, depths_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, winners_binding, winners_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, block_draws_binding, block_draws_.name());
   if (samples_ != nullptr) samples_->bind(positions_binding, normals_binding, colors_binding);
   gl::set_uniform(program, "draw_count", static_cast<unsigned>(draw_count_));
   gl::set_uniform(program, "target_size", size_);

@@ -41,8 +41,8 @@ class PointSplat {
   glm::ivec2 size_;
   std::size_t total_points_ = 0;
   std::size_t draw_count_ = 0;
-  gl::Buffer draws_, instances_, depths_, winners_;
-  std::size_t draws_capacity_ = 0, instances_capacity_ = 0;
+  gl::Buffer draws_, instances_, block_draws_, depths_, winners_;
+  std::size_t draws_capacity_ = 0, instances_capacity_ = 0, block_draws_capacity_ = 0;
   void dispatch(const gl::Program& program, const glm::mat4& view_projection, int splat_size, float depth_bias,
                 glm::vec2 paraboloid) const;
 
