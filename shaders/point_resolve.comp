@@ -1,6 +1,20 @@
 #version 450 core
 // Pass 2 of point splatting: per pixel, the point with the nearest depth (the lowest index among
-// equals, so the result does not depend on thread order).
+// equals, so the result does not depend on thread order), from where pass 1 put each point.
 #include "point_common.glsl"
-#define VISIT(pixel, depth, point) if (depths[pixel] == depth) atomicMin(winners[pixel], point)
-#include "point_walk.glsl"
+#include "point_threads.glsl"
+
+void main() {
+  uvec2 run = thread_points();
+  for (uint p = run.x; p < run.y; ++p) {
+    uvec2 at = projected[p];
+    if (at.y == no_point) continue;
+    ivec2 corner = ivec2(bitfieldExtract(int(at.x), 0, 16), bitfieldExtract(int(at.x), 16, 16));
+    for (int y = 0; y < splat_size; ++y) {
+      for (int x = 0; x < splat_size; ++x) {
+        uint pixel = splat_pixel(corner, x, y);
+        if (pixel != no_point && depths[pixel] == at.y) atomicMin(winners[pixel], p);
+      }
+    }
+  }
+}

@@ -14,8 +14,9 @@ struct GpuInstance {
 };
 
 constexpr GLuint draws_binding = 1, instances_binding = 2, positions_binding = 3, normals_binding = 4,
-                 colors_binding = 5, depths_binding = 6, winners_binding = 7, block_draws_binding = 8;
-constexpr GLuint threads_per_group = 64, points_per_thread = 16;  // point_walk.glsl
+                 colors_binding = 5, depths_binding = 6, winners_binding = 7, block_draws_binding = 8,
+                 projected_binding = 9;
+constexpr GLuint threads_per_group = 64, points_per_thread = 16;  // point_threads.glsl
 constexpr std::uint64_t points_per_block = 16;                    // point_common.glsl
 constexpr GLuint max_groups_per_dispatch = 65535;                   // GL's guaranteed minimum
 // Point indices are 32-bit in the shaders (and the last one marks "no point").
@@ -47,6 +48,7 @@ void clear(const gl::Buffer& buffer, GLuint value) {
 PointSplat::PointSplat(glm::ivec2 size)
     : size_(size),
       depth_program_(gl::build_program({"point_depth.comp"})),
+      keeping_depth_program_(gl::build_program({"point_depth.comp"}, "#define KEEP_PROJECTION\n")),
       resolve_program_(gl::build_program({"point_resolve.comp"})) {
   const auto pixels = static_cast<GLsizeiptr>(size.x) * size.y * static_cast<GLsizeiptr>(sizeof(GLuint));
   glNamedBufferStorage(depths_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -76,6 +78,12 @@ void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std
   fill(draws_, draws_capacity_, gpu_draws);
   fill(instances_, instances_capacity_, instances);
   fill(block_draws_, block_draws_capacity_, block_draws);
+  if (first_point > projected_capacity_) {
+    projected_ = gl::Buffer();
+    projected_capacity_ = first_point * 3 / 2;
+    glNamedBufferStorage(projected_.name(), static_cast<GLsizeiptr>(projected_capacity_ * sizeof(glm::uvec2)), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
+  }
   total_points_ = first_point;
   draw_count_ = draws.size();
   samples_ = &samples;
@@ -87,6 +95,7 @@ void PointSplat::bind_for(const gl::Program& program) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, depths_binding, depths_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, winners_binding, winners_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, block_draws_binding, block_draws_.name());
+  if (projected_capacity_ > 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, projected_binding, projected_.name());
   if (samples_ != nullptr) samples_->bind(positions_binding, normals_binding, colors_binding);
   gl::set_uniform(program, "draw_count", static_cast<unsigned>(draw_count_));
   gl::set_uniform(program, "target_size", size_);
@@ -115,7 +124,10 @@ void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float d
   clear(depths_, 0xFFFFFFFFu);
   clear(winners_, 0xFFFFFFFFu);
   if (total_points_ == 0) return;
-  dispatch(depth_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f));
+  const GLuint outside = 0xFFFFFFFFu;  // no_point: pass 2 skips the points pass 1 leaves so
+  glClearNamedBufferSubData(projected_.name(), GL_R32UI, 0, static_cast<GLsizeiptr>(total_points_ * sizeof(glm::uvec2)),
+                            GL_RED_INTEGER, GL_UNSIGNED_INT, &outside);
+  dispatch(keeping_depth_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f));
   dispatch(resolve_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f));
 }
 

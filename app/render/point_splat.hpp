@@ -10,7 +10,8 @@ namespace ecoview {
 
 // Point splatting with compute shaders into a target of width x height pixels: the frame's draws
 // go to GL buffers; pass 1 keeps each pixel's nearest depth (atomicMin), pass 2 the nearest point
-// (for shading). 32-bit atomics only, so it runs on llvmpipe as on any GL 4.5 driver.
+// (for shading), from where pass 1 put each point rather than projecting it again (on llvmpipe a
+// third of the time). 32-bit atomics only, so it runs on llvmpipe as on any GL 4.5 driver.
 class PointSplat {
  public:
   explicit PointSplat(glm::ivec2 size);
@@ -41,12 +42,12 @@ class PointSplat {
   glm::ivec2 size_;
   std::size_t total_points_ = 0;
   std::size_t draw_count_ = 0;
-  gl::Buffer draws_, instances_, block_draws_, depths_, winners_;
-  std::size_t draws_capacity_ = 0, instances_capacity_ = 0, block_draws_capacity_ = 0;
+  gl::Buffer draws_, instances_, block_draws_, depths_, winners_, projected_;
+  std::size_t draws_capacity_ = 0, instances_capacity_ = 0, block_draws_capacity_ = 0, projected_capacity_ = 0;
   void dispatch(const gl::Program& program, const glm::mat4& view_projection, int splat_size, float depth_bias,
                 glm::vec2 paraboloid) const;
 
-  gl::Program depth_program_, resolve_program_;
+  gl::Program depth_program_, keeping_depth_program_, resolve_program_;
   std::unique_ptr<gl::Program> count_program_;  // made when first counting
   const PointSamples* samples_ = nullptr;
 };

@@ -1,0 +1,22 @@
+// The splat compute passes' threads: each takes a run of points_per_thread consecutive points and
+// visits the splat_size x splat_size pixels of each.
+layout(local_size_x = 64) in;
+
+uniform uint total_points;
+uniform uint first_thread;  // dispatches are split to stay within the work-group count limit
+uniform int splat_size;
+
+const uint points_per_thread = 16u;  // app/render/point_splat.cpp
+
+// This thread's points, from x up to y (none when x >= y).
+uvec2 thread_points() {
+  uint first = (first_thread + gl_GlobalInvocationID.x) * points_per_thread;
+  return uvec2(first, min(first + points_per_thread, total_points));
+}
+
+// The index of pixel (x, y) of a splat whose lower-left pixel is `corner`; no_point off the target.
+uint splat_pixel(ivec2 corner, int x, int y) {
+  ivec2 pixel = corner + ivec2(x, y);
+  if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, target_size))) return no_point;
+  return uint(pixel.y * target_size.x + pixel.x);
+}
