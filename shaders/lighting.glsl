@@ -104,17 +104,13 @@ float shadow_test(vec3 position, vec3 n, float n_dot_l) {
   if (any(lessThan(map.xy, vec2(0.0))) || any(greaterThan(map.xy, vec2(1.0)))) return 1.0;
   float texels_per_pixel = cell_world_size(view_projection, frame_size, position) / texel_world_size(layer, position);
   float step = clamp(0.5 * (texels_per_pixel - 1.0), 0.0, 1.0) / shadow_size;
-  // Where a texel is a pixel or larger the taps coincide: one does. A loop, not a branch, so that
-  // llvmpipe (which runs both sides of a branch but leaves a loop when its lanes are done) saves
-  // the other eight too.
-  int reach = step > 0.0 ? 1 : 0;
   float sum = 0.0;
-  for (int y = -reach; y <= reach; ++y) {
-    for (int x = -reach; x <= reach; ++x) {
+  for (int y = -1; y <= 1; ++y) {
+    for (int x = -1; x <= 1; ++x) {
       sum += texture(shadow_map, vec4(map.xy + vec2(x, y) * step, layer, map.z));
     }
   }
-  return sum / float((2 * reach + 1) * (2 * reach + 1));
+  return sum / 9.0;
 }
 
 // d(ndc.xy)/d(p along t1, t2) of a projective matrix at p: the columns are the two directions.
