@@ -343,5 +343,31 @@ TEST(CoverageGrid, CellsAndTilesKeepWhatIsLeftUncovered) {
   EXPECT_NEAR(box->max.y, 0.1f, 1e-5f);
 }
 
+// Points are projected in blocks (coverage_grid.cpp): a run of them, with a short last block and
+// some behind the eye or outside the view, covers the cells each covers alone.
+TEST(CoverageGrid, ARunOfPointsCoversWhatEachCoversAlone) {
+  const glm::mat4 view_projection = glm::perspective(glm::radians(60.0f), 1.5f, 0.5f, 50.0f);
+  CoverageGrid together(view_projection, {48, 32}, 2), one_by_one(view_projection, {48, 32}, 2);
+  Random random(7);
+  std::vector<glm::vec3> points(21);
+  for (glm::vec3& p : points) {
+    const float z = -60.0f + 62.0f * random.uniform();  // some behind the eye, some past the far plane
+    p = glm::vec3((2.0f * random.uniform() - 1.0f) * std::abs(z), (2.0f * random.uniform() - 1.0f) * std::abs(z), z);
+  }
+  const glm::mat4 transform = glm::translate(glm::mat4(1.0f), {0.3f, -0.2f, 0.0f});
+  together.cover(points, transform);
+  for (const glm::vec3& p : points) one_by_one.cover(std::vector<glm::vec3>{p}, transform);
+  int covered = 0;
+  for (int y = 0; y < 32; ++y) {
+    for (int x = 0; x < 48; ++x) {
+      const CoverageGrid::Rect cell{{-1.0f + x / 24.0f, -1.0f + y / 16.0f}, {-1.0f + (x + 1) / 24.0f, -1.0f + (y + 1) / 16.0f}};
+      EXPECT_EQ(together.transmittance(cell), one_by_one.transmittance(cell)) << "cell " << x << ", " << y;
+      covered += together.transmittance(cell) == 0.0f;
+    }
+  }
+  EXPECT_GT(covered, 8) << "some of the points are in view";
+  EXPECT_LT(covered, 4 * 21) << "and some are not";
+}
+
 }  // namespace
 }  // namespace pointgen

@@ -1,10 +1,40 @@
 #include "pointgen/sampling/coverage_grid.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 
 namespace pointgen {
+namespace {
+
+// Points are projected this many at a time, in a loop the compiler turns into vector code: most
+// points a frame samples come through the grid (a near plant drawn as polygons covers its cells
+// with a sample each).
+constexpr std::size_t projected_block = 8;
+
+struct ProjectedBlock {
+  std::array<bool, projected_block> kept;              // as the splatting shader (point_walk.glsl)
+  std::array<float, projected_block> corner_x, corner_y;  // the splat's corner cell, before floor
+};
+
+// Drops what the splatting shader drops (behind the eye, outside the view, nearer or farther than
+// its depth range) and finds the splat's corner as it does. m * vec4(p, 1) summed in glm's order,
+// so that every bit agrees with glm's.
+ProjectedBlock project_block(const glm::vec3* p, const glm::mat4& m, glm::vec2 size, float half_splat) {
+  ProjectedBlock out;
+  for (std::size_t j = 0; j < projected_block; ++j) {
+    const auto row = [&](int r) { return (m[0][r] * p[j].x + m[1][r] * p[j].y) + (m[2][r] * p[j].z + m[3][r]); };
+    const float w = row(3);
+    const float x = row(0) / w, y = row(1) / w, z = row(2) / w;
+    out.kept[j] = (w > 1e-6f) & (std::abs(x) <= 1.0f) & (std::abs(y) <= 1.0f) & (std::abs(z) <= 1.0f);
+    out.corner_x[j] = (x * 0.5f + 0.5f) * size.x - half_splat;
+    out.corner_y[j] = (y * 0.5f + 0.5f) * size.y - half_splat;
+  }
+  return out;
+}
+
+}  // namespace
 
 CoverageGrid::CoverageGrid(const glm::mat4& view_projection, glm::ivec2 cells, int splat)
     : view_projection_(view_projection),
@@ -73,18 +103,22 @@ float CoverageGrid::transmittance(const Rect& rect) const {
 void CoverageGrid::cover_splats(std::span<const glm::vec3> points, const glm::mat4& transform, int splat) {
   const glm::mat4 m = view_projection_ * transform;
   const glm::vec2 size(cells_);
-  for (const glm::vec3& p : points) {
-    const glm::vec4 clip = m * glm::vec4(p, 1.0f);
-    // Points the splatting shader drops (point_walk.glsl) cover nothing: behind the eye, outside
-    // the view, or nearer or farther than its depth range.
-    if (!(clip.w > 1e-6f)) continue;
-    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
-    if (!(std::abs(ndc.x) <= 1.0f && std::abs(ndc.y) <= 1.0f && std::abs(ndc.z) <= 1.0f)) continue;
-    // The splat's corner cell as the shader finds it.
-    const glm::vec2 corner = glm::floor((glm::vec2(ndc) * 0.5f + 0.5f) * size - 0.5f * static_cast<float>(splat - 1));
-    const int x0 = static_cast<int>(corner.x), y0 = static_cast<int>(corner.y);
-    for (int y = std::max(y0, 0); y < std::min(y0 + splat, cells_.y); ++y) {
-      for (int x = std::max(x0, 0); x < std::min(x0 + splat, cells_.x); ++x) cover_cell(x, y);
+  const float half_splat = 0.5f * static_cast<float>(splat - 1);
+  std::array<glm::vec3, projected_block> tail;
+  for (std::size_t first = 0; first < points.size(); first += projected_block) {
+    const std::size_t count = std::min(projected_block, points.size() - first);
+    const glm::vec3* block = points.data() + first;
+    if (count < projected_block) {  // the last, padded with its last point
+      std::fill(std::copy(block, block + count, tail.begin()), tail.end(), block[count - 1]);
+      block = tail.data();
+    }
+    const ProjectedBlock projected = project_block(block, m, size, half_splat);
+    for (std::size_t j = 0; j < count; ++j) {
+      if (!projected.kept[j]) continue;
+      const int x0 = static_cast<int>(std::floor(projected.corner_x[j])), y0 = static_cast<int>(std::floor(projected.corner_y[j]));
+      for (int y = std::max(y0, 0); y < std::min(y0 + splat, cells_.y); ++y) {
+        for (int x = std::max(x0, 0); x < std::min(x0 + splat, cells_.x); ++x) cover_cell(x, y);
+      }
     }
   }
 }
