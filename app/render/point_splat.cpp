@@ -78,12 +78,6 @@ void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std
   fill(draws_, draws_capacity_, gpu_draws);
   fill(instances_, instances_capacity_, instances);
   fill(block_draws_, block_draws_capacity_, block_draws);
-  if (first_point > projected_capacity_) {
-    projected_ = gl::Buffer();
-    projected_capacity_ = first_point * 3 / 2;
-    glNamedBufferStorage(projected_.name(), static_cast<GLsizeiptr>(projected_capacity_ * sizeof(glm::uvec2)), nullptr,
-                         GL_DYNAMIC_STORAGE_BIT);
-  }
   total_points_ = first_point;
   draw_count_ = draws.size();
   samples_ = &samples;
@@ -124,6 +118,12 @@ void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float d
   clear(depths_, 0xFFFFFFFFu);
   clear(winners_, 0xFFFFFFFFu);
   if (total_points_ == 0) return;
+  if (total_points_ > projected_capacity_) {  // only the frame's splat keeps where its points went
+    projected_ = gl::Buffer();
+    projected_capacity_ = total_points_ * 3 / 2;
+    glNamedBufferStorage(projected_.name(), static_cast<GLsizeiptr>(projected_capacity_ * sizeof(glm::uvec2)), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
+  }
   const GLuint outside = 0xFFFFFFFFu;  // no_point: pass 2 skips the points pass 1 leaves so
   glClearNamedBufferSubData(projected_.name(), GL_R32UI, 0, static_cast<GLsizeiptr>(total_points_ * sizeof(glm::uvec2)),
                             GL_RED_INTEGER, GL_UNSIGNED_INT, &outside);
