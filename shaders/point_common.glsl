@@ -16,7 +16,8 @@ layout(std430, binding = 7) buffer Winners { uint winners[]; };
 layout(std430, binding = 8) readonly buffer BlockDraws { uint block_draws[]; };
 const uint points_per_block = 16u;  // app/render/point_splat.cpp
 // Per point, where the frame's depth pass put it: its splat's lower-left pixel (x and y as 16-bit
-// signed halves) and its depth, or no_point as the depth where it fell outside the target.
+// signed halves, enough for the 16384-pixel targets --size allows) and its depth, or no_point as
+// the depth where it fell outside the target.
 layout(std430, binding = 9) buffer Projected { uvec2 projected[]; };
 
 const uint no_point = 0xFFFFFFFFu;

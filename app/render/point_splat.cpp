@@ -22,14 +22,19 @@ constexpr GLuint max_groups_per_dispatch = 65535;                   // GL's guar
 // Point indices are 32-bit in the shaders (and the last one marks "no point").
 constexpr std::uint64_t max_points = 0xFFFFFFFEu;
 
+// Makes room for `count` elements of T, with new storage (its content lost) when it is too small.
+template <class T>
+void reserve(gl::Buffer& buffer, std::size_t& capacity, std::size_t count) {
+  if (count <= capacity) return;
+  buffer = gl::Buffer();
+  capacity = std::max<std::size_t>(count * 3 / 2, 64);
+  glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(capacity * sizeof(T)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
 // Replaces a buffer's content, growing its storage when it is too small.
 template <class T>
 void fill(gl::Buffer& buffer, std::size_t& capacity, const std::vector<T>& data) {
-  if (data.size() > capacity) {
-    buffer = gl::Buffer();
-    capacity = std::max<std::size_t>(data.size() * 3 / 2, 64);
-    glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(capacity * sizeof(T)), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  }
+  reserve<T>(buffer, capacity, data.size());
   if (!data.empty()) glNamedBufferSubData(buffer.name(), 0, static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data());
 }
 
@@ -118,12 +123,7 @@ void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float d
   clear(depths_, 0xFFFFFFFFu);
   clear(winners_, 0xFFFFFFFFu);
   if (total_points_ == 0) return;
-  if (total_points_ > projected_capacity_) {  // only the frame's splat keeps where its points went
-    projected_ = gl::Buffer();
-    projected_capacity_ = total_points_ * 3 / 2;
-    glNamedBufferStorage(projected_.name(), static_cast<GLsizeiptr>(projected_capacity_ * sizeof(glm::uvec2)), nullptr,
-                         GL_DYNAMIC_STORAGE_BIT);
-  }
+  reserve<glm::uvec2>(projected_, projected_capacity_, total_points_);  // only the frame's splat keeps where points went
   const GLuint outside = 0xFFFFFFFFu;  // no_point: pass 2 skips the points pass 1 leaves so
   glClearNamedBufferSubData(projected_.name(), GL_R32UI, 0, static_cast<GLsizeiptr>(total_points_ * sizeof(glm::uvec2)),
                             GL_RED_INTEGER, GL_UNSIGNED_INT, &outside);
