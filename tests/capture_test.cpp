@@ -152,7 +152,7 @@ TEST(Density, QuickRunWritesResultsChartsAndReport) {
   EXPECT_EQ((*temporal)["figures"]["still_changed"].get<double>(), 0.0);
 }
 
-TEST(Bench, QuickRunWritesResultsChartsCropsAndReport) {
+TEST(Bench, QuickRunWritesResultsChartsCropsAndReportAndVolumesMatchTheReference) {
   const TempDir dir;
   const CommandResult r = run_ecoview({"bench", "--quick", "--size", "320x180", "--out", dir.path().string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -162,6 +162,7 @@ TEST(Bench, QuickRunWritesResultsChartsCropsAndReport) {
   }
   const nlohmann::json results = nlohmann::json::parse(read_bytes(dir / "results.json"));
   std::set<std::string> sweeps;
+  int volumes = 0;
   for (const auto& run : results["runs"]) {
     sweeps.insert(run["params"]["sweep"].get<std::string>());
     for (const auto& figure : run["figures"].items()) {
@@ -170,8 +171,10 @@ TEST(Bench, QuickRunWritesResultsChartsCropsAndReport) {
     // Shadow volumes are exact for polygons: they agree with the reference.
     if (run["params"]["method"] == "volumes") {
       EXPECT_LT(run["figures"]["err"].get<double>(), 1e-3) << run["params"]["scene"];
+      ++volumes;
     }
   }
+  EXPECT_GT(volumes, 0);
   EXPECT_EQ(sweeps, (std::set<std::string>{"tradeoff", "stability", "crossing", "flythrough", "flicker"}));
 }
 

@@ -79,15 +79,16 @@ TEST_F(PointRendering, PointsCoverWhatPolygonsCoverAtTheDefaultDensity) {
 
 TEST_F(PointRendering, PointDepthsMatchPolygonDepths) {
   const Image<float> a = polygons->frame().read_depth(), b = points->frame().read_depth();
-  // Where both cover a pixel, the nearest point lies on one of the surfaces seen there: mostly the
-  // front one (within a tree's depth of it).
+  // Where both cover a pixel, the nearest point mostly lies on the front surface seen there: within
+  // a quarter metre (a pixel is 0.1-0.3 m wide at 40-120 m). Points anywhere in the crowns, metres
+  // deep, would miss that. The rest are leaf edges, where a splat reaches past the front leaf.
   std::size_t both = 0, close = 0;
   for (std::size_t i = 0; i < a.samples.size(); ++i) {
     if (a.samples[i] < 0.0f || b.samples[i] < 0.0f) continue;
     ++both;
-    close += std::abs(a.samples[i] - b.samples[i]) < 3.0f;
+    close += std::abs(a.samples[i] - b.samples[i]) < 0.25f;
   }
-  EXPECT_GT(static_cast<double>(close) / static_cast<double>(both), 0.8);
+  EXPECT_GT(static_cast<double>(close) / static_cast<double>(both), 0.85);
 }
 
 // View-adaptive: the sampler gives every surface about k points per pixel of its image, so the

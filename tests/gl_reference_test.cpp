@@ -84,12 +84,5 @@ TEST(ReferenceAgainstVolumes, AgreesOnTheCourtyardUnderEveryLight) {
   for (double a : agreement_on_the_courtyard(ShadowMethod::volumes)) EXPECT_GE(a, 0.999);
 }
 
-// --method reference shades with the reference's own mask: its `shadow` AOV is the reference
-// (up to the few pixels where the interpolated normal and the mask's turn differ).
-TEST(ReferenceMethod, ShadowAovIsTheReference) {
-  const auto context = create_headless_context("egl");
-  for (double a : agreement_on_the_courtyard(ShadowMethod::reference)) EXPECT_GE(a, 0.9999);
-}
-
 }  // namespace
 }  // namespace ecoview::test

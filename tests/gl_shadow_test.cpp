@@ -67,7 +67,7 @@ INSTANTIATE_TEST_SUITE_P(
                      testing::Values(shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot),
                      testing::Values(ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::lispsm,
                                      ShadowMethod::cascades, ShadowMethod::dpsm, ShadowMethod::ipsm,
-                                     ShadowMethod::volumes, ShadowMethod::automatic)),
+                                     ShadowMethod::volumes, ShadowMethod::automatic, ShadowMethod::reference)),
     [](const testing::TestParamInfo<Param>& info) {
       return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + shadow_method_name(std::get<2>(info.param));
     });

@@ -112,6 +112,8 @@ TEST_P(WarpedMap, RaysFromReceiversToTheLightMapIntoTheCubeCastersFirst) {
   const bool paraboloid = map == dpsm || map == ipsm;
   if (map == psm || (type == LightType::directional) != paraboloid) {
     EXPECT_GT(warped, 100);
+  } else {
+    EXPECT_EQ(warped, 0) << "the light this method does not warp should get the focused uniform map";
   }
 }
 
@@ -187,8 +189,15 @@ TEST(WarpedMap, NearTexelsAreSmallerThanTheUniformMapsForALightAcrossTheView) {
   EXPECT_LT(lispsm, uniform / 4.0f);
 }
 
-// Configurations where a warp breaks down, each with several cameras: finite matrices.
-TEST(WarpedMap, DegenerateConfigurationsGiveFiniteMatrices) {
+// A setup the renderer can draw: at least one view, every matrix finite.
+void expect_usable(const ShadowSetup& setup) {
+  EXPECT_FALSE(setup.views.empty()) << setup.description;
+  for (const ShadowView& v : setup.views) EXPECT_TRUE(finite(v)) << setup.description;
+}
+
+// Configurations where a warp breaks down, each with several cameras, for every method and the
+// focused uniform map they fall back to: views with finite matrices.
+TEST(WarpedMap, DegenerateConfigurationsGiveViewsWithFiniteMatrices) {
   Camera ahead;  // looking down -z
   ahead.position = glm::vec3(0, 10, 30);
   ahead.target = glm::vec3(0, 10, 0);
@@ -219,28 +228,30 @@ TEST(WarpedMap, DegenerateConfigurationsGiveFiniteMatrices) {
   for (const Camera& c : {ahead, inside, away, down}) {
     for (const Light& light : lights) {
       for (float nearest : {0.0f, 5.0f, 1e6f}) {
-        for (const ShadowView& v : perspective_shadow_map(c, aspect, light, scene_box(), 1024, nearest).views) {
-          EXPECT_TRUE(finite(v));
-        }
+        expect_usable(perspective_shadow_map(c, aspect, light, scene_box(), 1024, nearest));
       }
-      for (const ShadowSetup& setup : {light_space_perspective_map(c, aspect, light, scene_box(), 1024),
+      for (const ShadowSetup& setup : {focused_uniform_map(c, aspect, light, scene_box(), 1024),
+                                       light_space_perspective_map(c, aspect, light, scene_box(), 1024),
                                        cascaded_map(c, aspect, light, scene_box(), 1024),
                                        dual_paraboloid_map(c, aspect, light, scene_box(), 1024),
                                        improved_paraboloid_map(c, aspect, light, scene_box(), 1024)}) {
-        for (const ShadowView& v : setup.views) EXPECT_TRUE(finite(v));
+        expect_usable(setup);
       }
     }
   }
 }
 
 // The count: a million random configurations for the PSM (ECOVIEW_PSM_CASES sets
-// another), a tenth of that for the other methods, every kind of light, no NaN or infinity.
+// another), a tenth of that for the other methods, every kind of light: no setup without views,
+// no NaN or infinity.
 TEST(WarpedMap, AMillionRandomConfigurationsGiveFiniteMatrices) {
   const char* cases = std::getenv("ECOVIEW_PSM_CASES");
   const int count = cases ? std::atoi(cases) : 1000000;
   pointgen::Random rng(5);
+  ASSERT_GT(count, 0);
   int bad = 0;
   auto count_bad = [&](const ShadowSetup& setup) {
+    bad += setup.views.empty();
     for (const ShadowView& v : setup.views) bad += !finite(v);
   };
   for (int i = 0; i < count; ++i) {
