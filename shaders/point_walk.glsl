@@ -23,9 +23,10 @@ void main() {
     while (p >= d.x + d.y) d = draws[++draw];
     vec4 world = instances[d.w].model * vec4(positions[d.z + (p - d.x)].xyz, 1.0);
     vec4 clip = paraboloid.x == 0.0 ? view_projection * world : paraboloid_clip(view_projection, paraboloid, world.xyz);
-    if (clip.w <= 0.0) continue;
+    // Written to be false for NaN too (a GPU may turn a NaN corner into pixel 0).
+    if (!(clip.w > 0.0)) continue;
     vec3 ndc = clip.xyz / clip.w;
-    if (any(greaterThan(abs(ndc), vec3(1.0)))) continue;
+    if (!all(lessThanEqual(abs(ndc), vec3(1.0)))) continue;
     // Window depth is a non-negative float, whose bits order like the values: atomicMin on uint.
     uint depth = floatBitsToUint(clamp(ndc.z * 0.5 + 0.5 + depth_bias, 0.0, 1.0));
     ivec2 corner = ivec2(floor((ndc.xy * 0.5 + 0.5) * vec2(target_size) - 0.5 * float(splat_size - 1)));

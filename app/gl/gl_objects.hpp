@@ -75,6 +75,14 @@ void store(const Buffer& buffer, const std::vector<T>& data, GLbitfield flags = 
   glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(std::max<std::size_t>(data.size(), 1) * sizeof(T)),
                        data.empty() ? nullptr : data.data(), flags);
 }
+
+// The bytes of one storage buffer a shader can address on this driver (GL promises 2^27).
+inline std::size_t max_storage_block_bytes() {
+  GLint64 bytes = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &bytes);
+  return static_cast<std::size_t>(bytes);
+}
+
 using VertexArray = Object<VertexArrayKind>;
 using Texture = Object<TextureKind>;
 using TextureView = Object<TextureViewKind>;

@@ -1,5 +1,7 @@
 #include "app/render/point_samples.hpp"
 
+#include "app/errors.hpp"
+
 #include "pointgen/random.hpp"
 #include "pointgen/sampling/point_count.hpp"
 #include "pointgen/sampling/surface_samples.hpp"
@@ -55,6 +57,11 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle) {
       }
     }
     meshes_.push_back(std::move(info));
+  }
+  if (const std::size_t limit = gl::max_storage_block_bytes(); positions.size() * sizeof(glm::vec4) > limit) {
+    throw RuntimeFailure("the scene's point samples need " + std::to_string((positions.size() * sizeof(glm::vec4)) >> 20) +
+                         " MiB in one buffer, more than this driver's shaders address (" + std::to_string(limit >> 20) +
+                         " MiB); use --geometry polygons");
   }
   gl::store(positions_, positions);
   gl::store(normals_, normals);

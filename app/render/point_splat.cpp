@@ -19,15 +19,22 @@ constexpr GLuint draws_binding = 1, instances_binding = 2, positions_binding = 3
 constexpr GLuint threads_per_group = 64, points_per_thread = 16;  // point_threads.glsl
 constexpr std::uint64_t points_per_block = 16;                    // point_common.glsl
 constexpr GLuint max_groups_per_dispatch = 65535;                   // GL's guaranteed minimum
-// Point indices are 32-bit in the shaders (and the last one marks "no point").
-constexpr std::uint64_t max_points = 0xFFFFFFFEu;
+// Point indices are 32-bit in the shaders: the last one marks "no point", and a thread's run of
+// points must end below it (point_threads.glsl).
+constexpr std::uint64_t max_points = 0xFFFFFFFFu - points_per_thread;
 
-// Makes room for `count` elements of T, with new storage (its content lost) when it is too small.
+// Makes room for `count` elements of T, with new storage (its content lost) when it is too small,
+// and no more than the shaders can address.
 template <class T>
 void reserve(gl::Buffer& buffer, std::size_t& capacity, std::size_t count) {
   if (count <= capacity) return;
+  const std::size_t limit = gl::max_storage_block_bytes() / sizeof(T);
+  if (count > limit) {
+    throw RuntimeFailure("a frame's points need " + std::to_string((count * sizeof(T)) >> 20) + " MiB in one buffer, more than "
+                         "this driver's shaders address (" + std::to_string((limit * sizeof(T)) >> 20) + " MiB); lower --k or the frame size");
+  }
   buffer = gl::Buffer();
-  capacity = std::max<std::size_t>(count * 3 / 2, 64);
+  capacity = std::min(std::max<std::size_t>(count * 3 / 2, 64), limit);
   glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(capacity * sizeof(T)), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 

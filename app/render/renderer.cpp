@@ -87,9 +87,8 @@ pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSet
 // The settings, checked against what this driver can allocate before anything is.
 static RenderSettings within_limits(const RenderSettings& s) {
   GLint max_texture = 0;
-  GLint64 max_storage_block = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
-  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_storage_block);
+  const auto max_storage_block = static_cast<GLint64>(gl::max_storage_block_bytes());
   auto bytes = [](int w, int h) { return 4 * static_cast<GLint64>(w) * h; };  // one uint per pixel (PointSplat)
   if (std::max(s.width, s.height) > max_texture || (s.points && bytes(s.width, s.height) > max_storage_block)) {
     throw InputError("--size: " + std::to_string(s.width) + "x" + std::to_string(s.height) + " is more than this driver "
