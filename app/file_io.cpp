@@ -38,8 +38,9 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
   std::error_code ec;
   std::filesystem::rename(temporary, path, ec);
   if (ec) {
+    const std::string reason = ec.message();
     std::filesystem::remove(temporary, ec);
-    throw RuntimeFailure(path.string() + ": cannot rename into place (" + ec.message() + ")");
+    throw RuntimeFailure(path.string() + ": cannot rename into place (" + reason + ")");
   }
 }
 

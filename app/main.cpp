@@ -7,7 +7,37 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <iostream>
+#include <string>
+#include <string_view>
+
+namespace {
+
+// A message as the one line it must be: control characters, which file names, arguments and
+// quoted file content can carry, written as escapes.
+std::string one_line(std::string_view message) {
+  std::string line;
+  for (const char c : message) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      line += "\\n";
+    } else if (c == '\r') {
+      line += "\\r";
+    } else if (c == '\t') {
+      line += "\\t";
+    } else if (byte < 0x20 || byte == 0x7f) {
+      char escape[5];
+      std::snprintf(escape, sizeof escape, "\\x%02x", byte);
+      line += escape;
+    } else {
+      line += c;
+    }
+  }
+  return line;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace ecoview;
@@ -30,7 +60,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "ecoview: " << e.what() << " (see ecoview --help)\n";
+    std::cerr << "ecoview: " << one_line(e.what()) << " (see ecoview --help)\n";
     return 2;
   }
 
@@ -40,13 +70,13 @@ int main(int argc, char** argv) {
     if (density_command->parsed()) return run_density(density);
     if (bench_command->parsed()) return run_bench(bench);
   } catch (const InputError& e) {
-    std::cerr << "ecoview: " << e.what() << "\n";
+    std::cerr << "ecoview: " << one_line(e.what()) << "\n";
     return 2;
   } catch (const RuntimeFailure& e) {
-    std::cerr << "ecoview: " << e.what() << "\n";
+    std::cerr << "ecoview: " << one_line(e.what()) << "\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "ecoview: unexpected failure: " << e.what() << "\n";
+    std::cerr << "ecoview: unexpected failure: " << one_line(e.what()) << "\n";
     return 1;
   }
   return 0;

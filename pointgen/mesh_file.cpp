@@ -29,7 +29,7 @@ void check_mesh(const std::string& path, const TriangleMesh& mesh) {
 
 TriangleMesh load_mesh_file(const std::string& path, const ReadFile& read) {
   const std::optional<std::string> bytes = read(path);
-  if (!bytes) throw FileError(path, "no such file");
+  if (!bytes) throw FileError(path, "no such file (or not a readable one)");
   const std::string ext = lower_extension(path);
   TriangleMesh mesh;
   if (ext == ".gltf" || ext == ".glb") {

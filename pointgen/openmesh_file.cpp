@@ -15,15 +15,28 @@ namespace {
 
 using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
 
-// OpenMesh reports problems on its own log streams; ours go into FileError instead.
-void silence_openmesh_logs() {
-  static const bool silenced = [] {
+// OpenMesh reports problems on its own log streams; ours go into FileError instead. Its readers
+// skip a face that refers to a vertex the file lacks and say so only on omerr, so that stream is
+// kept here to be read after each file (files are read one at a time).
+std::ostringstream& openmesh_errors() {
+  static std::ostringstream errors;
+  static const bool redirected = [] {
     omlog().disable();
     omout().disable();
-    omerr().disable();
+    omerr().disconnect(std::cerr);
+    omerr().connect(errors);
     return true;
   }();
-  (void)silenced;
+  (void)redirected;
+  return errors;
+}
+
+// Whether the reader of the file just read skipped faces with vertex indices the file lacks. (A
+// non-manifold face it reports too, but adds with its vertices copied.)
+bool skipped_bad_faces() {
+  omerr().flush();
+  const std::string errors = openmesh_errors().str();
+  return errors.find("invalid vertex index") != std::string::npos || errors.find("invalid faces") != std::string::npos;
 }
 
 glm::vec3 to_glm(const OpenMesh::Vec3f& v) { return {v[0], v[1], v[2]}; }
@@ -31,7 +44,7 @@ glm::vec3 to_glm(const OpenMesh::Vec3f& v) { return {v[0], v[1], v[2]}; }
 }  // namespace
 
 TriangleMesh load_openmesh_format(const std::string& path, const std::string& bytes) {
-  silence_openmesh_logs();
+  openmesh_errors().str("");
   PolyMesh poly;
   poly.request_vertex_normals();
   poly.request_vertex_colors();
@@ -51,6 +64,7 @@ TriangleMesh load_openmesh_format(const std::string& path, const std::string& by
     throw FileError(path, std::string("cannot be read: ") + e.what());
   }
   if (!ok) throw FileError(path, "not a valid " + ext.substr(1) + " mesh");
+  if (skipped_bad_faces()) throw FileError(path, "a face refers to a vertex the file does not have (corrupt file?)");
 
   TriangleMesh mesh;
   const bool has_normals = options.check(OpenMesh::IO::Options::VertexNormal);

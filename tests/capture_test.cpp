@@ -199,6 +199,34 @@ TEST(Capture, HelpExitsZero) {
   EXPECT_NE(r.out.find("--shadow-size"), std::string::npos);
 }
 
+// Output paths: a file where the --out folder would go, a folder where a frame's file goes, and
+// --stats in the --out folder a first run makes; an empty file in a frame's place is no frame.
+TEST(Capture, OutputPathsAreCheckedBeforeAnyWork) {
+  const TempDir dir;
+  write_text(dir / "file", "x");
+  CommandResult r = run_ecoview({"capture", "--scene", "courtyard", "--out", (dir / "file" / "out").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("is a file, not a folder"), std::string::npos) << r.err;
+
+  const std::filesystem::path out = dir / "out";
+  std::filesystem::create_directories(out / "shadow_00001.png");
+  r = run_ecoview({"capture", "--scene", "courtyard", "--size", "64x36", "--frames", "0:2", "--aov", "color,shadow",
+                   "--out", out.string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("shadow_00001.png exists and is not a file"), std::string::npos) << r.err;
+  EXPECT_EQ(files_in(out), std::vector<std::string>{"shadow_00001.png"}) << "nothing rendered";
+
+  const std::filesystem::path fresh = dir / "fresh";
+  r = run_ecoview({"capture", "--scene", "courtyard", "--size", "64x36", "--stats", (fresh / "stats.json").string(),
+                   "--out", fresh.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(std::filesystem::file_size(fresh / "stats.json"), 0u);
+  write_text(fresh / "color_00000.png", "");
+  r = run_ecoview({"capture", "--scene", "courtyard", "--size", "64x36", "--out", fresh.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(std::filesystem::file_size(fresh / "color_00000.png"), 0u) << "an empty file is rendered again";
+}
+
 struct BadInput {
   const char* name;
   std::string scene;               // written to bad.json when not empty
@@ -257,7 +285,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"bad_species", good_start + R"({"type": "ecosystem", "size": [90, 90], "plants": [{"species": "kelp", "count": 3}]}]})",
                  {}, {"bad.json", "objects[0].plants[0].species", "kelp"}},
         BadInput{"bad_crowd", good_start + R"({"type": "crowd", "count": 10, "center": [0, 0, 0], "size": [-1, 4]}]})",
-                 {}, {"bad.json", "objects[0].size"}}),
+                 {}, {"bad.json", "objects[0].size"}},
+        BadInput{"house_row_budget", good_start + R"({"type": "houses", "from": [-1000000, 0], "to": [1000000, 0]}]})",
+                 {}, {"bad.json", "objects[0]", "memory budget"}},
+        // A string from the file with a line break in it: still one line, the break escaped.
+        BadInput{"newline_in_a_value", good_start + R"({"type": "laser\nsecond line"}]})", {}, {"objects[0].type", "laser\\nsecond"}},
+        BadInput{"stats_is_a_folder", "", {"--stats", "/"}, {"--stats", "is a folder"}}),
     [](const testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
 
 }  // namespace

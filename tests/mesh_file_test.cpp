@@ -56,13 +56,33 @@ TEST(MeshFile, ImpossibleCountsAreRefusedBeforeReading) {
                  "list counts of type 'int'");
 }
 
+// OpenMesh's readers drop a face that refers to a vertex the file lacks, and a vertex they cannot
+// parse: both are corrupt files, not smaller meshes.
+TEST(MeshFile, ReferencesToMissingOrUnreadableVerticesAreRefused) {
+  expect_refused("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 99\n", "line 5: a face refers to vertex '99'");
+  expect_refused("b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "vertex '0'");
+  expect_refused("c.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 -2 -1\n", "vertex '-4'");
+  expect_refused("d.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n", "normal '2'");
+  expect_refused("e.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/3 3/1\n", "texture coordinate '3'");
+  expect_refused("f.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: a vertex that is not three finite numbers");
+  expect_refused("g.obj", "v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1");
+  expect_refused("h.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "refers to a vertex the file does not have");
+  expect_refused("i.off", "OFF\n3 1 0\n0 inf 0\n1 0 0\n0 1 0\n3 0 1 2\n", "vertex 0 is not three finite numbers");
+  expect_refused("j.ply",
+                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                 "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2000000000\n",
+                 "refers to a vertex the file does not have");
+  // Relative references and v//vn, v/vt forms that are right load.
+  EXPECT_EQ(load("k.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\nf -3/1/1 -2/1/1 -1//1\n").triangle_count(), 1u);
+}
+
 TEST(MeshFile, UnknownFormatAndMissingFileAreNamed) {
   expect_refused("model.fbx", "x", "unknown mesh format");
   try {
     pointgen::load_mesh_file("gone.obj", [](const std::string&) { return std::nullopt; });
     ADD_FAILURE();
   } catch (const pointgen::FileError& e) {
-    EXPECT_EQ(std::string(e.what()), "gone.obj: no such file");
+    EXPECT_EQ(std::string(e.what()), "gone.obj: no such file (or not a readable one)");
   }
 }
 

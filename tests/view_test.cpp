@@ -286,6 +286,12 @@ TEST(View, BadOptionsAreNamed) {
   r = run_ecoview({"view", "--scene", "courtyard", "--play", (dir / "bad.json").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("bad.json"), std::string::npos) << r.err;
+  r = run_ecoview({"view", "--scene", "courtyard", "--fps", "0"});
+  EXPECT_EQ(r.exit_code, 2) << "--fps 0 is not the clock";
+  EXPECT_NE(r.err.find("--fps"), std::string::npos) << r.err;
+  r = run_ecoview({"view", "--scene", "courtyard", "--exit-after", "1", "--screenshot", dir.path().string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("is a folder"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -36,6 +36,16 @@ FrameRange default_frames(const std::optional<CameraPath>& path, double fps) {
   return {0, static_cast<int>(frames)};
 }
 
+// Whether a frame's file is there whole (files are renamed into place once written); anything but
+// a file in its place is bad input.
+bool finished(const fs::path& file) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(file, ec);
+  if (!fs::exists(status)) return false;
+  if (!fs::is_regular_file(status)) throw InputError("--out: " + file.string() + " exists and is not a file");
+  return fs::file_size(file, ec) > 0 && !ec;
+}
+
 // One frame's figures for --stats (names as DESIGN.md defines them).
 // render_ms: the wall time of this one frame, sampling, passes and read-backs, until glFinish.
 nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOptions& options, const Renderer& renderer) {
@@ -86,7 +96,8 @@ int run_capture(const CaptureOptions& o) {
   check_backend(o.backend);
   const bool frames_asked = !o.frames.empty();
   const FrameRange asked_frames = frames_asked ? parse_frames(o.frames) : FrameRange{};
-  check_parent_folder("--stats", o.stats);
+  check_out_folder(o.out);
+  check_output_file("--stats", o.stats, o.out);
   const auto load_start = std::chrono::steady_clock::now();
   const Scene scene = load_scene_option(o.scene.name, o.scene.memory_budget_gib);
   std::cout << describe_scene(scene, std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count())
@@ -96,13 +107,12 @@ int run_capture(const CaptureOptions& o) {
   if (!o.path.empty()) path = CameraPath::load(open_input(o.path, "paths"));
   const FrameRange frames = frames_asked ? asked_frames : default_frames(path, fps);
 
-  make_out_folder(o.out);
   const fs::path out(o.out);
   std::vector<int> todo;
   for (int frame = frames.begin; frame < frames.end; ++frame) {
-    bool done = !o.force;
-    for (Aov aov : aovs) done = done && fs::exists(aov_file(out, aov, frame));
-    if (!done) todo.push_back(frame);
+    bool done = true;
+    for (Aov aov : aovs) done = finished(aov_file(out, aov, frame)) && done;
+    if (o.force || !done) todo.push_back(frame);
   }
   const int total = frames.end - frames.begin;
   if (todo.empty()) {
@@ -113,6 +123,7 @@ int run_capture(const CaptureOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   const std::unique_ptr<GlContext> context = create_headless_context(o.backend);
   Renderer renderer(scene, settings);
+  make_out_folder(o.out);  // once the driver has taken the settings
   Progress progress("capture: frame", todo.size());
   nlohmann::json stats = nlohmann::json::array();
   for (int frame : todo) {

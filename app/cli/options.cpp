@@ -112,17 +112,34 @@ RenderSettings benchmark_settings(const BenchmarkOptions& options) {
   return settings;
 }
 
-void check_parent_folder(const std::string& option, const std::string& file) {
-  if (!file.empty() && !std::filesystem::is_directory(std::filesystem::absolute(file).parent_path())) {
-    throw InputError(option + ": " + file + ": its folder does not exist");
+void check_output_file(const std::string& option, const std::string& file, const std::string& out_folder) {
+  namespace fs = std::filesystem;
+  if (file.empty()) return;
+  std::error_code ec;
+  if (fs::is_directory(file, ec)) throw InputError(option + ": " + file + " is a folder, not a file");
+  const fs::path folder = fs::absolute(file).parent_path().lexically_normal();
+  if (fs::is_directory(folder, ec)) return;
+  if (!out_folder.empty() && folder == (fs::absolute(out_folder) / "file").parent_path().lexically_normal()) return;
+  throw InputError(option + ": " + file + ": its folder does not exist");
+}
+
+void check_out_folder(const std::string& out) {
+  namespace fs = std::filesystem;
+  if (out.empty()) throw InputError("--out: empty folder name");
+  std::error_code ec;
+  for (fs::path p = fs::absolute(out).lexically_normal(); !p.empty(); p = p.parent_path()) {
+    if (fs::exists(p, ec)) {
+      if (!fs::is_directory(p, ec)) throw InputError("--out: " + out + ": " + p.string() + " is a file, not a folder");
+      return;
+    }
+    if (p == p.parent_path()) return;
   }
 }
 
 void make_out_folder(const std::string& out) {
   namespace fs = std::filesystem;
+  check_out_folder(out);
   std::error_code ec;
-  if (out.empty()) throw InputError("--out: empty folder name");
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw InputError("--out: " + out + " exists and is not a folder");
   fs::create_directories(out, ec);
   if (ec || !fs::is_directory(out)) {
     throw RuntimeFailure("--out: cannot create folder " + out + " (" + ec.message() + "); check permissions and free space");

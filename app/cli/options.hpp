@@ -64,11 +64,15 @@ RenderSettings benchmark_settings(const BenchmarkOptions& options);
 // Checks a --backend name (egl or osmesa) before any work is done.
 const std::string& check_backend(const std::string& backend);
 
-// Checks that the folder a file option (`--stats FILE`) names exists; an empty file passes.
-void check_parent_folder(const std::string& option, const std::string& file);
+// Checks a file option (`--stats FILE`) before any work: not a folder, and in a folder that exists
+// or is `out_folder`, the --out folder the command will make. An empty file passes.
+void check_output_file(const std::string& option, const std::string& file, const std::string& out_folder = "");
 
-// Makes the --out folder; throws InputError when it names a file or nothing, RuntimeFailure when
-// it cannot be made.
+// Checks the --out folder before any work: named, and a folder or a path one can be made at (the
+// nearest part of it that exists is a folder).
+void check_out_folder(const std::string& out);
+
+// Checks the --out folder and makes it; RuntimeFailure when it cannot be made.
 void make_out_folder(const std::string& out);
 
 // The scene named by --scene (a file or a shipped scene; the default scene when empty), refused

@@ -73,7 +73,10 @@ class SceneBuilder {
     } else if (type == "traffic") {
       reserve_memory(object, bytes_per_mover * (object.has("cars") ? object["cars"].number(0, 1e6) : 0.0));
       add_moving_set(read_traffic(object, seed_));
-    } else if (std::vector<PlacedMesh> pieces = read_set_piece(object, type, seed_); !pieces.empty()) {
+    } else if (std::vector<PlacedMesh> pieces = read_set_piece(object, type, seed_, [this](const JsonField& field, double bytes) {
+                 reserve_memory(field, bytes);
+               });
+               !pieces.empty()) {
       for (PlacedMesh& piece : pieces) {
         scene_.meshes.push_back(std::move(piece.mesh));
         for (std::size_t i = 0; i < piece.transforms.size(); ++i) {

@@ -42,10 +42,10 @@ int run_view(const ViewOptions& o) {
   settings.render = render_settings(o.render);
   if (o.exit_after < 0) throw InputError("--exit-after: must be 0 or more");
   if (!o.screenshot.empty() && o.exit_after == 0) throw InputError("--screenshot: needs --exit-after N (the frame it shows)");
-  if (o.fps != 0.0) settings.fps = check_fps(o.fps);
+  if (o.fps) settings.fps = check_fps(*o.fps);
   if (!std::filesystem::is_directory(o.out)) throw InputError("--out: " + o.out + ": not a folder");
-  check_parent_folder("--record", o.record);
-  check_parent_folder("--screenshot", o.screenshot);
+  check_output_file("--record", o.record);
+  check_output_file("--screenshot", o.screenshot);
   if (!o.play.empty()) settings.play = CameraPath::load(open_input(o.play, "paths"));
   settings.record_file = o.record;
   settings.out = o.out;

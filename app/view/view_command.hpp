@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 
 namespace ecoview {
@@ -13,7 +14,7 @@ struct ViewOptions {
   int exit_after = 0;  // frames; 0 runs until the window is closed
   std::string play;                 // camera path to follow from t = 0
   std::string record = "path.json";  // where R writes the recorded path
-  double fps = 0.0;                  // 0: real time; otherwise frame i is at time i / fps, as in capture
+  std::optional<double> fps;         // none: real time; otherwise frame i is at time i / fps, as in capture
   std::string screenshot;            // the window as shown after the last frame
   std::string out = ".";             // where P writes frames as capture does
   bool no_hud = false;
