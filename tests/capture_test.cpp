@@ -96,7 +96,7 @@ TEST(Capture, ResumesWhereItStopped) {
 // Each shipped scene renders on each headless backend (the default scene, the ecosystem, above).
 class ShippedScene : public testing::TestWithParam<std::tuple<std::string, std::string>> {};
 
-TEST_P(ShippedScene, Captures) {
+TEST_P(ShippedScene, CapturesWithShadowsInView) {
   const auto& [scene, backend] = GetParam();
   const TempDir dir;
   const CommandResult r = run_ecoview({"capture", "--scene", scene, "--backend", backend, "--size", "192x108",

@@ -83,7 +83,8 @@ TEST(FlightCamera, OrbitKeepsThePointInViewAndItsDistance) {
   expect_near(camera.camera().position, before.position + camera.speed() * before.forward(), 1e-3f);
 }
 
-TEST(FlightCamera, SpeedStepsAndPlace) {
+// A speed step is 1.25 times (two make 1.5625); place() takes the given pose as it is.
+TEST(FlightCamera, SpeedStepsByAQuarterAndPlaceTakesThePose) {
   FlightCamera camera(start_camera());
   const float speed = camera.speed();
   camera.scale_speed(2.0f);
