@@ -33,6 +33,12 @@ TEST(MeshFile, EveryOpenMeshFormatLoadsTheTetrahedron) {
   }
 }
 
+// A triangle's three corners, before its face.
+const std::string ply_triangle_corners =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+const std::string obj_triangle_corners = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+
 void expect_refused(const std::string& name, const std::string& bytes, const char* part) {
   try {
     load(name, bytes);
@@ -47,10 +53,7 @@ TEST(MeshFile, ImpossibleCountsAreRefusedBeforeReading) {
   expect_refused("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n41113238394 0 1 2\n", "face 0 declares");
   expect_refused("c.off", "OFF BINARY\n", "binary OFF");
   expect_refused("d.ply", "ply\nformat ascii 1.0\nelement vertex 9999999999\nproperty float x\nend_header\n", "vertex");
-  expect_refused("e.ply",
-                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                 "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n",
-                 "declares 4000000000");
+  expect_refused("e.ply", ply_triangle_corners + "4000000000 0 1 2\n", "declares 4000000000");
   expect_refused("f.ply",
                  "ply\nformat binary_little_endian 1.0\nelement face 1\nproperty list int int vertex_indices\nend_header\n",
                  "list counts of type 'int'");
@@ -59,21 +62,18 @@ TEST(MeshFile, ImpossibleCountsAreRefusedBeforeReading) {
 // OpenMesh's readers drop a face that refers to a vertex the file lacks, and a vertex they cannot
 // parse: both are corrupt files, not smaller meshes.
 TEST(MeshFile, ReferencesToMissingOrUnreadableVerticesAreRefused) {
-  expect_refused("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 99\n", "line 5: a face refers to vertex '99'");
-  expect_refused("b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "vertex '0'");
-  expect_refused("c.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 -2 -1\n", "vertex '-4'");
-  expect_refused("d.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n", "normal '2'");
-  expect_refused("e.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/3 3/1\n", "texture coordinate '3'");
+  expect_refused("a.obj", obj_triangle_corners + "f 1 2 3\nf 1 2 99\n", "line 5: a face refers to vertex '99'");
+  expect_refused("b.obj", obj_triangle_corners + "f 0 1 2\n", "vertex '0'");
+  expect_refused("c.obj", obj_triangle_corners + "f -4 -2 -1\n", "vertex '-4'");
+  expect_refused("d.obj", obj_triangle_corners + "vn 0 0 1\nf 1//1 2//1 3//2\n", "normal '2'");
+  expect_refused("e.obj", obj_triangle_corners + "vt 0 0\nf 1/1 2/3 3/1\n", "texture coordinate '3'");
   expect_refused("f.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: a vertex that is not three finite numbers");
   expect_refused("g.obj", "v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1");
   expect_refused("h.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "refers to a vertex the file does not have");
   expect_refused("i.off", "OFF\n3 1 0\n0 inf 0\n1 0 0\n0 1 0\n3 0 1 2\n", "vertex 0 is not three finite numbers");
-  expect_refused("j.ply",
-                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                 "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2000000000\n",
-                 "refers to a vertex the file does not have");
+  expect_refused("j.ply", ply_triangle_corners + "3 0 1 2000000000\n", "refers to a vertex the file does not have");
   // Relative references and v//vn, v/vt forms that are right load.
-  EXPECT_EQ(load("k.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\nf -3/1/1 -2/1/1 -1//1\n").triangle_count(), 1u);
+  EXPECT_EQ(load("k.obj", obj_triangle_corners + "vn 0 0 1\nvt 0 0\nf -3/1/1 -2/1/1 -1//1\n").triangle_count(), 1u);
 }
 
 TEST(MeshFile, UnknownFormatAndMissingFileAreNamed) {
