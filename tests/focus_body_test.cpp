@@ -1,6 +1,6 @@
 // Focus bodies and the focused uniform map, over many random cameras and lights: every receiver
-// the camera sees must land inside the map that holds its shadow, and no configuration may give
-// a matrix with NaN or infinity.
+// the camera sees must land inside the map that holds its shadow, the map is tight around them,
+// and a lamp among them gets cube faces.
 #include "random_setups.hpp"
 #include "shadow/aliasing.hpp"
 #include "shadow/focus_body.hpp"
@@ -69,6 +69,64 @@ TEST(FocusedMap, SpotReceiversInsideTheConeLandInsideTheMap) {
     }
   }
   EXPECT_GT(checked, 100);
+}
+
+constexpr float wide = 16.0f / 9.0f;
+
+// The focused uniform map is fitted to the receivers (with 1% padding), not to the scene: their
+// extreme points reach nearly to the map's edge (1 / 1.02) on both sides of both axes, and none
+// lies beyond. (Not spot lights: their map is clamped to the cone, which cuts off receivers in the
+// corners of the light's square pyramid.)
+TEST(FocusedMapFit, ReceiversReachTheMapsEdgesAndStayInside) {
+  pointgen::Random rng(500);
+  int directional = 0, point = 0;  // setups checked
+  for (int i = 0; i < 600; ++i) {
+    const Camera camera = random_camera(rng);
+    const Light light = random_light(rng, i % 2 ? LightType::point : LightType::directional);
+    const FocusBodies bodies = focus_bodies(camera.projection(wide) * camera.view(), light, scene_box());
+    if (bodies.receivers.empty()) continue;
+    const ShadowSetup setup = focused_uniform_map(camera, wide, light, scene_box(), 2048);
+    if (setup.selection != ViewSelection::single) continue;  // cube faces have fixed 90° sides
+    glm::vec2 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& p : bodies.receivers.vertices()) {
+      const glm::vec2 q(ndc(setup.views[0].view_projection(), p));
+      lo = glm::min(lo, q);
+      hi = glm::max(hi, q);
+    }
+    EXPECT_GE(glm::min(lo.x, lo.y), -1.0001f) << "camera " << i;
+    EXPECT_LE(glm::max(hi.x, hi.y), 1.0001f) << "camera " << i;
+    EXPECT_LE(glm::max(lo.x, lo.y), -0.95f) << "camera " << i << ": map not tight";
+    EXPECT_GE(glm::min(hi.x, hi.y), 0.95f) << "camera " << i << ": map not tight";
+    ++(light.type == LightType::point ? point : directional);
+  }
+  EXPECT_GT(directional, 150);
+  EXPECT_GT(point, 100);  // with one map
+}
+
+// A point light inside the receivers (V ∩ S) sees them in every direction: no single frustum
+// holds them, so it gets the six cube faces. A lamp from which every corner of the view frustum
+// (and so every receiver) lies within 30° of one axis is served by one map (limit 60°).
+TEST(FocusedMapPointLight, LampAmongReceiversGetsACubeDistantLampOneMap) {
+  const Camera overview = camera_looking({0, 15, 45}, {0, 0, 0}, 0.5f, 200.0f);
+  const Light middle{LightType::point, {0, 5, 0}, {0, -1, 0}, 30};
+  const glm::mat4 vp = overview.projection(wide) * overview.view();
+  const glm::vec3 lamp_ndc = ndc(vp, middle.position);
+  ASSERT_LT(glm::max(std::abs(lamp_ndc.x), glm::max(std::abs(lamp_ndc.y), std::abs(lamp_ndc.z))), 1.0f);  // in V
+  const ShadowSetup cube = focused_uniform_map(overview, wide, middle, scene_box(), 1024);
+  EXPECT_EQ(cube.selection, ViewSelection::cube_faces);
+  EXPECT_EQ(cube.views.size(), 6u);
+
+  const Camera close_up = camera_looking({0, 3, 10}, {0, 0, 0}, 0.5f, 20.0f);
+  const Light high{LightType::point, {0, 300, 0}, {0, -1, 0}, 30};
+  const glm::vec3 axis = glm::normalize(close_up.target - high.position);
+  const glm::mat4 inverse = glm::inverse(close_up.projection(wide) * close_up.view());
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec4 c = inverse * glm::vec4(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1, 1);
+    ASSERT_GT(glm::dot(glm::normalize(glm::vec3(c) / c.w - high.position), axis), std::cos(glm::radians(30.0f)));
+  }
+  const ShadowSetup single = focused_uniform_map(close_up, wide, high, scene_box(), 1024);
+  EXPECT_EQ(single.selection, ViewSelection::single);
+  EXPECT_EQ(single.views.size(), 1u);
 }
 
 }  // namespace

@@ -47,4 +47,25 @@ Camera deep_view_camera() {
   return camera;
 }
 
+Camera camera_looking(const glm::vec3& position, const glm::vec3& target, float near, float far) {
+  Camera c;
+  c.position = position;
+  c.target = target;
+  c.near = near;
+  c.far = far;
+  return c;
+}
+
+glm::vec3 ndc(const glm::mat4& m, const glm::vec3& p) {
+  const glm::vec4 c = m * glm::vec4(p, 1.0f);
+  return glm::vec3(c) / c.w;
+}
+
+float ground_texel_area(const glm::mat4& m, const glm::vec3& p) {
+  const float h = 0.5f;
+  const glm::vec2 du = (glm::vec2(ndc(m, p + glm::vec3(h, 0, 0))) - glm::vec2(ndc(m, p - glm::vec3(h, 0, 0)))) / (2 * h);
+  const glm::vec2 dv = (glm::vec2(ndc(m, p + glm::vec3(0, 0, h))) - glm::vec2(ndc(m, p - glm::vec3(0, 0, h)))) / (2 * h);
+  return 1.0f / std::abs(du.x * dv.y - du.y * dv.x);
+}
+
 }  // namespace shadow

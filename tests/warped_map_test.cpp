@@ -2,7 +2,8 @@
 // geometry the test computes itself: every ray from
 // a visible receiver to the light, inside the scene, maps into the shadow map's clip cube with
 // depth growing towards the receiver; the PSM's light cases follow the paper's geometric rule; no
-// configuration, random or degenerate, gives NaN or infinity.
+// configuration, random or degenerate, gives NaN or infinity; a pushed PSM near plane refines the
+// texels at its depth, and LiSPSM fades into the uniform map as the view turns parallel to the light.
 #include "random_setups.hpp"
 #include "shadow/aliasing.hpp"
 #include "shadow/cascaded_map.hpp"
@@ -171,22 +172,75 @@ TEST(PostPerspectiveLight, FollowsThePapersGeometricRule) {
 TEST(WarpedMap, NearTexelsAreSmallerThanTheUniformMapsForALightAcrossTheView) {
   const Camera camera = deep_view_camera();
   const Light sun{LightType::directional, {}, glm::normalize(glm::vec3(1, -1, 0)), 30};
-  // The ground's texel area at p: the determinant of the map's (u, v) against the ground's (x, z).
-  auto texel_area = [](const glm::mat4& m, const glm::vec3& p) {
-    auto uv = [&](const glm::vec3& q) {
-      const glm::vec4 c = m * glm::vec4(q, 1.0f);
-      return glm::vec2(c) / c.w;
-    };
-    const float h = 1e-2f;
-    const glm::vec2 du = (uv(p + glm::vec3(h, 0, 0)) - uv(p)) / h, dv = (uv(p + glm::vec3(0, 0, h)) - uv(p)) / h;
-    return 1.0f / std::abs(du.x * dv.y - du.y * dv.x);
-  };
   const glm::vec3 near_ground(0, 0, 40);
-  const float psm = texel_area(perspective_shadow_map(camera, aspect, sun, scene_box(), 1024).views[0].view_projection(), near_ground);
-  const float uniform = texel_area(focused_uniform_map(camera, aspect, sun, scene_box(), 1024).views[0].view_projection(), near_ground);
-  const float lispsm = texel_area(light_space_perspective_map(camera, aspect, sun, scene_box(), 1024).views[0].view_projection(), near_ground);
+  const float psm = ground_texel_area(perspective_shadow_map(camera, aspect, sun, scene_box(), 1024).views[0].view_projection(), near_ground);
+  const float uniform = ground_texel_area(focused_uniform_map(camera, aspect, sun, scene_box(), 1024).views[0].view_projection(), near_ground);
+  const float lispsm = ground_texel_area(light_space_perspective_map(camera, aspect, sun, scene_box(), 1024).views[0].view_projection(), near_ground);
   EXPECT_LT(psm, uniform / 16.0f);
   EXPECT_LT(lispsm, uniform / 4.0f);
+}
+
+// PSM, seed 000, Sect. 6: post-perspective depth is z_ndc = A - B n / z, so the depth range a
+// ground element at depth z takes grows with the near plane n; for a light across the view the
+// map resolves that depth, so pushing the near plane out to just before the point refines its
+// texels.
+TEST(PsmMap, PushedNearPlaneGivesFinerTexelsAtItsDepth) {
+  const Camera camera = deep_view_camera();
+  const Light sun{LightType::directional, {}, glm::normalize(glm::vec3(1, -1, 0)), 30};
+  int checked = 0;
+  for (float z : {38.0f, 33.0f, 25.0f}) {  // ground straight ahead, some 7, 12 and 20 m away
+    const glm::vec3 ground(0, 0, z);
+    const float depth = glm::dot(ground - camera.position, camera.forward());
+    const glm::mat4 unpushed = perspective_shadow_map(camera, aspect, sun, scene_box(), 1024, 0.0f).views[0].view_projection();
+    const glm::mat4 pushed = perspective_shadow_map(camera, aspect, sun, scene_box(), 1024, 0.9f * depth).views[0].view_projection();
+    EXPECT_LT(ground_texel_area(pushed, ground), ground_texel_area(unpushed, ground)) << "depth " << depth;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
+}
+
+// LiSPSM under a sun straight down, the camera tilted by gamma from straight down. A uniform
+// (orthographic) map gives the ground the same texel area everywhere; the warp makes texels far
+// ahead larger than near ones by a factor that falls to 1 as gamma does (its centre recedes as
+// 1 / sin gamma). Below min_sin_gamma = 1e-3 the method returns the focused uniform map itself.
+
+Camera tilted_down(float gamma) {
+  Camera c = camera_looking({0, 30, 0}, {0, 30 - 30 * std::cos(gamma), -30 * std::sin(gamma)}, 0.5f, 200.0f);
+  c.up = {0, 0, -1};
+  return c;
+}
+
+const Light noon_sun{LightType::directional, {}, {0, -1, 0}, 30};
+
+// Ground texel area 6 m beyond the ground point the camera looks at, over that 6 m before it.
+float far_to_near_texel_area(float gamma) {
+  const Camera camera = tilted_down(gamma);
+  const glm::mat4 m = light_space_perspective_map(camera, aspect, noon_sun, scene_box(), 2048).views[0].view_projection();
+  const glm::vec3 looked_at(0, 0, -30 * std::tan(gamma));
+  return ground_texel_area(m, looked_at + glm::vec3(0, 0, -6)) / ground_texel_area(m, looked_at + glm::vec3(0, 0, 6));
+}
+
+TEST(LispsmMap, WarpFadesIntoTheUniformMapAsTheViewTurnsParallelToTheLight) {
+  float previous = INFINITY;
+  for (float gamma : {0.5f, 0.1f, 0.02f, 0.002f}) {
+    const float warp = far_to_near_texel_area(gamma) - 1.0f;
+    EXPECT_GT(warp, 0.0f) << "gamma " << gamma;
+    EXPECT_LT(warp, previous) << "gamma " << gamma;
+    previous = warp;
+  }
+  EXPECT_GT(far_to_near_texel_area(0.5f), 1.2f);  // a real warp at 29°: near texels clearly finer
+  EXPECT_LT(previous, 0.02f);  // at 0.1°: within 2% of uniform
+}
+
+TEST(LispsmMap, BelowMinSinGammaItIsTheUniformMapAboveItAWarp) {
+  for (float sin_gamma : {5e-4f, 2e-3f}) {
+    const Camera camera = tilted_down(std::asin(sin_gamma));
+    const ShadowSetup lispsm = light_space_perspective_map(camera, aspect, noon_sun, scene_box(), 2048);
+    const ShadowSetup uniform = focused_uniform_map(camera, aspect, noon_sun, scene_box(), 2048);
+    ASSERT_EQ(lispsm.views.size(), 1u);
+    const bool same = lispsm.views[0].view_projection() == uniform.views[0].view_projection();
+    EXPECT_EQ(same, sin_gamma < 1e-3f) << "sin gamma " << sin_gamma << ": " << lispsm.description;
+  }
 }
 
 // A setup the renderer can draw: at least one view, every matrix finite.
