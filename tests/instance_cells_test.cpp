@@ -1,5 +1,6 @@
-// Grouping instances into cells for the sampler.
+// Grouping instances into cells for the sampler, and culling them by cells to a view.
 #include "pointgen/random.hpp"
+#include "pointgen/sampling/frustum_culling.hpp"
 #include "pointgen/sampling/instance_cells.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
 
@@ -56,6 +57,33 @@ TEST(InstanceCells, HoldEveryInstanceOnceInBoxesAroundTheirSpheres) {
   cells.update(0, table, mesh);
   ASSERT_EQ(cells.by_table()[0].size(), 1u);
   EXPECT_EQ(cells.by_table()[0][0].members.size(), 10u);
+}
+
+// Spheres of radius 1 on a 200 x 200 m square around a camera at the origin looking down -z with
+// a 90° field of view and aspect 1: a sphere is in view when it reaches over |x| <= -z and
+// |y| <= -z and in front of the near plane z = -0.1 (the far plane is beyond them all). Culled by
+// cells, every such sphere must be found and no other.
+TEST(InstancesInView, AreTheSpheresThatReachIntoTheFrustum) {
+  SampledMesh mesh;
+  mesh.radius = 1.0f;
+  InstanceTable table;
+  Random rng(22);
+  for (int i = 0; i < 4000; ++i) {
+    table.add(glm::translate(glm::mat4(1.0f), {rng.uniform(-100.0f, 100.0f), rng.uniform(-3.0f, 3.0f), rng.uniform(-100.0f, 100.0f)}),
+              glm::vec3(1.0f), derive_seed(22, i));
+  }
+  const InstanceCells cells({table}, {mesh});
+  const glm::mat4 view = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f);
+  const std::vector<std::uint32_t> seen = instances_in_view(ViewFrusta({view}), cells.by_table()[0], table, mesh);
+  std::vector<std::uint32_t> expected;
+  const float reach = std::sqrt(2.0f);  // a side plane's normal is (1, 0, 1) / sqrt(2)
+  for (std::uint32_t i = 0; i < table.size(); ++i) {
+    const glm::vec3 c(table.transforms[i][3]);
+    if (std::abs(c.x) <= -c.z + reach && std::abs(c.y) <= -c.z + reach && c.z <= 0.9f) expected.push_back(i);
+  }
+  EXPECT_GT(expected.size(), 500u);
+  EXPECT_LT(expected.size(), 2000u);
+  EXPECT_EQ(seen, expected);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "app/clock.hpp"
 #include "app/errors.hpp"
 #include "app/render/pixel_rays.hpp"
+#include "pointgen/sampling/frustum_culling.hpp"
 #include "shadow/aliasing.hpp"
 #include "shadow/cascaded_map.hpp"
 #include "shadow/lispsm_map.hpp"
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <future>
+#include <numeric>
 #include <optional>
 
 namespace ecoview {
@@ -172,6 +174,31 @@ void Renderer::upload_polygons(const pointgen::SampledFrame& selection) {
   }
 }
 
+pointgen::SampledFrame Renderer::polygons_in_view(const std::vector<glm::mat4>& views) const {
+  const pointgen::ViewFrusta frusta(views);
+  pointgen::SampledFrame frame;
+  frame.polygons.resize(tables_.size());
+  for (std::size_t g = 0; g < tables_.size(); ++g) {
+    if (!scene_.point_meshes[tables_[g].mesh]) continue;
+    const pointgen::SampledMesh& mesh = samples_.meshes()[tables_[g].mesh];
+    frame.polygons[g] = pointgen::instances_in_view(frusta, cells_.by_table()[g], tables_[g], mesh);
+    frame.triangle_count += frame.polygons[g].size() * mesh.triangles;
+  }
+  return frame;
+}
+
+pointgen::SampledFrame Renderer::every_polygon() const {
+  pointgen::SampledFrame frame;
+  frame.polygons.resize(tables_.size());
+  for (std::size_t g = 0; g < tables_.size(); ++g) {
+    if (!scene_.point_meshes[tables_[g].mesh]) continue;
+    frame.polygons[g].resize(tables_[g].size());
+    std::iota(frame.polygons[g].begin(), frame.polygons[g].end(), 0u);
+    frame.triangle_count += tables_[g].size() * samples_.meshes()[tables_[g].mesh].triangles;
+  }
+  return frame;
+}
+
 pointgen::SampledFrame Renderer::measured(const pointgen::SampledFrame& selection) const {
   pointgen::SampledFrame out;
   out.polygons = selection.polygons;
@@ -257,10 +284,10 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
   }
   shadow_timer_.start();
   for (std::size_t layer = 0; layer < setup_.views.size(); ++layer) {
-    if (settings_.points) upload_polygons(selections[layer]);
+    const shadow::ShadowView& v = setup_.views[layer];
+    upload_polygons(settings_.points ? selections[layer] : polygons_in_view(culling_frusta(v)));
     shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer));
     if (!settings_.points) continue;
-    const shadow::ShadowView& v = setup_.views[layer];
     shadow_points_->upload(selections[layer].points, tables_, samples_);
     shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
                                settings_.shadow_splat_size, shadow_point_bias, v.paraboloid_parameters());
@@ -406,9 +433,12 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
     selection = frame_sample.get();
     stats_.sample_ms += frame_sample_ms;
     if (settings_.measure != RenderSettings::Measure::off) selection = measured(selection);
-    upload_polygons(selection);
     frame_points_.upload(selection.points, tables_, samples_);
+  } else {
+    // Shadow volumes are drawn from the frame's polygons and need the casters out of view too.
+    selection = volumes ? every_polygon() : polygons_in_view({view_projection_});
   }
+  upload_polygons(selection);
   if (shadows && volumes) lookup.emplace(render_shadow_volumes(camera, light));
   if (shadows && reference) lookup.emplace(render_reference_mask(camera, light));
   frame_timer_.start();
@@ -416,8 +446,7 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   stats_.frame_pass_ms = frame_timer_.stop_ms();
   stats_.points = selection.point_count;
   for (const pointgen::InstanceTable& table : tables_) {
-    const bool sampled = settings_.points && scene_.point_meshes[table.mesh];
-    if (!sampled) stats_.triangles += scene_.meshes[table.mesh].triangle_count() * table.size();
+    if (!scene_.point_meshes[table.mesh]) stats_.triangles += scene_.meshes[table.mesh].triangle_count() * table.size();
   }
   stats_.triangles += selection.triangle_count;
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {

@@ -112,6 +112,10 @@ class Renderer {
   ExactVisibility& exact();
   // The frame pass proper: polygons, then the point splats.
   void draw_frame(const shadow::Camera& camera, const shadow::Light& light, const std::optional<FramePass::ShadowLookup>& lookup);
+  // With every plant as polygons (no points): the instances of point meshes in view, culled as the
+  // sampler culls them, so that points and polygons are timed on the same instances; and all.
+  pointgen::SampledFrame polygons_in_view(const std::vector<glm::mat4>& views) const;
+  pointgen::SampledFrame every_polygon() const;
   // The selection as RenderSettings::measure asks.
   pointgen::SampledFrame measured(const pointgen::SampledFrame& selection) const;
 

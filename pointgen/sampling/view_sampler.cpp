@@ -2,6 +2,7 @@
 
 #include "pointgen/random.hpp"
 #include "pointgen/sampling/coverage_grid.hpp"
+#include "pointgen/sampling/frustum_culling.hpp"
 
 #include <algorithm>
 #include <array>
@@ -26,17 +27,6 @@ constexpr float hidden_transmittance = 0.001f;
 // A cell is counted as one object when its box is smaller than this times its distance.
 constexpr float aggregate_radius = 0.2f;
 
-using Frustum = std::array<glm::vec4, 6>;
-
-// The six frustum planes of a view-projection matrix (Gribb-Hartmann), inside where dot >= 0.
-Frustum frustum_planes(const glm::mat4& m) {
-  const glm::vec4 r0(m[0][0], m[1][0], m[2][0], m[3][0]), r1(m[0][1], m[1][1], m[2][1], m[3][1]),
-      r2(m[0][2], m[1][2], m[2][2], m[3][2]), r3(m[0][3], m[1][3], m[2][3], m[3][3]);
-  Frustum planes = {r3 + r0, r3 - r0, r3 + r1, r3 - r1, r3 + r2, r3 - r2};
-  for (glm::vec4& p : planes) p /= glm::length(glm::vec3(p));
-  return planes;
-}
-
 // What is counted, hidden and drawn as one: an instance inside one of the views, or a part of it.
 struct Candidate {
   std::uint32_t table = 0, instance = 0;
@@ -46,12 +36,6 @@ struct Candidate {
   float area = 0.0f;   // square metres
   float order = 0.0f;  // depth in the first view: sorted front to back
 };
-
-bool inside_any(const std::vector<Frustum>& frusta, const glm::vec3& center, float radius) {
-  return std::any_of(frusta.begin(), frusta.end(), [&](const Frustum& planes) {
-    return std::all_of(planes.begin(), planes.end(), [&](const glm::vec4& p) { return glm::dot(glm::vec3(p), center) + p.w >= -radius; });
-  });
-}
 
 // The screen rectangle of an instance's or a part's box.
 std::optional<CoverageGrid::Rect> rect_of(const CoverageGrid& grid, const Candidate& c, const SampledMesh& mesh,
@@ -155,10 +139,9 @@ std::optional<CoverageGrid::Rect> rect_of(const CoverageGrid& grid, const Instan
 class ViewSampling {
  public:
   ViewSampling(const SamplerView& view, const std::vector<InstanceTable>& tables, const std::vector<SampledMesh>& meshes)
-      : view_(view), tables_(tables), meshes_(meshes) {
+      : view_(view), tables_(tables), meshes_(meshes), frusta_(view.views) {
     frame_.polygons.resize(tables.size());
     frame_.polygon_parts.resize(tables.size());
-    for (const glm::mat4& m : view.views) frusta_.push_back(frustum_planes(m));
     // Occlusion and the cap need one image; several views (cube maps) count every instance whole.
     if ((view.occlusion || view.cap_to_pixels) && view.views.size() == 1) coverage_.emplace(view.views.front(), view.pixels, view.splat_pixels);
     if (coverage_ && view.occlusion) occlusion_ = &*coverage_;
@@ -221,7 +204,7 @@ class ViewSampling {
 
   bool box_in_view(const InstanceCell& cell) const {
     const glm::vec3 center = 0.5f * (cell.min + cell.max);
-    return inside_any(frusta_, center, 0.5f * glm::length(cell.max - cell.min));
+    return frusta_.hold(center, 0.5f * glm::length(cell.max - cell.min));
   }
 
   // The cell's screen rectangle in the occlusion grid; none without occlusion, or for meshes that
@@ -241,7 +224,7 @@ class ViewSampling {
       const float scale = uniform_scale(m);
       Candidate whole{cell.table, i, nullptr, glm::vec3(m * glm::vec4(mesh.center, 1.0f)), mesh.radius * scale,
                       mesh.area * scale * scale};
-      if (!inside_any(frusta_, whole.center, whole.radius) || !shadows_receivers(mesh.center, mesh.half_size, m)) continue;
+      if (!frusta_.hold(whole.center, whole.radius) || !shadows_receivers(mesh.center, mesh.half_size, m)) continue;
       if (!occlusion_ || !counted_by_parts(view_, *occlusion_, mesh, m, whole)) {
         whole.order = depth_order(view_, whole.center);
         open.candidates.push_back(whole);
@@ -261,7 +244,7 @@ class ViewSampling {
     for (const MeshPart& part : mesh.parts) {
       Candidate c{whole.table, whole.instance, &part, glm::vec3(transform * glm::vec4(part.center, 1.0f)), part.radius * scale,
                   part.area * scale * scale};
-      if (!inside_any(frusta_, c.center, c.radius) || !shadows_receivers(part.center, part.half_size, transform)) continue;
+      if (!frusta_.hold(c.center, c.radius) || !shadows_receivers(part.center, part.half_size, transform)) continue;
       c.order = depth_order(view_, c.center);
       out.push_back(c);
     }
@@ -434,7 +417,7 @@ class ViewSampling {
   const SamplerView& view_;
   const std::vector<InstanceTable>& tables_;
   const std::vector<SampledMesh>& meshes_;
-  std::vector<Frustum> frusta_;
+  ViewFrusta frusta_;
   std::optional<CoverageGrid> coverage_;
   CoverageGrid* occlusion_ = nullptr;
   std::vector<OpenCell> open_;  // a heap (later)
