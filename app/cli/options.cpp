@@ -67,7 +67,7 @@ void add_render_options(CLI::App& command, RenderOptions& o) {
                                          "frame's surface, is least) or none")
       ->capture_default_str();
   command.add_option("--geometry", o.geometry, "points: far plants, people and animals as view-adaptive point "
-                                               "splats; polygons: everything as polygons")->capture_default_str();
+                                               "splats; polygons: everything as polygons (plants culled to each view as the points are)")->capture_default_str();
   command.add_option("--k", o.k, "Point density: points per pixel of projected surface")->capture_default_str();
   command.add_option("--splat", o.splat, "Splat size in pixels (per side)")->capture_default_str();
 }
