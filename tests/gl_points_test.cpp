@@ -91,6 +91,34 @@ TEST_F(PointRendering, PointDepthsMatchPolygonDepths) {
   EXPECT_GT(static_cast<double>(close) / static_cast<double>(both), 0.85);
 }
 
+// With every plant as polygons, plants out of view are not drawn: a second grove behind the camera
+// leaves the image and the triangles drawn as they are without it. (Without shadows: the larger
+// scene would fit the shadow map differently.)
+TEST(PolygonMode, PlantsOutOfViewAreNotDrawn) {
+  const std::unique_ptr<GlContext> context = create_headless_context("egl");
+  std::string behind = grove();
+  const std::string more = R"(, {"type": "plant", "species": "beech", "positions": [[0, 0, 60], [20, 0, 80], [-30, 0, 100]]}]})";
+  behind.replace(behind.size() - 2, 2, more);
+  RenderSettings settings;
+  settings.width = 320;
+  settings.height = 180;
+  settings.points = false;
+  settings.method = ShadowMethod::none;
+  Image8 color[2];
+  std::size_t triangles[2];
+  int i = 0;
+  for (const std::string& json : {grove(), behind}) {
+    const Scene scene = load_scene({"grove.json", json, [](const std::string&) { return std::nullopt; }});
+    Renderer renderer(scene, settings);
+    renderer.render(scene.camera, scene.lights[0]);
+    color[i] = renderer.frame().read_color();
+    triangles[i++] = renderer.stats().triangles;
+  }
+  EXPECT_GT(triangles[0], 0u);
+  EXPECT_EQ(triangles[1], triangles[0]);
+  EXPECT_EQ(color[1].samples, color[0].samples);
+}
+
 // View-adaptive: the sampler gives every surface about k points per pixel of its image, so the
 // points on the surface seen in a pixel do not depend on its distance (docs/point_density.md).
 // Cacti, whose stems are solid: far foliage finer than a pixel covers the pixels it is counted in
