@@ -37,18 +37,6 @@ class Tokens {
   std::istream& in_;
 };
 
-// Whether `text` starts with three numbers finite as floats. (OpenMesh's readers drop a vertex
-// they cannot parse, so that the faces after it refer to the wrong ones or to none.)
-bool three_finite_numbers(const char* text) {
-  for (int i = 0; i < 3; ++i) {
-    char* end = nullptr;
-    const double value = std::strtod(text, &end);
-    if (end == text || !(std::abs(value) <= std::numeric_limits<float>::max())) return false;
-    text = end;
-  }
-  return true;
-}
-
 void check_off(const std::string& path, const std::string& bytes) {
   std::istringstream in(bytes);
   Tokens tokens(in);
@@ -162,51 +150,21 @@ void check_ply(const std::string& path, const std::string& bytes) {
   }
 }
 
-// OBJ declares no counts, but its faces refer to the positions, texture coordinates and normals
-// before them (from 1, or from the last back with negative numbers); OpenMesh drops a bad
-// position reference with a log line and ignores bad others.
-void check_obj(const std::string& path, const std::string& bytes) {
-  std::istringstream in(bytes);
-  std::string line;
-  long long counts[3] = {0, 0, 0};  // v, vt, vn so far
-  const char* names[3] = {"vertex", "texture coordinate", "normal"};
-  for (long long number = 1; std::getline(in, line); ++number) {
-    std::istringstream fields(line);
-    std::string keyword;
-    fields >> keyword;
-    if (keyword == "v" && !three_finite_numbers(line.c_str() + line.find('v') + 1)) {
-      throw FileError(path, "line " + std::to_string(number) + ": a vertex that is not three finite numbers");
-    }
-    if (keyword == "v") ++counts[0];
-    if (keyword == "vt") ++counts[1];
-    if (keyword == "vn") ++counts[2];
-    if (keyword != "f") continue;
-    for (std::string corner; fields >> corner;) {
-      std::istringstream parts(corner);
-      std::string part;
-      for (int k = 0; k < 3 && std::getline(parts, part, '/'); ++k) {
-        if (part.empty() && k > 0) continue;  // v//vn, v/vt
-        long long index = 0;
-        try {
-          index = std::stoll(part);
-        } catch (const std::exception&) {
-          index = 0;
-        }
-        if (index == 0 || index > counts[k] || -index > counts[k]) {
-          throw FileError(path, "line " + std::to_string(number) + ": a face refers to " + names[k] + " '" + part.substr(0, 20) +
-                                    "', of " + std::to_string(counts[k]) + " defined before it (corrupt file?)");
-        }
-      }
-    }
-  }
-}
-
 }  // namespace
+
+bool three_finite_numbers(const char* text) {
+  for (int i = 0; i < 3; ++i) {
+    char* end = nullptr;
+    const double value = std::strtod(text, &end);
+    if (end == text || !(std::abs(value) <= std::numeric_limits<float>::max())) return false;
+    text = end;
+  }
+  return true;
+}
 
 void check_declared_counts(const std::string& path, const std::string& ext, const std::string& bytes) {
   if (ext == ".off") check_off(path, bytes);
   if (ext == ".ply") check_ply(path, bytes);
-  if (ext == ".obj") check_obj(path, bytes);
 }
 
 }  // namespace pointgen

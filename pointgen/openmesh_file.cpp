@@ -2,12 +2,14 @@
 #include "pointgen/declared_counts.hpp"
 #include "pointgen/file_error.hpp"
 #include "pointgen/mesh_file.hpp"
+#include "pointgen/obj_references.hpp"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
 #include <algorithm>
 #include <filesystem>
+#include <mutex>
 #include <sstream>
 
 namespace pointgen {
@@ -17,7 +19,9 @@ using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
 
 // OpenMesh reports problems on its own log streams; ours go into FileError instead. Its readers
 // skip a face that refers to a vertex the file lacks and say so only on omerr, so that stream is
-// kept here to be read after each file (files are read one at a time).
+// kept here to be read after each file. The streams are global: one file is read at a time.
+std::mutex one_file_at_a_time;
+
 std::ostringstream& openmesh_errors() {
   static std::ostringstream errors;
   static const bool redirected = [] {
@@ -44,6 +48,8 @@ glm::vec3 to_glm(const OpenMesh::Vec3f& v) { return {v[0], v[1], v[2]}; }
 }  // namespace
 
 TriangleMesh load_openmesh_format(const std::string& path, const std::string& bytes) {
+  const std::lock_guard lock(one_file_at_a_time);
+  omerr().flush();  // what an earlier file left unflushed is not this one's
   openmesh_errors().str("");
   PolyMesh poly;
   poly.request_vertex_normals();
@@ -54,6 +60,7 @@ TriangleMesh load_openmesh_format(const std::string& path, const std::string& by
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   check_declared_counts(path, ext, bytes);
+  if (ext == ".obj") check_obj_references(path, bytes);
   std::istringstream stream(bytes);
   bool ok = false;
   try {

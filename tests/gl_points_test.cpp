@@ -91,32 +91,63 @@ TEST_F(PointRendering, PointDepthsMatchPolygonDepths) {
   EXPECT_GT(static_cast<double>(close) / static_cast<double>(both), 0.85);
 }
 
-// With every plant as polygons, plants out of view are not drawn: a second grove behind the camera
-// leaves the image and the triangles drawn as they are without it. (Without shadows: the larger
-// scene would fit the shadow map differently.)
+// With every plant as polygons, plants out of view are not drawn and those in view are: five
+// beeches straight ahead give each of their triangles; three more behind the camera change neither
+// the triangles nor the image (without shadows: the larger scene would fit the map differently).
 TEST(PolygonMode, PlantsOutOfViewAreNotDrawn) {
   const std::unique_ptr<GlContext> context = create_headless_context("egl");
-  std::string behind = grove();
-  const std::string more = R"(, {"type": "plant", "species": "beech", "positions": [[0, 0, 60], [20, 0, 80], [-30, 0, 100]]}]})";
-  behind.replace(behind.size() - 2, 2, more);
+  const std::string ahead = R"({"camera": {"position": [0, 8, 0], "target": [0, 6, -60], "fov_y_deg": 40, "near": 0.5, "far": 400},
+      "lights": [{"type": "directional", "direction": [0.4, -0.8, -0.3]}],
+      "objects": [{"type": "plant", "species": "beech", "positions": [[0, 0, -40], [0, 0, -60], [0, 0, -80], [0, 0, -100], [0, 0, -120]]})";
+  const std::string behind = R"(, {"type": "plant", "species": "beech", "positions": [[0, 0, 60], [20, 0, 80], [-30, 0, 100]]})";
   RenderSettings settings;
   settings.width = 320;
   settings.height = 180;
   settings.points = false;
   settings.method = ShadowMethod::none;
   Image8 color[2];
-  std::size_t triangles[2];
+  std::size_t triangles[2], five_beeches = 0;
   int i = 0;
-  for (const std::string& json : {grove(), behind}) {
+  for (const std::string& json : {ahead + "]}", ahead + behind + "]}"}) {
     const Scene scene = load_scene({"grove.json", json, [](const std::string&) { return std::nullopt; }});
+    if (i == 0) five_beeches = 5 * scene.meshes[scene.groups.front().mesh].triangle_count();
     Renderer renderer(scene, settings);
     renderer.render(scene.camera, scene.lights[0]);
     color[i] = renderer.frame().read_color();
     triangles[i++] = renderer.stats().triangles;
   }
-  EXPECT_GT(triangles[0], 0u);
-  EXPECT_EQ(triangles[1], triangles[0]);
+  EXPECT_GT(five_beeches, 0u);
+  EXPECT_EQ(triangles[0], five_beeches);
+  EXPECT_EQ(triangles[1], five_beeches);
   EXPECT_EQ(color[1].samples, color[0].samples);
+}
+
+// ...but a plant out of the camera's view still casts its shadow into it: an 18 m beech 35 m to
+// the left of a camera looking down a plane, under a low sun from the left (26.6° up), throws its
+// shadow some 36 m to the right, across the view. The frame draws the same triangles with and
+// without it; the shadow map must draw it.
+TEST(PolygonMode, APlantOutOfViewCastsItsShadowIntoIt) {
+  const std::unique_ptr<GlContext> context = create_headless_context("egl");
+  const std::string start = R"({"camera": {"position": [0, 2, 0], "target": [0, 0, -20], "fov_y_deg": 40, "near": 0.5, "far": 200},
+      "lights": [{"type": "directional", "direction": [1, -0.5, 0]}],
+      "objects": [{"type": "plane", "center": [0, 0, -20], "size": [200, 200]})";
+  RenderSettings settings;
+  settings.width = 320;
+  settings.height = 180;
+  settings.points = false;
+  std::size_t shadowed[2], triangles[2];
+  int i = 0;
+  for (const std::string& json : {start + "]}", start + R"(, {"type": "plant", "species": "beech", "positions": [[-35, 0, -20]]}]})"}) {
+    const Scene scene = load_scene({"beech.json", json, [](const std::string&) { return std::nullopt; }});
+    Renderer renderer(scene, settings);
+    renderer.render(scene.camera, scene.lights[0]);
+    const Image8 visibility = renderer.frame().read_visibility();
+    shadowed[i] = static_cast<std::size_t>(std::count_if(visibility.samples.begin(), visibility.samples.end(), [](std::uint8_t v) { return v < 128; }));
+    triangles[i++] = renderer.stats().triangles;
+  }
+  EXPECT_EQ(triangles[1], triangles[0]) << "the beech is out of the camera's view";
+  EXPECT_EQ(shadowed[0], 0u);
+  EXPECT_GT(shadowed[1], 500u) << "its shadow should lie across the view";
 }
 
 // View-adaptive: the sampler gives every surface about k points per pixel of its image, so the

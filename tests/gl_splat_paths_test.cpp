@@ -144,7 +144,7 @@ class SplatPaths : public testing::Test {
 
   std::unique_ptr<GlContext> context = create_headless_context("egl");
   Scene scene = spheres();
-  PointSamples samples{scene, 4.0f};
+  PointSamples samples{scene, 4.0f, true};
   glm::mat4 view_projection = scene.camera.projection(static_cast<float>(width) / height) * scene.camera.view();
   std::vector<pointgen::PointDraw> draws;
   Image<float> reference;
@@ -182,7 +182,7 @@ TEST_F(SplatPaths, ComputeSplatDrawsTheReferenceSplat) {
 // (llvmpipe once misread the draw list in that case, scattering points over the frame.)
 TEST_F(SplatPaths, ComputeSplatWalksManySmallDraws) {
   const Scene grid = sphere_grid();
-  const PointSamples grid_samples{grid, 4.0f};
+  const PointSamples grid_samples{grid, 4.0f, true};
   std::vector<pointgen::PointDraw> small;
   for (std::uint32_t i = 0; i < grid.groups[0].size(); ++i) small.push_back({0, i, 1 + i % 31});
   expect_close(compare(cpu_splat(small, grid, grid_samples, view_projection),

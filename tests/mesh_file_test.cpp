@@ -72,8 +72,11 @@ TEST(MeshFile, ReferencesToMissingOrUnreadableVerticesAreRefused) {
   expect_refused("h.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "refers to a vertex the file does not have");
   expect_refused("i.off", "OFF\n3 1 0\n0 inf 0\n1 0 0\n0 1 0\n3 0 1 2\n", "vertex 0 is not three finite numbers");
   expect_refused("j.ply", ply_triangle_corners + "3 0 1 2000000000\n", "refers to a vertex the file does not have");
-  // Relative references and v//vn, v/vt forms that are right load.
-  EXPECT_EQ(load("k.obj", obj_triangle_corners + "vn 0 0 1\nvt 0 0\nf -3/1/1 -2/1/1 -1//1\n").triangle_count(), 1u);
+  expect_refused("k.obj", "f -1 -2 -3\n" + obj_triangle_corners, "vertex '-1'");  // relative to none before it
+  // Relative references, v//vn and v/vt forms, a comment after a face, and a face before the
+  // vertices it numbers (OpenMesh reads them all first) load.
+  EXPECT_EQ(load("l.obj", obj_triangle_corners + "vn 0 0 1\nvt 0 0\nf -3/1/1 -2/1/1 -1//1 # a comment\n").triangle_count(), 1u);
+  EXPECT_EQ(load("m.obj", "f 1 2 3\n" + obj_triangle_corners).triangle_count(), 1u);
 }
 
 TEST(MeshFile, UnknownFormatAndMissingFileAreNamed) {

@@ -187,16 +187,13 @@ TEST(WarpedMap, NearTexelsAreSmallerThanTheUniformMapsForALightAcrossTheView) {
 TEST(PsmMap, PushedNearPlaneGivesFinerTexelsAtItsDepth) {
   const Camera camera = deep_view_camera();
   const Light sun{LightType::directional, {}, glm::normalize(glm::vec3(1, -1, 0)), 30};
-  int checked = 0;
   for (float z : {38.0f, 33.0f, 25.0f}) {  // ground straight ahead, some 7, 12 and 20 m away
     const glm::vec3 ground(0, 0, z);
     const float depth = glm::dot(ground - camera.position, camera.forward());
     const glm::mat4 unpushed = perspective_shadow_map(camera, aspect, sun, scene_box(), 1024, 0.0f).views[0].view_projection();
     const glm::mat4 pushed = perspective_shadow_map(camera, aspect, sun, scene_box(), 1024, 0.9f * depth).views[0].view_projection();
     EXPECT_LT(ground_texel_area(pushed, ground), ground_texel_area(unpushed, ground)) << "depth " << depth;
-    ++checked;
   }
-  EXPECT_EQ(checked, 3);
 }
 
 // LiSPSM under a sun straight down, the camera tilted by gamma from straight down. A uniform

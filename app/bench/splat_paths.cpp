@@ -43,7 +43,7 @@ std::vector<BenchRun> measure_splat_paths(const Scene& scene, const std::string&
   const glm::ivec2 size(settings.width, settings.height);
   const glm::mat4 view_projection =
       scene.camera.projection(static_cast<float>(size.x) / static_cast<float>(size.y)) * scene.camera.view();
-  const PointSamples samples(scene, settings.points_per_triangle);
+  const PointSamples samples(scene, settings.points_per_triangle, true);
   const pointgen::SampledFrame selection =
       pointgen::sample_view(sampler_view(scene.camera, settings, {view_projection}), scene.groups, samples.meshes());
 

@@ -112,14 +112,22 @@ RenderSettings benchmark_settings(const BenchmarkOptions& options) {
   return settings;
 }
 
+// `path` made absolute, without ".", ".." or a trailing separator.
+static std::filesystem::path normal_folder(const std::string& path) {
+  return (std::filesystem::absolute(path) / "x").lexically_normal().parent_path();
+}
+
 void check_output_file(const std::string& option, const std::string& file, const std::string& out_folder) {
   namespace fs = std::filesystem;
   if (file.empty()) return;
+  const fs::path name = fs::path(file).filename();
   std::error_code ec;
-  if (fs::is_directory(file, ec)) throw InputError(option + ": " + file + " is a folder, not a file");
-  const fs::path folder = fs::absolute(file).parent_path().lexically_normal();
+  if (name.empty() || name == "." || name == ".." || fs::is_directory(file, ec)) {
+    throw InputError(option + ": " + file + " is a folder, not a file");
+  }
+  const fs::path folder = fs::absolute(file).lexically_normal().parent_path();
   if (fs::is_directory(folder, ec)) return;
-  if (!out_folder.empty() && folder == (fs::absolute(out_folder) / "file").parent_path().lexically_normal()) return;
+  if (!out_folder.empty() && folder == normal_folder(out_folder)) return;
   throw InputError(option + ": " + file + ": its folder does not exist");
 }
 
@@ -127,7 +135,7 @@ void check_out_folder(const std::string& out) {
   namespace fs = std::filesystem;
   if (out.empty()) throw InputError("--out: empty folder name");
   std::error_code ec;
-  for (fs::path p = fs::absolute(out).lexically_normal(); !p.empty(); p = p.parent_path()) {
+  for (fs::path p = normal_folder(out); !p.empty(); p = p.parent_path()) {
     if (fs::exists(p, ec)) {
       if (!fs::is_directory(p, ec)) throw InputError("--out: " + out + ": " + p.string() + " is a file, not a folder");
       return;

@@ -19,7 +19,7 @@ constexpr float list_per_polygon_equivalent = 6.0f;
 
 }  // namespace
 
-PointSamples::PointSamples(const Scene& scene, float points_per_triangle) {
+PointSamples::PointSamples(const Scene& scene, float points_per_triangle, bool on_gpu) {
   std::vector<glm::vec4> positions, normals, colors;
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
     const pointgen::TriangleMesh& mesh = scene.meshes[m];
@@ -58,6 +58,7 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle) {
     }
     meshes_.push_back(std::move(info));
   }
+  if (!on_gpu) return;
   if (const std::size_t limit = gl::max_storage_block_bytes(); positions.size() * sizeof(glm::vec4) > limit) {
     throw RuntimeFailure("the scene's point samples need " + std::to_string((positions.size() * sizeof(glm::vec4)) >> 20) +
                          " MiB in one buffer, more than this driver's shaders address (" + std::to_string(limit >> 20) +

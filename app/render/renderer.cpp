@@ -111,7 +111,7 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       scene_bounds_(scene.bounds()),
       tables_(scene.groups),
       gpu_scene_(scene),
-      samples_(scene, settings.points_per_triangle),
+      samples_(scene, settings.points_per_triangle, settings.points),
       cells_(tables_, samples_.meshes()),
       shadow_pass_(settings.shadow_size),
       frame_pass_(settings.width, settings.height, settings.aliasing),
@@ -352,8 +352,8 @@ void Renderer::pose(double t) {
       if (settings_.point_meshes_only && !scene_.point_meshes[posed[i].mesh]) continue;
       tables_[group] = std::move(posed[i]);
       cells_.update(group, tables_[group], samples_.meshes()[tables_[group].mesh]);
-      // Point meshes get their drawn subset per pass (upload_polygons); with points off, all of them.
-      if (!settings_.points || !scene_.point_meshes[tables_[group].mesh]) gpu_scene_.update(group, tables_[group]);
+      // Point meshes get their drawn subset per pass (upload_polygons).
+      if (!scene_.point_meshes[tables_[group].mesh]) gpu_scene_.update(group, tables_[group]);
     }
   }
 }

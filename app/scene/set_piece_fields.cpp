@@ -32,9 +32,10 @@ std::vector<PlacedMesh> cathedral(const JsonField& field) {
   return {{pointgen::build_cathedral(spec), {at(field["center"].vec3(), yaw)}, {glm::vec3(1.0f)}}};
 }
 
-// A house row's mesh and its copy for the GPU, per metre of row (18.6 triangles a metre; the
-// resident memory of a capture grew by 54 MiB from a 1 km to a 10 km row).
-constexpr double house_row_bytes_per_metre = 6000.0;
+// A house row's mesh and its copy for the GPU, per metre of row: 18.6 triangles a metre, and the
+// resident memory `capture` reports on its scene line grew from 63 to 117 MiB from a 1 km to a
+// 10 km row (6.3 kB a metre).
+constexpr double house_row_bytes_per_metre = 6500.0;
 
 std::vector<PlacedMesh> houses(const JsonField& field, std::uint64_t scene_seed, const ReserveMemory& reserve_memory) {
   field.only_keys({"type", "from", "to", "front", "depth", "seed"});

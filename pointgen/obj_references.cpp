@@ -1,0 +1,76 @@
+#include "pointgen/obj_references.hpp"
+
+#include "pointgen/declared_counts.hpp"
+#include "pointgen/file_error.hpp"
+
+#include <array>
+#include <sstream>
+
+namespace pointgen {
+namespace {
+
+constexpr const char* kinds[3] = {"vertex", "texture coordinate", "normal"};
+
+// 0 for "v", 1 for "vt", 2 for "vn", -1 for anything else.
+int kind_of(const std::string& keyword) {
+  if (keyword == "v") return 0;
+  if (keyword == "vt") return 1;
+  if (keyword == "vn") return 2;
+  return -1;
+}
+
+// Checks one face corner ("v", "v/vt", "v//vn" or "v/vt/vn") against the file's counts and those
+// before the face.
+void check_corner(const std::string& path, long long line, const std::string& corner, const std::array<long long, 3>& total,
+                  const std::array<long long, 3>& before) {
+  std::istringstream parts(corner);
+  std::string part;
+  for (int k = 0; k < 3 && std::getline(parts, part, '/'); ++k) {
+    if (part.empty() && k > 0) continue;
+    long long index = 0;
+    try {
+      index = std::stoll(part);
+    } catch (const std::exception&) {
+      index = 0;
+    }
+    if (index == 0 || index > total[k] || index < -before[k]) {
+      throw FileError(path, "line " + std::to_string(line) + ": a face refers to " + kinds[k] + " '" + part.substr(0, 20) +
+                                "', of " + std::to_string(total[k]) + " in the file (corrupt file?)");
+    }
+  }
+}
+
+}  // namespace
+
+void check_obj_references(const std::string& path, const std::string& bytes) {
+  std::array<long long, 3> total = {0, 0, 0};
+  {
+    std::istringstream in(bytes);
+    long long number = 0;
+    for (std::string line; std::getline(in, line);) {
+      ++number;
+      std::istringstream fields(line);
+      std::string keyword;
+      fields >> keyword;
+      const int kind = kind_of(keyword);
+      if (kind == 0 && !three_finite_numbers(line.c_str() + line.find('v') + 1)) {
+        throw FileError(path, "line " + std::to_string(number) + ": a vertex that is not three finite numbers");
+      }
+      if (kind >= 0) ++total[static_cast<std::size_t>(kind)];
+    }
+  }
+  std::array<long long, 3> before = {0, 0, 0};
+  std::istringstream in(bytes);
+  long long number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    std::istringstream fields(line);
+    std::string keyword;
+    fields >> keyword;
+    if (const int kind = kind_of(keyword); kind >= 0) ++before[static_cast<std::size_t>(kind)];
+    if (keyword != "f") continue;
+    for (std::string corner; fields >> corner && corner[0] != '#';) check_corner(path, number, corner, total, before);
+  }
+}
+
+}  // namespace pointgen
