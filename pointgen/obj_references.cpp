@@ -40,37 +40,36 @@ void check_corner(const std::string& path, long long line, const std::string& co
   }
 }
 
+// Calls visit(line number, line, its first word, a stream of the words after it) for each line.
+template <class Visit>
+void for_each_line(const std::string& bytes, Visit visit) {
+  std::istringstream in(bytes);
+  long long number = 0;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line);
+    std::string keyword;
+    fields >> keyword;
+    visit(++number, line, keyword, fields);
+  }
+}
+
 }  // namespace
 
 void check_obj_references(const std::string& path, const std::string& bytes) {
   std::array<long long, 3> total = {0, 0, 0};
-  {
-    std::istringstream in(bytes);
-    long long number = 0;
-    for (std::string line; std::getline(in, line);) {
-      ++number;
-      std::istringstream fields(line);
-      std::string keyword;
-      fields >> keyword;
-      const int kind = kind_of(keyword);
-      if (kind == 0 && !three_finite_numbers(line.c_str() + line.find('v') + 1)) {
-        throw FileError(path, "line " + std::to_string(number) + ": a vertex that is not three finite numbers");
-      }
-      if (kind >= 0) ++total[static_cast<std::size_t>(kind)];
+  for_each_line(bytes, [&](long long number, const std::string& line, const std::string& keyword, std::istringstream&) {
+    const int kind = kind_of(keyword);
+    if (kind == 0 && !three_finite_numbers(line.c_str() + line.find('v') + 1)) {
+      throw FileError(path, "line " + std::to_string(number) + ": a vertex that is not three finite numbers");
     }
-  }
+    if (kind >= 0) ++total[static_cast<std::size_t>(kind)];
+  });
   std::array<long long, 3> before = {0, 0, 0};
-  std::istringstream in(bytes);
-  long long number = 0;
-  for (std::string line; std::getline(in, line);) {
-    ++number;
-    std::istringstream fields(line);
-    std::string keyword;
-    fields >> keyword;
+  for_each_line(bytes, [&](long long number, const std::string&, const std::string& keyword, std::istringstream& fields) {
     if (const int kind = kind_of(keyword); kind >= 0) ++before[static_cast<std::size_t>(kind)];
-    if (keyword != "f") continue;
+    if (keyword != "f") return;
     for (std::string corner; fields >> corner && corner[0] != '#';) check_corner(path, number, corner, total, before);
-  }
+  });
 }
 
 }  // namespace pointgen
