@@ -2,7 +2,6 @@
 // a splat computed here on the CPU from the same samples: one-pixel points, nearest depth wins.
 #include "app/bench/point_raster.hpp"
 #include "app/bench/splat_paths.hpp"
-#include "app/cli/options.hpp"
 #include "app/gl/context.hpp"
 #include "app/gl/gl_objects.hpp"
 #include "pointgen/primitives.hpp"
@@ -239,19 +238,6 @@ TEST_F(SplatPaths, MeasuresEveryPathOnTheSamePoints) {
   for (const BenchRun& run : runs) EXPECT_EQ(run.params["sweep"], "paths");
   for (std::size_t i = 1; i < runs.size(); ++i) EXPECT_EQ(runs[i].figures["points"], runs[0].figures["points"]);
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-}
-
-// The measurement for docs/benchmarks.md (slow; run with --gtest_also_run_disabled_tests).
-TEST(SplatPathsBench, DISABLED_DefaultScene) {
-  const std::unique_ptr<GlContext> context = create_headless_context("egl");
-  const Scene scene = load_scene_option("", 4.0);
-  RenderSettings settings;
-  settings.width = 960;
-  settings.height = 540;
-  settings.k = 1.5f;
-  for (const BenchRun& run : measure_splat_paths(scene, "ecosystem", settings, 3, 15)) {
-    std::cout << run.params["path"].get<std::string>() << ": " << run.figures.dump() << "\n";
-  }
 }
 
 }  // namespace
