@@ -19,7 +19,7 @@ constexpr float list_per_polygon_equivalent = 6.0f;
 
 }  // namespace
 
-PointSamples::PointSamples(const Scene& scene, float points_per_triangle, bool on_gpu) {
+PointSamples::PointSamples(const Scene& scene, float points_per_triangle, bool points) {
   std::vector<glm::vec4> positions, normals, colors;
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
     const pointgen::TriangleMesh& mesh = scene.meshes[m];
@@ -33,7 +33,7 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle, bool o
     }
     info.triangles = mesh.triangle_count();
     first_.push_back(static_cast<std::uint32_t>(positions.size()));
-    if (scene.point_meshes[m]) {
+    if (points && scene.point_meshes[m]) {
       info.samples = std::min(max_samples, static_cast<std::size_t>(std::ceil(list_per_polygon_equivalent * points_per_triangle * static_cast<float>(info.triangles))));
       const std::vector<pointgen::SurfaceSample> samples = pointgen::sample_surface(mesh, info.samples, pointgen::derive_seed(0x5a3, m));
       std::vector<glm::vec3> sample_normals;
@@ -58,7 +58,6 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle, bool o
     }
     meshes_.push_back(std::move(info));
   }
-  if (!on_gpu) return;
   if (const std::size_t limit = gl::max_storage_block_bytes(); positions.size() * sizeof(glm::vec4) > limit) {
     throw RuntimeFailure("the scene's point samples need " + std::to_string((positions.size() * sizeof(glm::vec4)) >> 20) +
                          " MiB in one buffer, more than this driver's shaders address (" + std::to_string(limit >> 20) +

@@ -13,9 +13,9 @@ namespace ecoview {
 // cheaper, then the same samples again in its parts' lists.
 class PointSamples {
  public:
-  // Without `on_gpu` (every plant drawn as polygons) the lists are made for the sampler's culling
-  // and occlusion model but not uploaded.
-  PointSamples(const Scene& scene, float points_per_triangle, bool on_gpu);
+  // Without `points` (every plant drawn as polygons) no lists are made: the meshes' bounds, area
+  // and triangles are all that culling needs.
+  PointSamples(const Scene& scene, float points_per_triangle, bool points);
 
   const std::vector<pointgen::SampledMesh>& meshes() const { return meshes_; }
   std::uint32_t first_sample(std::size_t mesh) const { return first_[mesh]; }

@@ -3,7 +3,6 @@
 #include "app/clock.hpp"
 #include "app/errors.hpp"
 #include "app/render/pixel_rays.hpp"
-#include "pointgen/sampling/frustum_culling.hpp"
 #include "shadow/aliasing.hpp"
 #include "shadow/cascaded_map.hpp"
 #include "shadow/lispsm_map.hpp"
@@ -174,27 +173,20 @@ void Renderer::upload_polygons(const pointgen::SampledFrame& selection) {
   }
 }
 
-pointgen::SampledFrame Renderer::polygons_in_view(const std::vector<glm::mat4>& views) const {
-  const pointgen::ViewFrusta frusta(views);
+pointgen::SampledFrame Renderer::polygons_in(const std::optional<pointgen::ViewFrusta>& frusta) const {
   pointgen::SampledFrame frame;
   frame.polygons.resize(tables_.size());
   for (std::size_t g = 0; g < tables_.size(); ++g) {
     if (!scene_.point_meshes[tables_[g].mesh]) continue;
     const pointgen::SampledMesh& mesh = samples_.meshes()[tables_[g].mesh];
-    frame.polygons[g] = pointgen::instances_in_view(frusta, cells_.by_table()[g], tables_[g], mesh);
-    frame.triangle_count += frame.polygons[g].size() * mesh.triangles;
-  }
-  return frame;
-}
-
-pointgen::SampledFrame Renderer::every_polygon() const {
-  pointgen::SampledFrame frame;
-  frame.polygons.resize(tables_.size());
-  for (std::size_t g = 0; g < tables_.size(); ++g) {
-    if (!scene_.point_meshes[tables_[g].mesh]) continue;
-    frame.polygons[g].resize(tables_[g].size());
-    std::iota(frame.polygons[g].begin(), frame.polygons[g].end(), 0u);
-    frame.triangle_count += tables_[g].size() * samples_.meshes()[tables_[g].mesh].triangles;
+    std::vector<std::uint32_t>& drawn = frame.polygons[g];
+    if (frusta) {
+      drawn = pointgen::instances_in_view(*frusta, cells_.by_table()[g], tables_[g], mesh);
+    } else {
+      drawn.resize(tables_[g].size());
+      std::iota(drawn.begin(), drawn.end(), 0u);
+    }
+    frame.triangle_count += drawn.size() * mesh.triangles;
   }
   return frame;
 }
@@ -285,7 +277,7 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
   shadow_timer_.start();
   for (std::size_t layer = 0; layer < setup_.views.size(); ++layer) {
     const shadow::ShadowView& v = setup_.views[layer];
-    upload_polygons(settings_.points ? selections[layer] : polygons_in_view(culling_frusta(v)));
+    upload_polygons(settings_.points ? selections[layer] : polygons_in(pointgen::ViewFrusta(culling_frusta(v))));
     shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer));
     if (!settings_.points) continue;
     shadow_points_->upload(selections[layer].points, tables_, samples_);
@@ -436,7 +428,7 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
     frame_points_.upload(selection.points, tables_, samples_);
   } else {
     // Shadow volumes are drawn from the frame's polygons and need the casters out of view too.
-    selection = volumes ? every_polygon() : polygons_in_view({view_projection_});
+    selection = volumes ? polygons_in(std::nullopt) : polygons_in(pointgen::ViewFrusta({view_projection_}));
   }
   upload_polygons(selection);
   if (shadows && volumes) lookup.emplace(render_shadow_volumes(camera, light));

@@ -7,10 +7,12 @@
 #include "app/render/shadow_pass.hpp"
 #include "app/reference/exact_visibility.hpp"
 #include "app/render/shadow_volume_pass.hpp"
+#include "pointgen/sampling/frustum_culling.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
 #include "shadow/aliasing.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -112,10 +114,10 @@ class Renderer {
   ExactVisibility& exact();
   // The frame pass proper: polygons, then the point splats.
   void draw_frame(const shadow::Camera& camera, const shadow::Light& light, const std::optional<FramePass::ShadowLookup>& lookup);
-  // With every plant as polygons (no points): the instances of point meshes in view, culled as the
-  // sampler culls them, so that points and polygons are timed on the same instances; and all.
-  pointgen::SampledFrame polygons_in_view(const std::vector<glm::mat4>& views) const;
-  pointgen::SampledFrame every_polygon() const;
+  // With every plant as polygons (no points): the instances of point meshes the frusta hold, culled
+  // as the sampler culls them, so that points and polygons are timed on the same instances; with
+  // none, all of them.
+  pointgen::SampledFrame polygons_in(const std::optional<pointgen::ViewFrusta>& frusta) const;
   // The selection as RenderSettings::measure asks.
   pointgen::SampledFrame measured(const pointgen::SampledFrame& selection) const;
 
