@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -41,7 +42,7 @@ void check_off(const std::string& path, const std::string& bytes) {
   std::istringstream in(bytes);
   Tokens tokens(in);
   std::string keyword;
-  if (!tokens.next(keyword)) return;  // OpenMesh reports the empty file
+  if (!tokens.next(keyword)) throw FileError(path, "is empty");
   if (keyword.find("OFF") == std::string::npos) throw FileError(path, "does not start with an OFF keyword");
   std::string line;
   std::getline(in, line);
@@ -83,6 +84,31 @@ struct PlyElement {
   std::vector<PlyProperty> properties;
 };
 
+bool is_ply_type(const std::string& type) {
+  static const std::set<std::string> types = {"char",  "uchar",  "short",  "ushort",  "int",     "uint",    "float",
+                                              "double", "int8", "uint8", "int16", "uint16", "int32", "uint32",
+                                              "float32", "float64"};
+  return types.count(type) > 0;
+}
+
+// `property TYPE NAME` or `property list COUNT_TYPE ITEM_TYPE NAME`. OpenMesh spins forever on a
+// property without a name, and prints its own message for an unknown type.
+PlyProperty ply_property(const std::string& path, const std::string& line) {
+  std::istringstream fields(line);
+  std::string keyword, type, count_type, name, extra;
+  fields >> keyword >> type;
+  PlyProperty p;
+  p.list = type == "list";
+  if (p.list) fields >> count_type >> type;
+  fields >> name;
+  const bool well_formed = !name.empty() && !(fields >> extra) && is_ply_type(type) && (!p.list || is_ply_type(count_type));
+  if (!well_formed) {
+    throw FileError(path, "PLY property line '" + line.substr(0, 40) + "' is not 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME' with PLY types");
+  }
+  p.count_type = count_type;
+  return p;
+}
+
 void check_ply(const std::string& path, const std::string& bytes) {
   std::istringstream in(bytes);
   std::string line, format;
@@ -108,15 +134,9 @@ void check_ply(const std::string& path, const std::string& bytes) {
         throw FileError(path, "element '" + e.name + "' declares more entries than the file's size allows (corrupt file?)");
       }
       elements.push_back(e);
-    } else if (keyword == "property" && !elements.empty()) {
-      PlyProperty p;
-      std::string type;
-      fields >> type;
-      if (type == "list") {
-        p.list = true;
-        fields >> p.count_type;
-      }
-      elements.back().properties.push_back(p);
+    } else if (keyword == "property") {
+      if (elements.empty()) throw FileError(path, "PLY property line before any element: '" + line.substr(0, 40) + "'");
+      elements.back().properties.push_back(ply_property(path, line));
     }
   }
   if (!header_ended) throw FileError(path, "has no end_header line");

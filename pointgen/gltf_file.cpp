@@ -61,22 +61,23 @@ class AccessorReader {
     if (tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type)) != components) {
       fail(std::string(what) + " accessor " + std::to_string(index) + " has the wrong type");
     }
+    const Elements elements = checked_elements(a, index, what);  // before anything is sized by a.count
     std::vector<float> out(a.count * static_cast<std::size_t>(components), 0.0f);
-    auto store = [&](std::size_t element, const unsigned char* src) {
+    visit(elements, a, what, [&](std::size_t element, const unsigned char* src) {
       for (int c = 0; c < components; ++c) {
         out[element * static_cast<std::size_t>(components) + static_cast<std::size_t>(c)] =
             component(src, a.componentType, c, a.normalized, what);
       }
-    };
-    visit_elements(a, index, what, store);
+    });
     return out;
   }
 
   std::vector<std::uint32_t> indices(int index, std::size_t vertex_count) const {
     const tinygltf::Accessor& a = accessor(index, "index");
     if (a.type != TINYGLTF_TYPE_SCALAR) fail("index accessor is not scalar");
+    const Elements elements = checked_elements(a, index, "index");
     std::vector<std::uint32_t> out(a.count, 0);
-    visit_elements(a, index, "index", [&](std::size_t element, const unsigned char* src) {
+    visit(elements, a, "index", [&](std::size_t element, const unsigned char* src) {
       out[element] = integer(src, a.componentType, 0, "index");
     });
     for (std::uint32_t v : out) {
@@ -86,6 +87,16 @@ class AccessorReader {
   }
 
  private:
+  // Where an accessor's elements lie, every byte range checked against its buffer.
+  struct Elements {
+    const unsigned char* dense = nullptr;  // null: all zeros but the sparse ones
+    std::size_t step = 0;
+    std::size_t element_size = 0;
+    std::size_t sparse_count = 0;
+    const unsigned char* sparse_indices = nullptr;
+    const unsigned char* sparse_values = nullptr;
+  };
+
   const tinygltf::Accessor& accessor(int index, const char* what) const {
     if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size()) {
       fail(std::string(what) + " accessor " + std::to_string(index) + " does not exist");
@@ -105,6 +116,12 @@ class AccessorReader {
       case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
       default: return 0;
     }
+  }
+
+  std::size_t buffer_bytes() const {
+    std::size_t total = 0;
+    for (const tinygltf::Buffer& buffer : model_.buffers) total += buffer.data.size();
+    return total;
   }
 
   // The bytes of a view, checked against its buffer, with the element size and stride it implies.
@@ -130,50 +147,55 @@ class AccessorReader {
     return data.data() + view.byteOffset + offset;
   }
 
-  template <class Store>
-  void visit_elements(const tinygltf::Accessor& a, int index, const char* what,
-                      const Store& store) const {
+  // A declared count is never trusted: the elements must lie in the file's buffers before
+  // anything is allocated for them.
+  Elements checked_elements(const tinygltf::Accessor& a, int index, const char* what) const {
+    Elements e;
     const std::size_t components = static_cast<std::size_t>(
         tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type)));
-    const std::size_t element_size = component_size(a.componentType) * components;
-    if (element_size == 0) fail(std::string(what) + " accessor has an unknown component type");
+    e.element_size = component_size(a.componentType) * components;
+    if (e.element_size == 0) fail(std::string(what) + " accessor has an unknown component type");
     if (a.bufferView >= 0) {
-      const std::size_t stride = model_.bufferViews.size() > static_cast<std::size_t>(a.bufferView)
+      const std::size_t stride = static_cast<std::size_t>(a.bufferView) < model_.bufferViews.size()
                                      ? model_.bufferViews[static_cast<std::size_t>(a.bufferView)].byteStride
                                      : 0;
-      const unsigned char* base =
-          view_range(a.bufferView, a.byteOffset, a.count, element_size, stride, what);
-      const std::size_t step = stride ? stride : element_size;
-      for (std::size_t i = 0; i < a.count; ++i) store(i, base + i * step);
+      e.dense = view_range(a.bufferView, a.byteOffset, a.count, e.element_size, stride, what);
+      e.step = stride ? stride : e.element_size;
     } else if (!a.sparse.isSparse) {
       fail(std::string(what) + " accessor " + std::to_string(index) + " has no data");
+    } else if (a.count > buffer_bytes()) {
+      // Zeros with a few sparse values: more of them than the file has bytes is no real model.
+      fail(std::string(what) + " accessor " + std::to_string(index) + " declares more elements than the file has bytes");
     }
-    if (a.sparse.isSparse) apply_sparse(a, element_size, what, store);
-  }
-
-  template <class Store>
-  void apply_sparse(const tinygltf::Accessor& a, std::size_t element_size, const char* what,
-                    const Store& store) const {
+    if (!a.sparse.isSparse) return e;
     if (a.sparse.count < 0 || static_cast<std::size_t>(a.sparse.count) > a.count) {
       fail(std::string(what) + " accessor: bad sparse count");
     }
-    const auto count = static_cast<std::size_t>(a.sparse.count);
+    e.sparse_count = static_cast<std::size_t>(a.sparse.count);
     const int index_type = a.sparse.indices.componentType;
     const std::size_t index_size = component_size(index_type);
     if (index_size == 0 || index_type == TINYGLTF_COMPONENT_TYPE_FLOAT || a.sparse.indices.byteOffset < 0 ||
         a.sparse.values.byteOffset < 0) {
       fail(std::string(what) + " accessor: bad sparse indices");
     }
-    const unsigned char* indices = view_range(a.sparse.indices.bufferView,
-                                              static_cast<std::size_t>(a.sparse.indices.byteOffset),
-                                              count, index_size, 0, what);
-    const unsigned char* values = view_range(a.sparse.values.bufferView,
-                                             static_cast<std::size_t>(a.sparse.values.byteOffset),
-                                             count, element_size, 0, what);
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::uint32_t target = integer(indices + i * index_size, index_type, 0, what);
+    e.sparse_indices = view_range(a.sparse.indices.bufferView, static_cast<std::size_t>(a.sparse.indices.byteOffset),
+                                  e.sparse_count, index_size, 0, what);
+    e.sparse_values = view_range(a.sparse.values.bufferView, static_cast<std::size_t>(a.sparse.values.byteOffset),
+                                 e.sparse_count, e.element_size, 0, what);
+    return e;
+  }
+
+  template <class Store>
+  void visit(const Elements& e, const tinygltf::Accessor& a, const char* what, const Store& store) const {
+    if (e.dense) {
+      for (std::size_t i = 0; i < a.count; ++i) store(i, e.dense + i * e.step);
+    }
+    const int index_type = a.sparse.indices.componentType;
+    const std::size_t index_size = component_size(index_type);
+    for (std::size_t i = 0; i < e.sparse_count; ++i) {
+      const std::uint32_t target = integer(e.sparse_indices + i * index_size, index_type, 0, what);
       if (target >= a.count) fail(std::string(what) + " accessor: sparse index out of range");
-      store(target, values + i * element_size);
+      store(target, e.sparse_values + i * e.element_size);
     }
   }
 

@@ -30,6 +30,8 @@ void check_mesh(const std::string& path, const TriangleMesh& mesh) {
 TriangleMesh load_mesh_file(const std::string& path, const ReadFile& read) {
   const std::optional<std::string> bytes = read(path);
   if (!bytes) throw FileError(path, "no such file (or not a readable one)");
+  // OpenMesh reserves for counts an empty file never gave: it is refused before any reader sees it.
+  if (bytes->find_first_not_of(" \t\r\n") == std::string::npos) throw FileError(path, "is empty");
   const std::string ext = lower_extension(path);
   TriangleMesh mesh;
   if (ext == ".gltf" || ext == ".glb") {

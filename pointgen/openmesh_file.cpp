@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <iostream>
 #include <mutex>
 #include <sstream>
 
@@ -33,6 +34,33 @@ std::ostringstream& openmesh_errors() {
   }();
   (void)redirected;
   return errors;
+}
+
+// While it lives, what is written to std::cerr and std::clog goes into `text` instead: some of
+// OpenMesh's readers write there directly, and a failure must be one line of ours.
+class CaughtErrorStreams {
+ public:
+  CaughtErrorStreams() : cerr_(std::cerr.rdbuf(text.rdbuf())), clog_(std::clog.rdbuf(text.rdbuf())) {}
+  ~CaughtErrorStreams() {
+    std::cerr.rdbuf(cerr_);
+    std::clog.rdbuf(clog_);
+  }
+  CaughtErrorStreams(const CaughtErrorStreams&) = delete;
+  CaughtErrorStreams& operator=(const CaughtErrorStreams&) = delete;
+  std::ostringstream text;
+
+ private:
+  std::streambuf* cerr_;
+  std::streambuf* clog_;
+};
+
+// The first line OpenMesh wrote for the file just read, on either of its ways, as a clause of our
+// message ("" when it wrote nothing).
+std::string openmesh_said(const std::string& caught) {
+  omerr().flush();
+  std::string said = openmesh_errors().str() + caught;
+  said = said.substr(0, said.find('\n'));
+  return said.empty() ? "" : " (OpenMesh: " + said.substr(0, 120) + ")";
 }
 
 // Whether the reader of the file just read skipped faces with vertex indices the file lacks. (A
@@ -63,14 +91,17 @@ TriangleMesh load_openmesh_format(const std::string& path, const std::string& by
   if (ext == ".obj") check_obj_references(path, bytes);
   std::istringstream stream(bytes);
   bool ok = false;
-  try {
-    ok = OpenMesh::IO::read_mesh(poly, stream, ext, options);
-  } catch (const std::bad_alloc&) {
-    throw FileError(path, "cannot be read: the counts in it ask for more memory than there is (corrupt file?)");
-  } catch (const std::exception& e) {
-    throw FileError(path, std::string("cannot be read: ") + e.what());
+  {
+    const CaughtErrorStreams caught;
+    try {
+      ok = OpenMesh::IO::read_mesh(poly, stream, ext, options);
+    } catch (const std::bad_alloc&) {
+      throw FileError(path, "cannot be read: the counts in it ask for more memory than there is (corrupt file?)");
+    } catch (const std::exception& e) {
+      throw FileError(path, std::string("cannot be read: ") + e.what());
+    }
+    if (!ok) throw FileError(path, "not a valid " + ext.substr(1) + " mesh" + openmesh_said(caught.text.str()));
   }
-  if (!ok) throw FileError(path, "not a valid " + ext.substr(1) + " mesh");
   if (skipped_bad_faces()) throw FileError(path, "a face refers to a vertex the file does not have (corrupt file?)");
 
   TriangleMesh mesh;

@@ -3,6 +3,11 @@
 #include "pointgen/file_error.hpp"
 #include "pointgen/mesh_file.hpp"
 
+#include <sys/resource.h>
+
+#include <cstdlib>
+#include <fstream>
+
 #include <gtest/gtest.h>
 
 namespace {
@@ -79,6 +84,28 @@ TEST(MeshFile, ReferencesToMissingOrUnreadableVerticesAreRefused) {
   EXPECT_EQ(load("m.obj", "f 1 2 3\n" + obj_triangle_corners).triangle_count(), 1u);
 }
 
+// OpenMesh spins forever on a property without a name and prints its own line for an unknown type:
+// the header is checked first.
+TEST(MeshFile, MalformedPlyPropertiesAreRefusedAtOnce) {
+  const std::string start = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n";
+  const std::string faces = "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  expect_refused("a.ply", start + "property float z\nelement face 1\nproperty list uchar int\nend_header\n", "'property list uchar int'");
+  expect_refused("b.ply", start + "property float z\nelement face 1\nproperty list uchar\nend_header\n", "'property list uchar'");
+  expect_refused("c.ply", start + "property fdoat z\n" + faces, "'property fdoat z'");
+  expect_refused("d.ply", start + "property float\n" + faces, "'property float'");
+  expect_refused("e.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n", "before any element");
+  EXPECT_EQ(load("f.ply", start + "property float32 z\n" + faces).triangle_count(), 1u);
+}
+
+// OpenMesh reserves for the counts an empty file never gave (tens of GB).
+TEST(MeshFile, EmptyFilesAreRefusedAsEmpty) {
+  for (const char* name : {"a.off", "b.ply", "c.obj", "d.gltf"}) {
+    expect_refused(name, "", "is empty");
+    expect_refused(name, " \n\r\n\t", "is empty");
+  }
+  expect_refused("e.off", "# only a comment\n", "is empty");
+}
+
 TEST(MeshFile, UnknownFormatAndMissingFileAreNamed) {
   expect_refused("model.fbx", "x", "unknown mesh format");
   try {
@@ -117,6 +144,57 @@ TEST(GltfFile, ATriangleLoadsAndHostileOffsetsAndNodeGraphsAreRefused) {
   EXPECT_THROW(load_gltf_text(triangle_gltf("0", R"([{"children": [1, 1]}, {"mesh": 0}])", "[0]")), pointgen::FileError);
   EXPECT_THROW(load_gltf_text(triangle_gltf("0", R"([{"mesh": 0, "children": [1]}, {"children": [0]}])", "[0]")),
                pointgen::FileError);
+}
+
+// An accessor declaring 2^28 positions (3 GiB of floats) over a 36-byte buffer: the load must fail
+// on the ranges with no more memory than the file needs. In a child process whose address space is
+// capped 512 MiB above what it holds at the start: 0 when it fails with `part`.
+int load_within_memory(const std::string& gltf, const char* part) {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  long vm_kib = 0;
+  while (status >> key && key != "VmSize:") {}
+  status >> vm_kib;
+  const rlim_t cap = static_cast<rlim_t>(vm_kib + 512 * 1024) * 1024;
+  const rlimit limit{cap, cap};
+  setrlimit(RLIMIT_AS, &limit);
+  try {
+    load_gltf_text(gltf);
+  } catch (const pointgen::FileError& e) {
+    return std::string(e.what()).find(part) != std::string::npos ? 0 : 3;
+  } catch (const std::bad_alloc&) {
+    return 4;
+  }
+  return 5;
+}
+
+void expect_refused_within_memory(const std::string& gltf, const char* part) {
+  EXPECT_EXIT(std::_Exit(load_within_memory(gltf, part)), testing::ExitedWithCode(0), "") << gltf;
+}
+
+// `text` with its one `from` replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+TEST(GltfFile, DeclaredCountsAreCheckedAgainstTheBufferBeforeAnythingIsAllocated) {
+  const std::string triangle = triangle_gltf("0", R"([{"mesh": 0}])", "[0]");
+  const std::string huge = "268435456";
+  expect_refused_within_memory(replaced(triangle, R"("count": 3)", R"("count": )" + huge), "reads past the end of its buffer");
+
+  const std::string indices = replaced(
+      replaced(triangle, R"("type": "VEC3"}])",
+               R"("type": "VEC3"}, {"bufferView": 0, "componentType": 5125, "count": )" + huge + R"(, "type": "SCALAR"}])"),
+      R"({"POSITION": 0})", R"({"POSITION": 0}, "indices": 1)");
+  expect_refused_within_memory(indices, "reads past the end of its buffer");
+
+  // Without a buffer view: zeros but for a few sparse values, more of them than the file has bytes.
+  const std::string sparse = replaced(triangle, R"("bufferView": 0, "byteOffset": 0, "componentType": 5126, "count": 3)",
+                                      R"("componentType": 5126, "count": )" + huge +
+                                          R"(, "sparse": {"count": 1, "indices": {"bufferView": 0, "componentType": 5125}, "values": {"bufferView": 0}})");
+  expect_refused_within_memory(sparse, "declares more elements than the file has bytes");
 }
 
 }  // namespace
