@@ -1,6 +1,7 @@
 #pragma once
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 
@@ -9,8 +10,21 @@ namespace ecoview {
 // The bytes of a regular file, or nothing if there is none or it cannot be read.
 std::optional<std::string> read_file(const std::filesystem::path& path);
 
-// Writes to a temporary name beside `path` and renames it into place, so `path` is either absent
-// or complete. Throws RuntimeFailure naming the file.
+// Writes to a temporary name beside `path` (`path` + ".tmp" + the process id) and renames it
+// into place, so `path` is either absent or complete. Throws RuntimeFailure naming the file.
+// One file is in flight at a time; a SIGINT or SIGTERM removes it (remove_temporary_on_signals).
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
+// From now on SIGINT and SIGTERM remove the temporary file in flight before the process ends as
+// the signal would end it.
+void remove_temporary_on_signals();
+
+// Removes the temporary files write_file_atomically would leave in `folder` for the files named
+// in `names` (by any process, killed between writing and renaming). Returns how many it removed.
+int remove_stale_temporaries(const std::filesystem::path& folder, const std::set<std::string>& names);
+
+// Whether a new file can be made in `folder` (tried with a temporary file, then removed);
+// the reason it cannot otherwise.
+std::optional<std::string> cannot_write_in(const std::filesystem::path& folder);
 
 }  // namespace ecoview

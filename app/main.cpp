@@ -4,6 +4,8 @@
 #include "app/capture/capture_command.hpp"
 #include "app/view/view_command.hpp"
 #include "app/errors.hpp"
+#include "app/file_io.hpp"
+#include "git_commit.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -37,13 +39,21 @@ std::string one_line(std::string_view message) {
   return line;
 }
 
+std::string command_names(CLI::App& app) {
+  std::string names;
+  for (const CLI::App* command : app.get_subcommands({})) names += (names.empty() ? "" : ", ") + command->get_name();
+  return names;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace ecoview;
   CLI::App app("ecoview: view, capture and benchmark large outdoor scenes with shadows.\n"
                "Exit codes: 0 done, 1 runtime failure (e.g. no GL context), 2 bad input.");
-  app.require_subcommand(1);
+  // At most one command; none is reported after parsing, so that an unknown word is named first.
+  app.require_subcommand(0, 1);
+  app.set_version_flag("--version", std::string("ecoview ") + ECOVIEW_VERSION + " (git " + ECOVIEW_GIT_COMMIT + ")");
   CaptureOptions capture;
   ViewOptions view;
   DensityOptions density;
@@ -55,14 +65,29 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+    if (app.get_subcommands().empty()) {
+      std::cerr << "ecoview: a command is required: " << command_names(app) << " (see ecoview --help)\n";
+      return 2;
+    }
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ExtrasError& e) {
+    if (!app.get_subcommands().empty() || app.remaining().empty()) {
+      std::cerr << "ecoview: " << one_line(e.what()) << " (see ecoview --help)\n";
+    } else {
+      std::cerr << "ecoview: unknown command '" << one_line(app.remaining().front()) << "' (commands: " << command_names(app)
+                << "; see ecoview --help)\n";
+    }
+    return 2;
   } catch (const CLI::ParseError& e) {
     std::cerr << "ecoview: " << one_line(e.what()) << " (see ecoview --help)\n";
     return 2;
   }
+  remove_temporary_on_signals();
 
   try {
     if (capture_command->parsed()) return run_capture(capture);

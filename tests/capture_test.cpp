@@ -227,6 +227,95 @@ TEST(Capture, OutputPathsAreCheckedBeforeAnyWork) {
   EXPECT_GT(std::filesystem::file_size(fresh / "color_00000.png"), 0u) << "an empty file is rendered again";
 }
 
+// A frame takes things from the one before (the PSM's near plane, caster culling's receivers):
+// a capture split anywhere gives the same bytes as one run, points and point casters included.
+TEST(Capture, AFrameHasTheSameBytesWhereverACaptureIsSplit) {
+  for (const char* method : {"psm", "uniform", "auto"}) {
+    const TempDir whole, alone;
+    const std::vector<std::string> args = {"capture", "--path", "ecosystem", "--method", method, "--size", "240x135",
+                                           "--shadow-size", "512", "--aov", "color,shadow"};
+    auto with = [&](const char* frames, const TempDir& d) {
+      auto v = args;
+      v.insert(v.end(), {"--frames", frames, "--out", d.path().string()});
+      return v;
+    };
+    ASSERT_EQ(run_ecoview(with("0:3", whole)).exit_code, 0);
+    ASSERT_EQ(run_ecoview(with("2:3", alone)).exit_code, 0);
+    EXPECT_EQ(read_bytes(whole / "shadow_00002.png"), read_bytes(alone / "shadow_00002.png")) << method;
+    EXPECT_EQ(read_bytes(whole / "color_00002.png"), read_bytes(alone / "color_00002.png")) << method;
+  }
+}
+
+// A process killed between writing a frame and renaming it leaves its temporary file; the capture
+// that renders the frame again removes it, and only it.
+TEST(Capture, ARerunRemovesTheTemporaryFilesAKilledCaptureLeft) {
+  const TempDir dir;
+  for (const char* name : {"color_00001.png.tmp4242", "stats.json.tmp7", "color_00007.png.tmp5", "notes.txt"}) write_text(dir / name, "x");
+  const CommandResult r = run_ecoview({"capture", "--scene", "courtyard", "--size", "64x36", "--frames", "0:2",
+                                       "--stats", (dir / "stats.json").string(), "--out", dir.path().string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(files_in(dir.path()),
+            (std::vector<std::string>{"color_00000.png", "color_00001.png", "color_00007.png.tmp5", "notes.txt", "stats.json"}));
+}
+
+// Whether each output can be written is known before the first frame renders.
+TEST(Capture, StatsThatCannotBeWrittenAreRefusedBeforeRendering) {
+  const TempDir dir;
+  const std::filesystem::path out = dir / "out";
+  for (const std::string& stats : {out.string(), (out / ".").string(), std::string("/proc/ecoview-stats.json")}) {
+    const CommandResult r = run_ecoview({"capture", "--scene", "courtyard", "--size", "64x36", "--stats", stats, "--out", out.string()});
+    EXPECT_EQ(r.exit_code, 2) << stats << ": " << r.err;
+    EXPECT_NE(r.err.find("--stats"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << stats << ": rendered before failing";
+  }
+}
+
+// Libraries write their own lines (OpenMesh on a truncated binary PLY): they are folded into ours.
+TEST(Capture, BadMeshFilesGiveOneLineWhateverTheLibrarySays) {
+  const TempDir dir;
+  const std::string header = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n";
+  write_text(dir / "truncated.ply", header + "property float z\nend_header\nabc");
+  write_text(dir / "mistyped.ply", header + "property fdoat z\nend_header\n");
+  write_text(dir / "empty.off", "");
+  for (const char* mesh : {"truncated.ply", "mistyped.ply", "empty.off"}) {
+    write_text(dir / "scene.json", R"({"camera": {"position": [0, 8, 12], "target": [0, 0, 0]},
+      "lights": [{"type": "directional", "direction": [0.3, -1, 0.2]}], "objects": [{"type": "mesh", "file": ")" +
+                                       std::string(mesh) + R"("}]})");
+    const CommandResult r = run_ecoview({"capture", "--scene", (dir / "scene.json").string(), "--out", (dir / "out").string()});
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(std::string("objects[0].file: ") + mesh), std::string::npos) << r.err;
+  }
+}
+
+TEST(CommandLine, UnknownCommandsAndOptionsAreNamedFirst) {
+  CommandResult r = run_ecoview({"bogus"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unknown command 'bogus'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("capture, view, density, bench"), std::string::npos) << r.err;
+  r = run_ecoview({});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("a command is required"), std::string::npos) << r.err;
+  for (const char* command : {"capture", "density", "bench"}) {
+    r = run_ecoview({command, "--colour", "red"});
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("--colour"), std::string::npos) << command << ": " << r.err;
+    r = run_ecoview({command});
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("--out is required"), std::string::npos) << command << ": " << r.err;
+  }
+}
+
+TEST(CommandLine, VersionGivesTheVersionAndTheCommit) {
+  const CommandResult r = run_ecoview({"--version"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const CommandResult git = run_shell("git -C " + shell_quote(source_dir().string()) + " rev-parse --short HEAD");
+  ASSERT_EQ(r.out.rfind("ecoview 0.", 0), 0u) << r.out;
+  if (git.exit_code == 0 && !git.out.empty()) {
+    EXPECT_NE(r.out.find("(git " + git.out.substr(0, git.out.find('\n'))), std::string::npos) << r.out << " vs " << git.out;
+  }
+}
+
 struct BadInput {
   const char* name;
   std::string scene;               // written to bad.json when not empty

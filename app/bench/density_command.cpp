@@ -259,6 +259,7 @@ CLI::App* add_density_command(CLI::App& app, DensityOptions& o) {
 int run_density(const DensityOptions& o) {
   parse_size(o.run.size);
   check_backend(o.run.backend);
+  check_out_folder(o.run.out);
   const Scene scene = load_scene_option(o.scene, o.run.memory_budget_gib);
   const std::string scene_name = o.scene.empty() ? default_scene_name : o.scene;
   make_out_folder(o.run.out);

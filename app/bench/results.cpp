@@ -10,10 +10,18 @@
 namespace ecoview {
 namespace {
 
+// A field as RFC 4180 writes it: quoted, with quotes doubled, when it holds a comma, a quote or a
+// line break (setup descriptions have commas).
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
 std::string csv_cell(const nlohmann::json& v) {
   if (v.is_null()) return "";
-  if (v.is_string()) return v.get<std::string>();
-  return v.dump();
+  return csv_field(v.is_string() ? v.get<std::string>() : v.dump());
 }
 
 }  // namespace
@@ -29,16 +37,17 @@ void write_results(const std::filesystem::path& folder, const BenchResults& resu
   const nlohmann::json document = {{"machine", results.machine}, {"runs", runs}};
   write_file_atomically(folder / "results.json", document.dump(2) + "\n");
 
+  // RFC 4180: a header, one record a run, CRLF after each.
   std::ostringstream csv;
   bool first = true;
-  for (const std::string& name : param_names) csv << (first ? "" : ",") << name, first = false;
-  for (const std::string& name : figure_names) csv << (first ? "" : ",") << name, first = false;
-  csv << "\n";
+  for (const std::string& name : param_names) csv << (first ? "" : ",") << csv_field(name), first = false;
+  for (const std::string& name : figure_names) csv << (first ? "" : ",") << csv_field(name), first = false;
+  csv << "\r\n";
   for (const BenchRun& run : results.runs) {
     first = true;
     for (const std::string& name : param_names) csv << (first ? "" : ",") << csv_cell(run.params.value(name, nlohmann::json())), first = false;
     for (const std::string& name : figure_names) csv << (first ? "" : ",") << csv_cell(run.figures.value(name, nlohmann::json())), first = false;
-    csv << "\n";
+    csv << "\r\n";
   }
   write_file_atomically(folder / "results.csv", csv.str());
 }

@@ -20,6 +20,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 
 namespace ecoview {
 namespace {
@@ -44,6 +45,15 @@ bool finished(const fs::path& file) {
   if (!fs::exists(status)) return false;
   if (!fs::is_regular_file(status)) throw InputError("--out: " + file.string() + " exists and is not a file");
   return fs::file_size(file, ec) > 0 && !ec;
+}
+
+// The names of the files these frames write in `out`.
+std::set<std::string> frame_files(const fs::path& out, const std::vector<Aov>& aovs, const std::vector<int>& frames) {
+  std::set<std::string> names;
+  for (int frame : frames) {
+    for (Aov aov : aovs) names.insert(aov_file(out, aov, frame).filename().string());
+  }
+  return names;
 }
 
 // One frame's figures for --stats (names as DESIGN.md defines them).
@@ -78,7 +88,7 @@ CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
                                     "resumes, skipping finished frames)");
   cmd->add_option("--stats", o.stats, "Also write each rendered frame's figures as JSON to this file: alias_p95, "
                                       "pass times, points, triangles");
-  cmd->add_option("--out", o.out, "Output folder (created if missing)")->required();
+  cmd->add_option("--out", o.out, "Output folder, created if missing (required)");
   return cmd;
 }
 
@@ -124,13 +134,24 @@ int run_capture(const CaptureOptions& o) {
   const std::unique_ptr<GlContext> context = create_headless_context(o.backend);
   Renderer renderer(scene, settings);
   make_out_folder(o.out);  // once the driver has taken the settings
+  // A process killed while writing a file left its temporary one; the files written again here
+  // take theirs away.
+  remove_stale_temporaries(out, frame_files(out, aovs, todo));
+  if (!o.stats.empty()) remove_stale_temporaries(fs::absolute(o.stats).parent_path(), {fs::path(o.stats).filename().string()});
   Progress progress("capture: frame", todo.size());
   nlohmann::json stats = nlohmann::json::array();
+  const auto time_of = [&](int frame) { return static_cast<double>(frame) / fps; };
+  const auto camera_at = [&](int frame) { return path ? path->at(time_of(frame), scene.camera) : scene.camera; };
+  int last_rendered = -1;
   for (int frame : todo) {
-    const double t = static_cast<double>(frame) / fps;
-    const shadow::Camera camera = path ? path->at(t, scene.camera) : scene.camera;
+    const double t = time_of(frame);
+    const shadow::Camera camera = camera_at(frame);
     const auto render_start = std::chrono::steady_clock::now();
+    // A frame takes things from the one before (Renderer::start_after): where this process did not
+    // render that one, it is made, so the frame has the same bytes however a capture is split.
+    if (frame > 0 && last_rendered != frame - 1) renderer.start_after(camera_at(frame - 1), light, time_of(frame - 1));
     renderer.render(camera, light, t);
+    last_rendered = frame;
     glFinish();
     const double render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - render_start).count();
     for (Aov aov : aovs) {

@@ -1,6 +1,7 @@
 #include "app/cli/options.hpp"
 
 #include "app/errors.hpp"
+#include "app/file_io.hpp"
 #include "app/scene/scene_file.hpp"
 
 #include <cmath>
@@ -125,19 +126,26 @@ void check_output_file(const std::string& option, const std::string& file, const
   if (name.empty() || name == "." || name == ".." || fs::is_directory(file, ec)) {
     throw InputError(option + ": " + file + " is a folder, not a file");
   }
+  if (!out_folder.empty() && normal_folder(file) == normal_folder(out_folder)) {
+    throw InputError(option + ": " + file + " is the --out folder; name a file (in it or elsewhere)");
+  }
   const fs::path folder = fs::absolute(file).lexically_normal().parent_path();
-  if (fs::is_directory(folder, ec)) return;
+  if (fs::is_directory(folder, ec)) {
+    if (const auto reason = cannot_write_in(folder)) throw InputError(option + ": " + file + ": cannot be written there (" + *reason + ")");
+    return;
+  }
   if (!out_folder.empty() && folder == normal_folder(out_folder)) return;
   throw InputError(option + ": " + file + ": its folder does not exist");
 }
 
 void check_out_folder(const std::string& out) {
   namespace fs = std::filesystem;
-  if (out.empty()) throw InputError("--out: empty folder name");
+  if (out.empty()) throw InputError("--out is required: the folder to write into");
   std::error_code ec;
   for (fs::path p = normal_folder(out); !p.empty(); p = p.parent_path()) {
     if (fs::exists(p, ec)) {
       if (!fs::is_directory(p, ec)) throw InputError("--out: " + out + ": " + p.string() + " is a file, not a folder");
+      if (const auto reason = cannot_write_in(p)) throw InputError("--out: " + out + ": cannot write in " + p.string() + " (" + *reason + ")");
       return;
     }
     if (p == p.parent_path()) return;
@@ -176,7 +184,7 @@ void add_benchmark_options(CLI::App& command, BenchmarkOptions& o, const std::st
   command.add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes needing more memory than this, in GiB")
       ->capture_default_str();
   command.add_flag("--quick", o.quick, quick_help);
-  command.add_option("--out", o.out, "Output folder (created if missing)")->required();
+  command.add_option("--out", o.out, "Output folder, created if missing (required)");
 }
 
 }  // namespace ecoview

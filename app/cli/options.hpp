@@ -64,12 +64,13 @@ RenderSettings benchmark_settings(const BenchmarkOptions& options);
 // Checks a --backend name (egl or osmesa) before any work is done.
 const std::string& check_backend(const std::string& backend);
 
-// Checks a file option (`--stats FILE`) before any work: not a folder, and in a folder that exists
-// or is `out_folder`, the --out folder the command will make. An empty file passes.
+// Checks a file option (`--stats FILE`) before any work: not a folder (nor `out_folder` itself), and
+// in a folder where a file can be made, or in `out_folder`, the --out folder the command will make.
+// An empty file passes.
 void check_output_file(const std::string& option, const std::string& file, const std::string& out_folder = "");
 
 // Checks the --out folder before any work: named, and a folder or a path one can be made at (the
-// nearest part of it that exists is a folder).
+// nearest part of it that exists is a folder one can write in).
 void check_out_folder(const std::string& out);
 
 // Checks the --out folder and makes it; RuntimeFailure when it cannot be made.

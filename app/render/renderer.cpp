@@ -351,16 +351,21 @@ void Renderer::pose(double t) {
 }
 
 void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, double t) {
-  // The PSM takes its near plane from the last frame, auto its surface, caster culling its
-  // receivers: the first frame draws once without shadows to have one.
-  const bool needs_last_frame =
-      settings_.method == ShadowMethod::psm || settings_.method == ShadowMethod::automatic || culls_casters();
-  if (needs_last_frame && !has_last_frame_) {
-    draw(camera, light, t, false);
-    remember_last_frame();
-  }
+  // The first frame has no frame before it: it takes one from itself drawn without shadows.
+  if (needs_last_frame() && !has_last_frame_) start_after(camera, light, t);
   draw(camera, light, t, settings_.method != ShadowMethod::none);
-  if (needs_last_frame) remember_last_frame();
+  if (needs_last_frame()) remember_last_frame();
+}
+
+void Renderer::start_after(const shadow::Camera& camera, const shadow::Light& light, double t) {
+  if (!needs_last_frame()) return;
+  draw(camera, light, t, false);
+  remember_last_frame();
+}
+
+// The PSM takes its near plane from the last frame, auto its surface, caster culling its receivers.
+bool Renderer::needs_last_frame() const {
+  return settings_.method == ShadowMethod::psm || settings_.method == ShadowMethod::automatic || culls_casters();
 }
 
 bool Renderer::culls_casters() const {

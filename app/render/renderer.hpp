@@ -69,6 +69,12 @@ class Renderer {
   Renderer(const Scene& scene, const RenderSettings& settings);
   // The frame at time t (seconds): moving objects are posed for t first.
   void render(const shadow::Camera& camera, const shadow::Light& light, double t = 0.0);
+  // Makes the next frame one that follows this camera at time t, as if that frame had been
+  // rendered: it is drawn without shadows and kept for what the next frame takes from the last
+  // (near plane, surface, receivers; nothing when the method takes nothing). A frame's own depth
+  // does not depend on its shadows, so a capture that starts at frame i renders it to the same
+  // bytes as one that rendered frame i-1 first.
+  void start_after(const shadow::Camera& camera, const shadow::Light& light, double t);
   // Live changes (ecoview view): shadow method, map size and points per pixel, from the next frame on.
   void change(ShadowMethod method, int shadow_size, float k);
   const RenderSettings& settings() const { return settings_; }
@@ -103,6 +109,8 @@ class Renderer {
   shadow::ShadowSetup best_predicted_setup(const shadow::Camera& camera, const shadow::Light& light) const;
   // Whether the shadow sampler skips casters by the last frame's receivers.
   bool culls_casters() const;
+  // Whether the next frame takes anything from the last one (near plane, surface, receivers).
+  bool needs_last_frame() const;
   // Keeps what the next frame needs of this one: its nearest depth (PSM), its surface (auto) and
   // its receivers (culls_casters).
   void remember_last_frame();
