@@ -93,6 +93,8 @@ class AccessorReader {
     std::size_t step = 0;
     std::size_t element_size = 0;
     std::size_t sparse_count = 0;
+    int sparse_index_type = 0;
+    std::size_t sparse_index_size = 0;
     const unsigned char* sparse_indices = nullptr;
     const unsigned char* sparse_values = nullptr;
   };
@@ -172,14 +174,14 @@ class AccessorReader {
       fail(std::string(what) + " accessor: bad sparse count");
     }
     e.sparse_count = static_cast<std::size_t>(a.sparse.count);
-    const int index_type = a.sparse.indices.componentType;
-    const std::size_t index_size = component_size(index_type);
-    if (index_size == 0 || index_type == TINYGLTF_COMPONENT_TYPE_FLOAT || a.sparse.indices.byteOffset < 0 ||
+    e.sparse_index_type = a.sparse.indices.componentType;
+    e.sparse_index_size = component_size(e.sparse_index_type);
+    if (e.sparse_index_size == 0 || e.sparse_index_type == TINYGLTF_COMPONENT_TYPE_FLOAT || a.sparse.indices.byteOffset < 0 ||
         a.sparse.values.byteOffset < 0) {
       fail(std::string(what) + " accessor: bad sparse indices");
     }
     e.sparse_indices = view_range(a.sparse.indices.bufferView, static_cast<std::size_t>(a.sparse.indices.byteOffset),
-                                  e.sparse_count, index_size, 0, what);
+                                  e.sparse_count, e.sparse_index_size, 0, what);
     e.sparse_values = view_range(a.sparse.values.bufferView, static_cast<std::size_t>(a.sparse.values.byteOffset),
                                  e.sparse_count, e.element_size, 0, what);
     return e;
@@ -190,10 +192,8 @@ class AccessorReader {
     if (e.dense) {
       for (std::size_t i = 0; i < a.count; ++i) store(i, e.dense + i * e.step);
     }
-    const int index_type = a.sparse.indices.componentType;
-    const std::size_t index_size = component_size(index_type);
     for (std::size_t i = 0; i < e.sparse_count; ++i) {
-      const std::uint32_t target = integer(e.sparse_indices + i * index_size, index_type, 0, what);
+      const std::uint32_t target = integer(e.sparse_indices + i * e.sparse_index_size, e.sparse_index_type, 0, what);
       if (target >= a.count) fail(std::string(what) + " accessor: sparse index out of range");
       store(target, e.sparse_values + i * e.element_size);
     }
