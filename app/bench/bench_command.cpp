@@ -175,7 +175,7 @@ class ShadowBench {
   BenchRun measure(Renderer& renderer, const View& view, const std::optional<FrameTiming>& timing = std::nullopt) {
     BenchRun run;
     if (timing) {
-      run.figures.update({{"frame_ms", timing->frame_ms}, {"sample_ms", timing->sample_ms},
+      run.figures.update({{"frame_ms", timing->frame_ms}, {"sample_ms", timing->sample_ms}, {"host_ms", timing->host_ms},
                           {"shadow_pass_ms", timing->shadow_pass_ms}, {"frame_pass_ms", timing->frame_pass_ms}});
       run.params["frames"] = timing->frames;
     } else {

@@ -125,7 +125,7 @@ class DensityBench {
                        {"depth_nearest", f.third_depths[0]}, {"depth_middle_from", f.third_depths[1]},
                        {"depth_far_from", f.third_depths[2]}, {"depth_farthest", f.third_depths[3]},
                        {"points", points.stats().points}, {"triangles", points.stats().triangles},
-                       {"frame_ms", timing.frame_ms}, {"sample_ms", timing.sample_ms}, {"frame_pass_ms", timing.frame_pass_ms},
+                       {"frame_ms", timing.frame_ms}, {"sample_ms", timing.sample_ms}, {"host_ms", timing.host_ms}, {"frame_pass_ms", timing.frame_pass_ms},
                        {"sampler_mpts", timing.sample_ms > 0 ? 1e-3 * static_cast<double>(points.stats().points) / timing.sample_ms : 0.0}};
         results_.runs.push_back(run);
         if (k == base_.k && splat == base_.splat_size) save_images(renders);
@@ -222,7 +222,7 @@ class DensityBench {
     run.params = {{"sweep", sweep}, {"scene", scene_name}, {"geometry", points ? "points" : "polygons"}, {"k", base_.k},
                   {"splat", base_.splat_size}, {"width", base_.width}, {"height", base_.height}, {"frames", t.frames}};
     if (count > 0) run.params["instances"] = count;
-    run.figures = {{"frame_ms", t.frame_ms}, {"sample_ms", t.sample_ms}, {"shadow_pass_ms", t.shadow_pass_ms},
+    run.figures = {{"frame_ms", t.frame_ms}, {"sample_ms", t.sample_ms}, {"host_ms", t.host_ms}, {"shadow_pass_ms", t.shadow_pass_ms},
                    {"frame_pass_ms", t.frame_pass_ms}, {"points", stats.points}, {"triangles", stats.triangles},
                    {"shadow_points", stats.shadow_points}};
     results_.runs.push_back(run);

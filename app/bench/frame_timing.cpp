@@ -18,7 +18,7 @@ FrameTiming time_frames(Renderer& renderer, const shadow::Camera& camera, const 
 std::vector<FrameTiming> time_frames_in_turn(const std::vector<Renderer*>& renderers, const shadow::Camera& camera,
                                              const shadow::Light& light, double t, int warmup, int frames) {
   struct Times {
-    std::vector<double> wall, sample, shadow, frame;
+    std::vector<double> wall, sample, host, shadow, frame;
   };
   std::vector<Times> times(renderers.size());
   for (int i = 0; i < warmup + frames; ++i) {
@@ -30,12 +30,13 @@ std::vector<FrameTiming> time_frames_in_turn(const std::vector<Renderer*>& rende
       const FrameStats& stats = renderers[r]->stats();
       times[r].wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
       times[r].sample.push_back(stats.sample_ms);
+      times[r].host.push_back(stats.host_ms);
       times[r].shadow.push_back(stats.shadow_pass_ms);
       times[r].frame.push_back(stats.frame_pass_ms);
     }
   }
   std::vector<FrameTiming> timings;
-  for (Times& m : times) timings.push_back({median(m.wall), median(m.sample), median(m.shadow), median(m.frame), frames});
+  for (Times& m : times) timings.push_back({median(m.wall), median(m.sample), median(m.host), median(m.shadow), median(m.frame), frames});
   return timings;
 }
 

@@ -13,6 +13,7 @@ double median(std::vector<double> v);
 struct FrameTiming {
   double frame_ms = 0.0;
   double sample_ms = 0.0;
+  double host_ms = 0.0;
   double shadow_pass_ms = 0.0;
   double frame_pass_ms = 0.0;
   int frames = 0;

@@ -1,5 +1,6 @@
 #include "app/errors.hpp"
 #include "app/gl/context.hpp"
+#include "app/gl/gl_cpu_time.hpp"
 
 #include <glad/gl.h>
 
@@ -15,6 +16,7 @@ std::string load_gl_functions(GetProc get_proc, void* user, const std::string& b
                          "." + std::to_string(GLAD_VERSION_MINOR(version)) +
                          ", ecoview needs 4.5 core; try another --backend or a newer driver");
   }
+  count_gl_cpu_time();
   const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   return renderer ? renderer : "unknown renderer";
 }

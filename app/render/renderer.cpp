@@ -2,6 +2,7 @@
 
 #include "app/clock.hpp"
 #include "app/errors.hpp"
+#include "app/gl/gl_cpu_time.hpp"
 #include "app/render/pixel_rays.hpp"
 #include "shadow/aliasing.hpp"
 #include "shadow/cascaded_map.hpp"
@@ -351,10 +352,12 @@ void Renderer::pose(double t) {
 }
 
 void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, double t) {
+  const double host_start = host_cpu_ms();
   // The first frame has no frame before it: it takes one from itself drawn without shadows.
   if (needs_last_frame() && !has_last_frame_) start_after(camera, light, t);
   draw(camera, light, t, settings_.method != ShadowMethod::none);
   if (needs_last_frame()) remember_last_frame();
+  stats_.host_ms += host_cpu_ms() - host_start;  // draw() added the sampling thread's
 }
 
 void Renderer::start_after(const shadow::Camera& camera, const shadow::Light& light, double t) {
@@ -410,13 +413,15 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   // draws it: sampling is CPU work, and on llvmpipe the GL work is too, so the two overlap on two
   // cores. The sampler only reads what pose() left.
   std::future<pointgen::SampledFrame> frame_sample;
-  double frame_sample_ms = 0.0;
+  double frame_sample_ms = 0.0, frame_sample_cpu_ms = 0.0;
   if (settings_.points) {
-    frame_sample = std::async(std::launch::async, [this, &camera, &frame_sample_ms] {
+    frame_sample = std::async(std::launch::async, [this, &camera, &frame_sample_ms, &frame_sample_cpu_ms] {
       const auto start = std::chrono::steady_clock::now();
+      const double cpu_start = thread_cpu_ms();
       pointgen::SampledFrame sampled =
           pointgen::sample_view(sampler_view(camera, settings_, {view_projection_}), tables_, samples_.meshes(), cells_);
       frame_sample_ms = ms_since(start);
+      frame_sample_cpu_ms = thread_cpu_ms() - cpu_start;
       return sampled;
     });
   }
@@ -429,6 +434,7 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   if (settings_.points) {
     selection = frame_sample.get();
     stats_.sample_ms += frame_sample_ms;
+    stats_.host_ms += frame_sample_cpu_ms;
     if (settings_.measure != RenderSettings::Measure::off) selection = measured(selection);
     frame_points_.upload(selection.points, tables_, samples_);
   } else {

@@ -54,6 +54,9 @@ struct FrameStats {
   std::size_t triangles = 0;  // in the frame pass
   std::size_t shadow_points = 0;  // in the shadow pass
   double sample_ms = 0.0;     // CPU: choosing points or polygons, for both passes
+  // CPU time of the program's own threads outside GL calls (DESIGN.md), for the whole frame:
+  // posing, sampling, setups, uploads' preparation, read-backs' scans.
+  double host_ms = 0.0;
   double shadow_pass_ms = 0.0;  // GPU (timer query)
   double frame_pass_ms = 0.0;   // GPU (timer query): polygons, point splats and their shading
 };

@@ -92,7 +92,8 @@ void Hud::draw_panel(const ViewStatus& status, const Renderer& renderer, ViewCon
   ImGui::Begin("ecoview", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   const FrameStats& s = renderer.stats();
   ImGui::Text("frame %.0f ms (%.1f fps)", status.frame_ms, status.frame_ms > 0.0 ? 1000.0 / status.frame_ms : 0.0);
-  ImGui::Text("shadow pass %.0f ms, frame pass %.0f ms, sampling %.0f ms", s.shadow_pass_ms, s.frame_pass_ms, s.sample_ms);
+  ImGui::Text("shadow pass %.0f ms, frame pass %.0f ms, sampling %.0f ms, host %.0f ms", s.shadow_pass_ms, s.frame_pass_ms,
+              s.sample_ms, s.host_ms);
   ImGui::Text("points %s, triangles %s, shadow points %s", millions(s.points).c_str(), millions(s.triangles).c_str(),
               millions(s.shadow_points).c_str());
   // A fixed wrap width: wrapping at the window's own in an auto-sized window takes frames to settle.
