@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <regex>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -317,6 +318,37 @@ TEST(CommandLine, VersionGivesTheVersionAndTheCommit) {
   if (m[2] == "unknown") return;
   const CommandResult known = run_shell("git -C " + shell_quote(source_dir().string()) + " cat-file -e " + m[2].str() + "^{commit}");
   EXPECT_EQ(known.exit_code, 0) << m[2] << " is not a commit of " << source_dir();
+}
+
+// The bundle for a machine with a GPU driver: the binary runs from it without this machine's
+// libraries beyond glibc, and it holds no GL driver (no Mesa: a GPU machine brings its own).
+TEST(GpuBundle, RunsOnItsOwnLibrariesAndHoldsNoDriver) {
+  const TempDir dir;
+  const std::string bundle = (dir / "bundle").string();
+  const CommandResult made = run_shell("ECOVIEW_BINARY=\"$ecoview_binary\" " + shell_quote((source_dir() / "scripts/gpu_bundle.sh").string()) +
+                                       " " + shell_quote(bundle));
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  std::uintmax_t bytes = 0;
+  for (const std::filesystem::directory_entry& e : std::filesystem::recursive_directory_iterator(bundle)) bytes += e.is_regular_file() ? e.file_size() : 0;
+  EXPECT_LT(bytes, std::uintmax_t{60} << 20);
+
+  const CommandResult version = run_shell("env -i PATH=/usr/bin:/bin " + shell_quote(bundle + "/ecoview") + " --version");
+  EXPECT_EQ(version.exit_code, 0) << version.err;
+  EXPECT_EQ(version.out.rfind("ecoview ", 0), 0u) << version.out;
+  // Where the loader finds each library with the bundle's folder first.
+  const CommandResult libraries = run_shell("LD_LIBRARY_PATH=" + shell_quote(bundle + "/lib") + " ldd " + shell_quote(bundle + "/bin/ecoview"));
+  ASSERT_EQ(libraries.exit_code, 0) << libraries.err;
+  std::istringstream lines(libraries.out);
+  for (std::string line; std::getline(lines, line);) {
+    std::smatch m;
+    if (!std::regex_search(line, m, std::regex(R"((\S+) => (\S+))"))) continue;
+    const std::string name = m[1], path = m[2];
+    EXPECT_EQ(name.find("Mesa"), std::string::npos) << line;
+    EXPECT_EQ(name.find("LLVM"), std::string::npos) << line;
+    EXPECT_EQ(name.find("gallium"), std::string::npos) << line;
+    const bool glibc = std::regex_match(name, std::regex(R"((libc|libm|libdl|libpthread|librt)\.so\.\d+)"));
+    if (!glibc) EXPECT_EQ(path.rfind(bundle + "/lib/", 0), 0u) << line;
+  }
 }
 
 struct BadInput {

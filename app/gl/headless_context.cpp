@@ -6,11 +6,12 @@ namespace ecoview {
 std::unique_ptr<GlContext> create_egl_context();
 #ifdef ECOVIEW_WITH_OSMESA
 std::unique_ptr<GlContext> create_osmesa_context();
+bool osmesa_library_found();
 #endif
 
 bool osmesa_available() {
 #ifdef ECOVIEW_WITH_OSMESA
-  return true;
+  return osmesa_library_found();
 #else
   return false;
 #endif
