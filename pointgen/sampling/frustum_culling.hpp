@@ -17,6 +17,7 @@ class ViewFrusta {
  public:
   explicit ViewFrusta(const std::vector<glm::mat4>& views);
   bool hold(const glm::vec3& center, float radius) const;
+  const std::vector<std::array<glm::vec4, 6>>& planes() const { return planes_; }
 
  private:
   std::vector<std::array<glm::vec4, 6>> planes_;  // per view, inside where dot >= 0

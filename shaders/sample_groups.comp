@@ -1,0 +1,30 @@
+#version 450 core
+// The GPU sampler's second pass, one work group: the groups' sums turned into their exclusive
+// prefix sums, and the frame's totals after them (points, plants with points).
+#include "sample_common.glsl"
+layout(local_size_x = 256) in;
+
+uniform uint group_count;
+
+shared uvec2 sums[256];
+
+void main() {
+  uint t = gl_LocalInvocationID.x;
+  uvec2 carried = uvec2(0u);
+  for (uint first = 0u; first < group_count; first += 256u) {
+    uvec2 own = first + t < group_count ? group_sums[first + t] : uvec2(0u);
+    sums[t] = own;
+    barrier();
+    for (uint step = 1u; step < 256u; step *= 2u) {
+      uvec2 before = t >= step ? sums[t - step] : uvec2(0u);
+      barrier();
+      sums[t] += before;
+      barrier();
+    }
+    if (first + t < group_count) group_sums[first + t] = carried + sums[t] - own;
+    uvec2 chunk = sums[255];
+    barrier();
+    carried += chunk;
+  }
+  if (t == 0u) group_sums[group_count] = carried;
+}

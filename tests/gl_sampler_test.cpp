@@ -1,0 +1,126 @@
+// The GPU sampler against the CPU sampler (its oracle) without occlusion: the same plants culled,
+// the same counts, the same choice of points or polygons, and a draw list a point splat can read.
+#include "app/gl/context.hpp"
+#include "app/render/gpu_sampler.hpp"
+#include "app/render/renderer.hpp"
+#include "app/scene/scene_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <memory>
+#include <sstream>
+#include <utility>
+
+namespace ecoview {
+namespace {
+
+// Plants of two species on a grid from 5 m to 400 m ahead and to the sides, some behind the
+// camera: near ones polygons, middle ones in the band, far ones a few points or none.
+std::string plantation() {
+  std::ostringstream s;
+  s << R"({"camera": {"position": [0, 3, 0], "target": [0, 2, -60], "fov_y_deg": 50, "near": 0.5, "far": 1000},
+          "lights": [{"type": "directional", "direction": [0.4, -0.8, -0.3]}], "objects": [)";
+  const char* species[] = {"beech", "fern"};
+  for (int k = 0; k < 2; ++k) {
+    s << (k ? ", " : "") << R"({"type": "plant", "species": ")" << species[k] << R"(", "positions": [)";
+    bool first = true;
+    for (int z = -400; z <= 40; z += 8 + 5 * k) {
+      for (int x = -200; x <= 200; x += 12 + 7 * k) {
+        s << (first ? "" : ", ") << "[" << x + 3 * k << ", 0, " << z << "]";
+        first = false;
+      }
+    }
+    s << "]}";
+  }
+  s << "]}";
+  return s.str();
+}
+
+struct Choice {
+  std::uint32_t points = 0;
+  bool polygons = false;
+};
+
+class GpuSampling : public testing::Test {
+ protected:
+  std::unique_ptr<GlContext> context = create_headless_context("egl");
+  Scene scene = load_scene({"plantation.json", plantation(), [](const std::string&) { return std::nullopt; }});
+  RenderSettings settings = [] {
+    RenderSettings s;
+    s.width = 960;
+    s.height = 540;
+    return s;
+  }();
+  PointSamples samples{scene, settings.points_per_triangle, true};
+
+  pointgen::SamplerView view() const {
+    const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
+    pointgen::SamplerView v = sampler_view(scene.camera, settings, {scene.camera.projection(aspect) * scene.camera.view()});
+    v.occlusion = false;
+    return v;
+  }
+};
+
+TEST_F(GpuSampling, ChoosesAsTheCpuSamplerDoesWithoutOcclusion) {
+  const pointgen::SampledFrame cpu = pointgen::sample_view(view(), scene.groups, samples.meshes());
+  std::map<std::pair<std::uint32_t, std::uint32_t>, Choice> oracle;
+  for (const pointgen::PointDraw& d : cpu.points) {
+    ASSERT_EQ(d.first, 0u) << "a cell counted as one: the plantation is meant to have none";
+    oracle[{d.table, d.instance}].points += d.count;
+  }
+  for (std::uint32_t t = 0; t < cpu.polygons.size(); ++t) {
+    for (std::uint32_t i : cpu.polygons[t]) oracle[{t, i}].polygons = true;
+  }
+  ASSERT_GT(cpu.point_count, 100000u);
+  ASSERT_GT(cpu.triangle_count, 0u);
+
+  GpuSampler gpu(scene.groups, samples);
+  gpu.sample(view());
+  const std::vector<glm::uvec2> counts = gpu.read_counts();
+  ASSERT_EQ(counts.size(), scene.groups[0].size() + scene.groups[1].size());
+  // Float rounding may put a count one point over or under its rounding threshold, and a plant
+  // at a band edge on its other side: at most one plant in a thousand.
+  std::size_t plants = 0, other_choice = 0, other_count = 0;
+  std::uint64_t gpu_points = 0;
+  for (std::uint32_t t = 0; t < scene.groups.size(); ++t) {
+    for (std::uint32_t i = 0; i < scene.groups[t].size(); ++i) {
+      const glm::uvec2 c = counts[gpu.first_plant(t) + i];
+      const auto found = oracle.find({t, i});
+      const Choice expected = found == oracle.end() ? Choice{} : found->second;
+      ++plants;
+      gpu_points += c.x;
+      other_choice += (c.y != 0) != expected.polygons;
+      other_count += c.x + 1 < expected.points || c.x > expected.points + 1;
+    }
+  }
+  std::cout << plants << " plants, cpu points " << cpu.point_count << " triangles " << cpu.triangle_count << ", gpu points " << gpu_points << ", other choice " << other_choice << ", other count " << other_count << "\n";
+  EXPECT_LE(other_choice, plants / 1000) << other_choice << " of " << plants;
+  EXPECT_LE(other_count, plants / 1000) << other_count << " of " << plants;
+  EXPECT_NEAR(static_cast<double>(gpu_points), static_cast<double>(cpu.point_count), 0.002 * static_cast<double>(cpu.point_count));
+}
+
+TEST_F(GpuSampling, WritesTheDrawsInPlantOrderWithoutGaps) {
+  GpuSampler gpu(scene.groups, samples);
+  gpu.sample(view());
+  const std::vector<glm::uvec2> counts = gpu.read_counts();
+  const std::vector<glm::uvec4> draws = gpu.read_draws();
+  ASSERT_FALSE(draws.empty());
+  std::size_t next = 0;
+  std::uint32_t first_point = 0;
+  for (std::uint32_t plant = 0; plant < counts.size(); ++plant) {
+    if (counts[plant].x == 0) continue;
+    ASSERT_LT(next, draws.size());
+    const glm::uvec4 d = draws[next++];
+    EXPECT_EQ(d.x, first_point);
+    EXPECT_EQ(d.y, counts[plant].x);
+    EXPECT_EQ(d.w, plant);
+    const std::size_t table = plant < gpu.first_plant(1) ? 0 : 1;
+    EXPECT_EQ(d.z, samples.first_sample(scene.groups[table].mesh));
+    first_point += d.y;
+  }
+  EXPECT_EQ(next, draws.size());
+}
+
+}  // namespace
+}  // namespace ecoview
