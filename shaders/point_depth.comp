@@ -6,5 +6,6 @@
 #ifdef KEEP_PROJECTION
 #define PROJECTED(point, corner, depth) \
   projected[point] = uvec2((uint(corner.x) & 0xFFFFu) | (uint(corner.y) << 16), depth)
+#define OUTSIDE(point) projected[point] = uvec2(0u, no_point)
 #endif
 #include "point_walk.glsl"

@@ -1,16 +1,16 @@
 // The splat compute passes' threads: each takes a run of points_per_thread consecutive points and
-// visits the splat_size x splat_size pixels of each.
+// visits the splat_size x splat_size pixels of each. The work groups are laid out in rows of up to
+// GL's 65535 (shaders/point_dispatch.comp).
 layout(local_size_x = 64) in;
 
-uniform uint total_points;
-uniform uint first_thread;  // dispatches are split to stay within the work-group count limit
 uniform int splat_size;
 
-const uint points_per_thread = 16u;  // app/render/point_splat.cpp
+const uint points_per_thread = 16u;
 
 // This thread's points, from x up to y (none when x >= y).
 uvec2 thread_points() {
-  uint first = (first_thread + gl_GlobalInvocationID.x) * points_per_thread;
+  uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+  uint first = (group * gl_WorkGroupSize.x + gl_LocalInvocationID.x) * points_per_thread;
   return uvec2(first, min(first + points_per_thread, total_points));
 }
 

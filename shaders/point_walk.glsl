@@ -1,11 +1,14 @@
 // The body of the splat compute passes that project points: each thread projects its points and
 // calls VISIT(pixel index, depth, point) for the pixels of each one's splat. The including shader
 // defines VISIT first, and may define PROJECTED(point, corner, depth), called once per point on
-// the target with its splat's lower-left pixel.
+// the target with its splat's lower-left pixel, and OUTSIDE(point) once per point off it.
 #include "point_threads.glsl"
 
 #ifndef PROJECTED
 #define PROJECTED(point, corner, depth)
+#endif
+#ifndef OUTSIDE
+#define OUTSIDE(point)
 #endif
 
 uniform mat4 view_projection;  // for a paraboloid shadow view, its world → light space matrix
@@ -24,9 +27,11 @@ void main() {
     vec4 world = instances[d.w].model * vec4(positions[d.z + (p - d.x)].xyz, 1.0);
     vec4 clip = paraboloid.x == 0.0 ? view_projection * world : paraboloid_clip(view_projection, paraboloid, world.xyz);
     // Written to be false for NaN too (a GPU may turn a NaN corner into pixel 0).
-    if (!(clip.w > 0.0)) continue;
     vec3 ndc = clip.xyz / clip.w;
-    if (!all(lessThanEqual(abs(ndc), vec3(1.0)))) continue;
+    if (!(clip.w > 0.0) || !all(lessThanEqual(abs(ndc), vec3(1.0)))) {
+      OUTSIDE(p);
+      continue;
+    }
     // Window depth is a non-negative float, whose bits order like the values: atomicMin on uint.
     uint depth = floatBitsToUint(clamp(ndc.z * 0.5 + 0.5 + depth_bias, 0.0, 1.0));
     ivec2 corner = ivec2(floor((ndc.xy * 0.5 + 0.5) * vec2(target_size) - 0.5 * float(splat_size - 1)));

@@ -1,10 +1,13 @@
 #version 450 core
 // The GPU sampler's second pass, one work group: the groups' sums turned into their exclusive
-// prefix sums, and the frame's totals after them (points, plants with points).
+// prefix sums, and the frame's totals (points, plants with points) as a point splat reads them.
 #include "sample_common.glsl"
 layout(local_size_x = 256) in;
 
+layout(std430, binding = 15) writeonly buffer Totals { uint total_points; uint draw_count; };
+
 uniform uint group_count;
+uniform uint point_capacity;  // the points the splat's buffers hold: those past it are not drawn
 
 shared uvec2 sums[256];
 
@@ -26,5 +29,8 @@ void main() {
     barrier();
     carried += chunk;
   }
-  if (t == 0u) group_sums[group_count] = carried;
+  if (t == 0u) {
+    total_points = min(carried.x, point_capacity);
+    draw_count = carried.y;
+  }
 }

@@ -73,7 +73,6 @@ void FramePass::draw_surfaces(const GpuScene& scene, const shadow::Camera& camer
 }
 
 void FramePass::add_points(const PointSplat& points, const shadow::Camera& camera) const {
-  if (points.point_count() == 0) return;
   glBindFramebuffer(GL_FRAMEBUFFER, surfaces_.name());
   glViewport(0, 0, width_, height_);
   glEnable(GL_DEPTH_TEST);

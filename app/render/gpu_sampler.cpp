@@ -23,7 +23,7 @@ struct GpuMesh {
 };
 
 constexpr GLuint draws_binding = 1, instances_binding = 2, block_draws_binding = 8, plant_meshes_binding = 10,
-                 meshes_binding = 11, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14;
+                 meshes_binding = 11, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15;
 constexpr std::size_t plants_per_group = 1024, threads_per_group = 256;  // shaders/sample_count.comp
 constexpr std::size_t points_per_block = 16;                              // shaders/point_common.glsl
 constexpr std::size_t max_views = 6;                                      // planes[36]
@@ -67,16 +67,18 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   }
   plant_count_ = instances.size();
   group_count_ = (plant_count_ + plants_per_group - 1) / plants_per_group;
-  // Room for as many points as every plant's whole list, or as one buffer addresses.
-  block_capacity_ = std::min((most_points + points_per_block - 1) / points_per_block, gl::max_storage_block_bytes() / sizeof(GLuint));
+  // Room for as many points as every plant's whole list, or as a splat's buffers address (one
+  // uvec2 per point where the frame's splat puts it).
+  point_capacity_ = std::min(most_points, gl::max_storage_block_bytes() / sizeof(glm::uvec2));
   gl::store(instances_, instances);
   gl::store(plant_meshes_, plant_meshes);
   gl::store(meshes_, gpu_meshes);
   storage<glm::uvec2>(counts_, plant_count_);
   storage<glm::uvec2>(offsets_, plant_count_);
-  storage<glm::uvec2>(group_sums_, group_count_ + 1);
+  storage<glm::uvec2>(group_sums_, group_count_);
   storage<glm::uvec4>(draws_, plant_count_);
-  storage<GLuint>(block_draws_, block_capacity_);
+  storage<GLuint>(block_draws_, (point_capacity_ + points_per_block - 1) / points_per_block);
+  storage<GLuint>(totals_, 2);
 }
 
 void GpuSampler::sample(const pointgen::SamplerView& view) {
@@ -92,6 +94,7 @@ void GpuSampler::sample(const pointgen::SamplerView& view) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, counts_binding, counts_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, offsets_binding, offsets_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, group_sums_binding, group_sums_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, totals_binding, totals_.name());
   const auto plants = static_cast<unsigned>(plant_count_);
 
   const GLuint count = count_program_.name();
@@ -110,12 +113,13 @@ void GpuSampler::sample(const pointgen::SamplerView& view) {
 
   gl::set_uniform(groups_program_, "group_count", static_cast<unsigned>(group_count_));
   gl::set_uniform(groups_program_, "plant_count", plants);
+  gl::set_uniform(groups_program_, "point_capacity", static_cast<unsigned>(point_capacity_));
   glUseProgram(groups_program_.name());
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   gl::set_uniform(draws_program_, "plant_count", plants);
-  gl::set_uniform(draws_program_, "block_capacity", static_cast<unsigned>(block_capacity_));
+  gl::set_uniform(draws_program_, "block_capacity", static_cast<unsigned>((point_capacity_ + points_per_block - 1) / points_per_block));
   glUseProgram(draws_program_.name());
   glDispatchCompute(static_cast<GLuint>(std::max<std::size_t>((plant_count_ + threads_per_group - 1) / threads_per_group, 1)), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -129,7 +133,7 @@ std::vector<glm::uvec2> GpuSampler::read_counts() const {
 
 std::vector<glm::uvec4> GpuSampler::read_draws() const {
   glm::uvec2 totals(0u);
-  glGetNamedBufferSubData(group_sums_.name(), static_cast<GLintptr>(group_count_ * sizeof(glm::uvec2)), sizeof totals, &totals);
+  glGetNamedBufferSubData(totals_.name(), 0, sizeof totals, &totals);
   std::vector<glm::uvec4> draws(totals.y);
   if (!draws.empty()) glGetNamedBufferSubData(draws_.name(), 0, static_cast<GLsizeiptr>(draws.size() * sizeof(glm::uvec4)), draws.data());
   return draws;

@@ -1,6 +1,7 @@
 #pragma once
 #include "app/gl/gl_objects.hpp"
 #include "app/render/point_samples.hpp"
+#include "app/render/point_splat.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
 
 #include <vector>
@@ -23,6 +24,9 @@ class GpuSampler {
   // cap and receivers are not.
   void sample(const pointgen::SamplerView& view);
 
+  // The draws of the last sample(), for PointSplat::use.
+  PointDrawList draw_list() const { return {draws_.name(), instances_.name(), block_draws_.name(), totals_.name(), point_capacity_}; }
+
   std::size_t plant_count() const { return plant_count_; }
   // The plant index of a table's first instance (tables of other meshes hold none).
   std::uint32_t first_plant(std::size_t table) const { return first_plant_[table]; }
@@ -35,9 +39,9 @@ class GpuSampler {
  private:
   std::size_t plant_count_ = 0;
   std::size_t group_count_ = 0;
-  std::size_t block_capacity_ = 0;  // blocks of points the draw list has room for
+  std::size_t point_capacity_ = 0;  // points the draw list has room for
   std::vector<std::uint32_t> first_plant_;
-  gl::Buffer instances_, plant_meshes_, meshes_, counts_, offsets_, group_sums_, draws_, block_draws_;
+  gl::Buffer instances_, plant_meshes_, meshes_, counts_, offsets_, group_sums_, draws_, block_draws_, totals_;
   gl::Program count_program_, groups_program_, draws_program_;
 };
 

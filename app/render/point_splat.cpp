@@ -15,10 +15,9 @@ struct GpuInstance {
 
 constexpr GLuint draws_binding = 1, instances_binding = 2, positions_binding = 3, normals_binding = 4,
                  colors_binding = 5, depths_binding = 6, winners_binding = 7, block_draws_binding = 8,
-                 projected_binding = 9;
-constexpr GLuint threads_per_group = 64, points_per_thread = 16;  // point_threads.glsl
-constexpr std::uint64_t points_per_block = 16;                    // point_common.glsl
-constexpr GLuint max_groups_per_dispatch = 65535;                   // GL's guaranteed minimum
+                 projected_binding = 9, totals_binding = 15, dispatch_binding = 16;
+constexpr std::uint64_t points_per_thread = 16;  // point_threads.glsl
+constexpr std::uint64_t points_per_block = 16;   // point_common.glsl
 // Point indices are 32-bit in the shaders: the last one marks "no point", and a thread's run of
 // points must end below it (point_threads.glsl).
 constexpr std::uint64_t max_points = 0xFFFFFFFFu - points_per_thread;
@@ -59,12 +58,15 @@ void clear(const gl::Buffer& buffer, GLuint value) {
 
 PointSplat::PointSplat(glm::ivec2 size)
     : size_(size),
+      dispatch_program_(gl::build_program({"point_dispatch.comp"})),
       depth_program_(gl::build_program({"point_depth.comp"})),
       keeping_depth_program_(gl::build_program({"point_depth.comp"}, "#define KEEP_PROJECTION\n")),
       resolve_program_(gl::build_program({"point_resolve.comp"})) {
   const auto pixels = static_cast<GLsizeiptr>(size.x) * size.y * static_cast<GLsizeiptr>(sizeof(GLuint));
   glNamedBufferStorage(depths_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(winners_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(totals_.name(), 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(dispatch_.name(), 3 * sizeof(GLuint), nullptr, 0);
 }
 
 void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std::vector<pointgen::InstanceTable>& tables,
@@ -90,21 +92,34 @@ void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std
   fill(draws_, draws_capacity_, gpu_draws);
   fill(instances_, instances_capacity_, instances);
   fill(block_draws_, block_draws_capacity_, block_draws);
-  total_points_ = first_point;
-  draw_count_ = draws.size();
+  const GLuint totals[2] = {static_cast<GLuint>(first_point), static_cast<GLuint>(draws.size())};
+  glNamedBufferSubData(totals_.name(), 0, sizeof totals, totals);
+  use({draws_.name(), instances_.name(), block_draws_.name(), totals_.name(), static_cast<std::size_t>(first_point)}, samples);
+}
+
+void PointSplat::use(const PointDrawList& list, const PointSamples& samples) {
+  list_ = list;
   samples_ = &samples;
 }
 
 void PointSplat::bind_for(const gl::Program& program) const {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draws_binding, draws_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, instances_binding, instances_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draws_binding, list_.draws);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, instances_binding, list_.instances);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, block_draws_binding, list_.block_draws);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, totals_binding, list_.totals);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, depths_binding, depths_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, winners_binding, winners_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, block_draws_binding, block_draws_.name());
   if (projected_capacity_ > 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, projected_binding, projected_.name());
   if (samples_ != nullptr) samples_->bind(positions_binding, normals_binding, colors_binding);
-  gl::set_uniform(program, "draw_count", static_cast<unsigned>(draw_count_));
   gl::set_uniform(program, "target_size", size_);
+}
+
+void PointSplat::count_groups() const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, totals_binding, list_.totals);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, dispatch_binding, dispatch_.name());
+  glUseProgram(dispatch_program_.name());
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT);
 }
 
 void PointSplat::dispatch(const gl::Program& program, const glm::mat4& view_projection, int splat_size,
@@ -112,16 +127,12 @@ void PointSplat::dispatch(const gl::Program& program, const glm::mat4& view_proj
   bind_for(program);
   gl::set_uniform(program, "view_projection", view_projection);
   gl::set_uniform(program, "paraboloid", paraboloid);
-  gl::set_uniform(program, "total_points", static_cast<unsigned>(total_points_));
   gl::set_uniform(program, "splat_size", splat_size);
   gl::set_uniform(program, "depth_bias", depth_bias);
   glUseProgram(program.name());
-  const std::size_t threads = (total_points_ + points_per_thread - 1) / points_per_thread;
-  const std::size_t groups = (threads + threads_per_group - 1) / threads_per_group;
-  for (std::size_t first = 0; first < groups; first += max_groups_per_dispatch) {
-    gl::set_uniform(program, "first_thread", static_cast<unsigned>(first * threads_per_group));
-    glDispatchCompute(static_cast<GLuint>(std::min<std::size_t>(max_groups_per_dispatch, groups - first)), 1, 1);
-  }
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_.name());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
@@ -129,11 +140,10 @@ void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float d
   overwrite_barrier();
   clear(depths_, 0xFFFFFFFFu);
   clear(winners_, 0xFFFFFFFFu);
-  if (total_points_ == 0) return;
-  reserve<glm::uvec2>(projected_, projected_capacity_, total_points_);  // only the frame's splat keeps where points went
-  const GLuint outside = 0xFFFFFFFFu;  // no_point: pass 2 skips the points pass 1 leaves so
-  glClearNamedBufferSubData(projected_.name(), GL_R32UI, 0, static_cast<GLsizeiptr>(total_points_ * sizeof(glm::uvec2)),
-                            GL_RED_INTEGER, GL_UNSIGNED_INT, &outside);
+  if (list_.most_points == 0) return;
+  // Only the frame's splat keeps where points went; pass 1 writes every point's entry.
+  reserve<glm::uvec2>(projected_, projected_capacity_, list_.most_points);
+  count_groups();
   dispatch(keeping_depth_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f));
   dispatch(resolve_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f));
 }
@@ -142,12 +152,13 @@ void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float d
 // on llvmpipe a fullscreen pass writing each texel's depth took 80-140 ms a 4096² layer.
 void PointSplat::splat_onto(GLuint depth_texture, int layer, const glm::mat4& view_projection, int splat_size,
                             float depth_bias, glm::vec2 paraboloid) {
-  if (total_points_ == 0) return;
+  if (list_.most_points == 0) return;
   const auto bytes = static_cast<GLsizei>(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y) * sizeof(float));
   overwrite_barrier();
   glBindBuffer(GL_PIXEL_PACK_BUFFER, depths_.name());
   glGetTextureSubImage(depth_texture, 0, 0, 0, layer, size_.x, size_.y, 1, GL_DEPTH_COMPONENT, GL_FLOAT, bytes, nullptr);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  count_groups();
   dispatch(depth_program_, view_projection, splat_size, depth_bias, paraboloid);
   glMemoryBarrier(GL_PIXEL_BUFFER_BARRIER_BIT);
   glBindBuffer(GL_PIXEL_UNPACK_BUFFER, depths_.name());
@@ -164,7 +175,10 @@ Image<std::uint32_t> PointSplat::count_points_on(const Image<float>& surface_dep
   const Image<float> rows_up = from_bottom_up(size_.x, size_.y, 1, surface_depth.samples);
   glNamedBufferSubData(depths_.name(), 0, static_cast<GLsizeiptr>(rows_up.samples.size() * sizeof(float)), rows_up.samples.data());
   clear(winners_, 0u);
-  if (total_points_ > 0) dispatch(*count_program_, view_projection, 1, 0.0f, glm::vec2(0.0f));
+  if (list_.most_points > 0) {
+    count_groups();
+    dispatch(*count_program_, view_projection, 1, 0.0f, glm::vec2(0.0f));
+  }
   std::vector<std::uint32_t> bottom_up(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));
   glGetNamedBufferSubData(winners_.name(), 0, static_cast<GLsizeiptr>(bottom_up.size() * sizeof(std::uint32_t)), bottom_up.data());
   return from_bottom_up(size_.x, size_.y, 1, bottom_up);

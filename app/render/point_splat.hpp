@@ -8,6 +8,15 @@
 
 namespace ecoview {
 
+// A frame's point draws in GL buffers, wherever they were made (PointSplat::upload on the CPU,
+// GpuSampler on the GPU): per draw (first point, count, first sample, instance), the instances
+// (model matrix, tint), per block of 16 points the draw holding its first point, and the totals
+// (points, draws) as two uints, so that a list made on the GPU is drawn without a read-back.
+struct PointDrawList {
+  GLuint draws = 0, instances = 0, block_draws = 0, totals = 0;
+  std::size_t most_points = 0;  // the most points the list may hold
+};
+
 // Point splatting with compute shaders into a target of width x height pixels: the frame's draws
 // go to GL buffers; pass 1 keeps each pixel's nearest depth (atomicMin), pass 2 the nearest point
 // (for shading), from where pass 1 put each point rather than projecting it again (on llvmpipe a
@@ -19,6 +28,8 @@ class PointSplat {
   // The points to draw: the first `count` samples of each drawn instance.
   void upload(const std::vector<pointgen::PointDraw>& draws, const std::vector<pointgen::InstanceTable>& tables,
               const PointSamples& samples);
+  // Or a list already in GL buffers, which must outlive its use here.
+  void use(const PointDrawList& list, const PointSamples& samples);
   // Passes 1 and 2, with splats of splat_size x splat_size pixels, for shading.
   void splat(const glm::mat4& view_projection, int splat_size, float depth_bias);
   // Pass 1 onto one layer of a depth-texture array of the target's size (a shadow map): each
@@ -36,18 +47,18 @@ class PointSplat {
   // Binds the buffers and sets the draw count and target size a shading program reads.
   void bind_for(const gl::Program& program) const;
 
-  std::size_t point_count() const { return total_points_; }
 
  private:
   glm::ivec2 size_;
-  std::size_t total_points_ = 0;
-  std::size_t draw_count_ = 0;
-  gl::Buffer draws_, instances_, block_draws_, depths_, winners_, projected_;
+  PointDrawList list_;  // the one drawn: uploaded_ or another's
+  gl::Buffer draws_, instances_, block_draws_, totals_, depths_, winners_, projected_, dispatch_;
   std::size_t draws_capacity_ = 0, instances_capacity_ = 0, block_draws_capacity_ = 0, projected_capacity_ = 0;
+  // The passes' work groups for the list's points, written on the GPU (shaders/point_dispatch.comp).
+  void count_groups() const;
   void dispatch(const gl::Program& program, const glm::mat4& view_projection, int splat_size, float depth_bias,
                 glm::vec2 paraboloid) const;
 
-  gl::Program depth_program_, keeping_depth_program_, resolve_program_;
+  gl::Program dispatch_program_, depth_program_, keeping_depth_program_, resolve_program_;
   std::unique_ptr<gl::Program> count_program_;  // made when first counting
   const PointSamples* samples_ = nullptr;
 };

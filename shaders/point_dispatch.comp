@@ -1,0 +1,16 @@
+#version 450 core
+// Before a splat's passes: the work groups they take for the list's points (point_threads.glsl),
+// as a glDispatchComputeIndirect command, in rows of at most GL's guaranteed 65535 groups.
+layout(local_size_x = 1) in;
+
+layout(std430, binding = 15) readonly buffer Totals { uint total_points; uint draw_count; };
+layout(std430, binding = 16) writeonly buffer Dispatch { uvec3 groups; };
+
+const uint points_per_group = 64u * 16u;  // threads per group × points_per_thread (point_threads.glsl)
+const uint max_row = 65535u;
+
+void main() {
+  uint needed = (total_points + points_per_group - 1u) / points_per_group;
+  uint rows = (needed + max_row - 1u) / max_row;
+  groups = needed == 0u ? uvec3(0u, 1u, 1u) : uvec3(rows == 1u ? needed : max_row, rows, 1u);
+}
