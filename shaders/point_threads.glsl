@@ -4,13 +4,14 @@
 layout(local_size_x = 64) in;
 
 uniform int splat_size;
+uniform bool band_only;  // only the points of the band last added, not the whole list
 
 const uint points_per_thread = 16u;
 
 // This thread's points, from x up to y (none when x >= y).
 uvec2 thread_points() {
   uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-  uint first = (group * gl_WorkGroupSize.x + gl_LocalInvocationID.x) * points_per_thread;
+  uint first = (band_only ? band_first_point : 0u) + (group * gl_WorkGroupSize.x + gl_LocalInvocationID.x) * points_per_thread;
   return uvec2(first, min(first + points_per_thread, total_points));
 }
 

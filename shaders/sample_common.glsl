@@ -1,23 +1,34 @@
 // The GPU sampler's buffers (app/render/gpu_sampler.hpp): the plants resident on the GPU, what it
-// knows of their meshes, and per plant its count and its place in the frame's draw list.
+// knows of their meshes, and per plant its count and its place in the frame's lists.
 struct Instance {
   mat4 model;
   vec4 tint;
 };
 struct SampledMesh {
-  vec4 center_radius;   // of its bounds, in the mesh's frame
-  vec4 area;            // x: surface area, square metres
-  vec4 moments[3];      // columns of the mean n nᵀ of its samples' normals (zero: facing every way)
-  uvec4 sizes;          // triangles, samples, its list's first sample among all meshes', 0
+  vec4 center_radius;    // of its bounds, in the mesh's frame
+  vec4 half_size_area;   // its bounds' half sizes; w: its surface area, square metres
+  vec4 moments[3];       // columns of the mean n nᵀ of its samples' normals (zero: facing every way)
+  uvec4 sizes;           // triangles, samples, its list's first sample among all meshes', 0
 };
 layout(std430, binding = 2) readonly buffer Instances { Instance instances[]; };
 layout(std430, binding = 10) readonly buffer PlantMeshes { uvec2 plant_meshes[]; };  // mesh, rounding's float bits
 layout(std430, binding = 11) readonly buffer SampledMeshes { SampledMesh meshes[]; };
-// Per plant: its points and whether it is drawn as polygons; then its exclusive prefix sums of
-// points and of plants with points, within its work group until the last pass adds the groups'.
-layout(std430, binding = 12) buffer Counts { uvec2 counts[]; };
-layout(std430, binding = 13) buffer Offsets { uvec2 offsets[]; };
-layout(std430, binding = 14) buffer GroupSums { uvec2 group_sums[]; };
+// Per plant, once counted: (points, the number of its band from 1, 1 when drawn as polygons, 0);
+// zero before. Per plant of every
+// band: its exclusive prefix sums of (points, plants with points, plants as polygons) within its
+// work group, until the groups' sums (after the bands before) are added.
+layout(std430, binding = 12) buffer Counts { uvec4 counts[]; };
+layout(std430, binding = 13) buffer Offsets { uvec4 offsets[]; };
+layout(std430, binding = 14) buffer GroupSums { uvec4 group_sums[]; };
+// The lists' sizes: the points a splat draws (no more than its buffers hold), the point draws,
+// where this band's points begin, all points, the polygon plants.
+layout(std430, binding = 15) buffer Totals {
+  uint total_points;
+  uint draw_count;
+  uint band_first_point;
+  uint all_points;
+  uint polygon_count;
+};
 
 uniform uint plant_count;
 

@@ -1,12 +1,18 @@
 #version 450 core
-// The GPU sampler's first pass: each plant culled against the view's frusta and counted with the
-// density formula (docs/point_density.md), points or polygons chosen as pointgen::sample_view
-// chooses them without occlusion; then the prefix sums of the counts within each work group.
+// The GPU sampler's first pass, per band: each plant whose centre lies in the band culled against
+// the view's frusta and, with occlusion, against the depth pyramid of what nearer bands drew;
+// counted with the density formula (docs/point_density.md); points or polygons chosen as
+// pointgen::sample_view chooses them. Then the prefix sums of the counts within each work group.
 #include "sample_common.glsl"
+#include "depth_pyramid.glsl"
 layout(local_size_x = 256) in;
 
 uniform vec4 planes[36];  // six per view, inside where dot >= 0
 uniform uint view_count;
+uniform mat4 view_projection;  // the first view's, for occlusion
+uniform bool occlusion;
+uniform vec2 band;             // the band's distances from the eye to plants' centres, [x, y)
+uniform uint band_number;      // from 1
 uniform vec3 eye;
 uniform vec3 forward;
 uniform float edge_cos;
@@ -26,27 +32,50 @@ bool in_view(vec3 center, float radius) {
   return false;
 }
 
+// Whether the plant's bounds box is off screen or behind what nearer bands drew over all of its
+// screen rectangle. Not where the box reaches behind the eye.
+bool hidden(mat4 model, SampledMesh mesh) {
+  vec3 lo = vec3(1e30), hi = vec3(-1e30);
+  for (int c = 0; c < 8; ++c) {
+    vec3 corner = mesh.center_radius.xyz + mesh.half_size_area.xyz * vec3((c & 1) != 0 ? 1.0 : -1.0, (c & 2) != 0 ? 1.0 : -1.0,
+                                                                          (c & 4) != 0 ? 1.0 : -1.0);
+    vec4 clip = view_projection * (model * vec4(corner, 1.0));
+    if (!(clip.w > 0.0)) return false;
+    vec3 ndc = clip.xyz / clip.w;
+    lo = min(lo, ndc);
+    hi = max(hi, ndc);
+  }
+  if (any(lessThan(hi.xy, vec2(-1.0))) || any(greaterThan(lo.xy, vec2(1.0)))) return true;
+  vec2 size = vec2(pyramid_size[0]);
+  ivec2 first = ivec2(floor((lo.xy * 0.5 + 0.5) * size)), last = ivec2(floor((hi.xy * 0.5 + 0.5) * size));
+  return lo.z * 0.5 + 0.5 > farthest_over(first, last);
+}
+
 float facing(SampledMesh mesh, vec3 v) {
   mat3 moments = mat3(mesh.moments[0].xyz, mesh.moments[1].xyz, mesh.moments[2].xyz);
   if (!(moments[0][0] + moments[1][1] + moments[2][2] > 0.0)) return 0.5;
   return sqrt(max(dot(v, moments * v), 0.0));
 }
 
-// (points, 1 when drawn as polygons) of plant i.
-uvec2 count_plant(uint i) {
+// (points, 1 when drawn as polygons) of plant i; none outside the band.
+uvec2 count_plant(uint i, out bool in_band) {
+  in_band = false;
   if (i >= plant_count) return uvec2(0u);
   mat4 model = instances[i].model;
   SampledMesh mesh = meshes[plant_meshes[i].x];
-  float scale = pow(abs(determinant(mat3(model))), 1.0 / 3.0);
   vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
+  float from_eye = length(eye - center);
+  in_band = from_eye >= band.x && from_eye < band.y;
+  if (!in_band) return uvec2(0u);
+  float scale = pow(abs(determinant(mat3(model))), 1.0 / 3.0);
   float radius = mesh.center_radius.w * scale;
-  if (!in_view(center, radius)) return uvec2(0u);
-  float distance = max(length(eye - center), max(0.5 * radius, 1e-3));
+  if (!in_view(center, radius) || (occlusion && hidden(model, mesh))) return uvec2(0u);
+  float distance = max(from_eye, max(0.5 * radius, 1e-3));
   float depth = max(dot(center - eye, forward), distance * edge_cos);
   vec3 to_eye = inverse(mat3(model)) * (eye - center);
   float facing_eye = dot(to_eye, to_eye) > 0.0 ? facing(mesh, normalize(to_eye)) : 0.5;
   float z = max(depth, 1e-3);
-  float needed = k * pixels_per_radian * pixels_per_radian * mesh.area.x * scale * scale * facing_eye * max(distance, z) / (z * z * z);
+  float needed = k * pixels_per_radian * pixels_per_radian * mesh.half_size_area.w * scale * scale * facing_eye * max(distance, z) / (z * z * z);
   float samples = float(mesh.sizes.y);
   float ratio = needed / (points_per_triangle * float(mesh.sizes.x));
   bool as_polygons = ratio > band_low || needed > samples;
@@ -56,29 +85,30 @@ uvec2 count_plant(uint i) {
   return uvec2(as_points ? points : 0u, as_polygons ? 1u : 0u);
 }
 
-shared uvec2 sums[256];
+shared uvec4 sums[256];
 
 void main() {
   uint first = gl_WorkGroupID.x * plants_per_group + gl_LocalInvocationID.x * 4u;
-  uvec2 own[4];
-  uvec2 total = uvec2(0u);
+  uvec4 own[4];
+  uvec4 total = uvec4(0u);
   for (uint j = 0u; j < 4u; ++j) {
-    uvec2 c = count_plant(first + j);
+    bool in_band;
+    uvec2 c = count_plant(first + j, in_band);
     own[j] = total;
-    total += uvec2(c.x, c.x > 0u ? 1u : 0u);
-    if (first + j < plant_count) counts[first + j] = c;
+    total += uvec4(c.x, c.x > 0u ? 1u : 0u, c.y, 0u);
+    if (in_band) counts[first + j] = uvec4(c.x, band_number, c.y, 0u);
   }
   // Inclusive scan of the threads' totals (Hillis-Steele), then each plant's exclusive offset.
   uint t = gl_LocalInvocationID.x;
   sums[t] = total;
   barrier();
   for (uint step = 1u; step < 256u; step *= 2u) {
-    uvec2 before = t >= step ? sums[t - step] : uvec2(0u);
+    uvec4 before = t >= step ? sums[t - step] : uvec4(0u);
     barrier();
     sums[t] += before;
     barrier();
   }
-  uvec2 thread_offset = sums[t] - total;
+  uvec4 thread_offset = sums[t] - total;
   for (uint j = 0u; j < 4u; ++j) {
     if (first + j < plant_count) offsets[first + j] = thread_offset + own[j];
   }

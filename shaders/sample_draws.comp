@@ -1,20 +1,38 @@
 #version 450 core
-// The GPU sampler's last pass: each plant with points writes its draw, in plant order, as the
-// point splat reads them (first point, count, first sample, instance), and the draw of each block
-// of points that starts in its run.
+// The GPU sampler's third pass, per band: each plant with points writes its draw, in plant order
+// after the bands before, as the point splat reads them (first point, count, first sample,
+// instance), and the draw of each block of points that starts in its run; each plant drawn as
+// polygons its instance for the polygon draws (GpuScene's instance layout).
 #include "sample_common.glsl"
 layout(local_size_x = 256) in;
 
+struct PolygonInstance {
+  mat4 model;
+  vec4 normal_matrix[3];  // columns of mat3(transpose(inverse(model)))
+  vec4 color;
+};
 layout(std430, binding = 1) writeonly buffer Draws { uvec4 draws[]; };
 layout(std430, binding = 8) writeonly buffer BlockDraws { uint block_draws[]; };
+layout(std430, binding = 16) writeonly buffer PolygonInstances { PolygonInstance polygon_instances[]; };
 const uint points_per_block = 16u;  // point_common.glsl
-uniform uint block_capacity;  // beyond it the frame's points are not drawn
+uniform uint block_capacity;        // beyond it the frame's points are not drawn
+uniform uint band_number;           // this band's, from 1
 
 void main() {
   uint i = gl_GlobalInvocationID.x;
-  if (i >= plant_count || counts[i].x == 0u) return;
-  uvec2 at = offsets[i] + group_sums[i / plants_per_group];
-  uint points = counts[i].x;
-  draws[at.y] = uvec4(at.x, points, meshes[plant_meshes[i].x].sizes.z, i);
-  for (uint b = (at.x + points_per_block - 1u) / points_per_block; b * points_per_block < at.x + points && b < block_capacity; ++b) block_draws[b] = at.y;
+  if (i >= plant_count) return;
+  uvec4 c = counts[i];
+  if (c.y != band_number || (c.x == 0u && c.z == 0u)) return;
+  mat4 model = instances[i].model;
+  uvec4 at = offsets[i] + group_sums[i / plants_per_group];
+  if (c.x > 0u) {
+    draws[at.y] = uvec4(at.x, c.x, meshes[plant_meshes[i].x].sizes.z, i);
+    for (uint b = (at.x + points_per_block - 1u) / points_per_block; b * points_per_block < at.x + c.x && b < block_capacity; ++b) {
+      block_draws[b] = at.y;
+    }
+  }
+  if (c.z > 0u) {
+    mat3 n = transpose(inverse(mat3(model)));
+    polygon_instances[at.z] = PolygonInstance(model, vec4[3](vec4(n[0], 0.0), vec4(n[1], 0.0), vec4(n[2], 0.0)), instances[i].tint);
+  }
 }

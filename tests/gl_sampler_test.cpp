@@ -17,10 +17,12 @@ namespace {
 
 // Plants of two species on a grid from 5 m to 400 m ahead and to the sides, some behind the
 // camera: near ones polygons, middle ones in the band, far ones a few points or none.
-std::string plantation() {
+// With `wall`, a box 20 m ahead hides every plant beyond it in the middle of the view.
+std::string plantation(bool wall = false) {
   std::ostringstream s;
   s << R"({"camera": {"position": [0, 3, 0], "target": [0, 2, -60], "fov_y_deg": 50, "near": 0.5, "far": 1000},
           "lights": [{"type": "directional", "direction": [0.4, -0.8, -0.3]}], "objects": [)";
+  if (wall) s << R"({"type": "box", "min": [-12, 0, -21], "max": [12, 40, -20]}, )";
   const char* species[] = {"beech", "fern"};
   for (int k = 0; k < 2; ++k) {
     s << (k ? ", " : "") << R"({"type": "plant", "species": ")" << species[k] << R"(", "positions": [)";
@@ -94,7 +96,6 @@ TEST_F(GpuSampling, ChoosesAsTheCpuSamplerDoesWithoutOcclusion) {
       other_count += c.x + 1 < expected.points || c.x > expected.points + 1;
     }
   }
-  std::cout << plants << " plants, cpu points " << cpu.point_count << " triangles " << cpu.triangle_count << ", gpu points " << gpu_points << ", other choice " << other_choice << ", other count " << other_count << "\n";
   EXPECT_LE(other_choice, plants / 1000) << other_choice << " of " << plants;
   EXPECT_LE(other_count, plants / 1000) << other_count << " of " << plants;
   EXPECT_NEAR(static_cast<double>(gpu_points), static_cast<double>(cpu.point_count), 0.002 * static_cast<double>(cpu.point_count));
@@ -120,6 +121,60 @@ TEST_F(GpuSampling, WritesTheDrawsInPlantOrderWithoutGaps) {
     first_point += d.y;
   }
   EXPECT_EQ(next, draws.size());
+}
+
+// Depth images of the same plants drawn as polygons and by the GPU sampler.
+struct Coverage {
+  std::size_t polygons = 0, points = 0, both = 0;
+};
+
+Coverage compare(const Image<float>& polygon_depth, const Image<float>& point_depth) {
+  Coverage c;
+  for (std::size_t i = 0; i < polygon_depth.samples.size(); ++i) {
+    const bool a = polygon_depth.samples[i] >= 0.0f, b = point_depth.samples[i] >= 0.0f;
+    c.polygons += a;
+    c.points += b;
+    c.both += a && b;
+  }
+  return c;
+}
+
+TEST_F(GpuSampling, ItsFrameCoversWhatThePolygonsCover) {
+  settings.method = ShadowMethod::none;
+  settings.points = false;
+  Renderer polygons(scene, settings);
+  polygons.render(scene.camera, scene.lights[0]);
+  settings.points = settings.gpu_sampler = true;
+  Renderer gpu(scene, settings);
+  gpu.render(scene.camera, scene.lights[0]);
+  EXPECT_GT(gpu.stats().points, 100000u);
+  EXPECT_GT(gpu.stats().triangles, 0u);
+  const Coverage c = compare(polygons.frame().read_depth(), gpu.frame().read_depth());
+  ASSERT_GT(c.polygons, 100000u);
+  EXPECT_LT(1.0 - static_cast<double>(c.both) / static_cast<double>(c.polygons), 0.02) << "holes";
+  EXPECT_LT(static_cast<double>(c.points - c.both) / static_cast<double>(c.polygons), 0.1) << "points off the plants";
+}
+
+TEST_F(GpuSampling, PlantsBehindAWallAreLeftOut) {
+  settings.method = ShadowMethod::none;
+  settings.gpu_sampler = true;
+  Renderer open(scene, settings);
+  open.render(scene.camera, scene.lights[0]);
+  const Scene walled = load_scene({"walled.json", plantation(true), [](const std::string&) { return std::nullopt; }});
+  Renderer behind(walled, settings);
+  behind.render(walled.camera, walled.lights[0]);
+  // The wall covers the middle of the view beyond 20 m, where most of the points are.
+  EXPECT_LT(behind.stats().points, open.stats().points / 2);
+  // What shows beside the wall is drawn as without it.
+  const Image<float> a = open.frame().read_depth(), b = behind.frame().read_depth();
+  std::size_t beside = 0, same = 0;
+  for (std::size_t i = 0; i < a.samples.size(); ++i) {
+    if (b.samples[i] < 0.0f || a.samples[i] < 0.0f || std::abs(b.samples[i] - 20.0f) < 1.5f) continue;
+    ++beside;
+    same += std::abs(a.samples[i] - b.samples[i]) < 0.01f * a.samples[i];
+  }
+  ASSERT_GT(beside, 50000u);
+  EXPECT_GT(static_cast<double>(same) / static_cast<double>(beside), 0.97);
 }
 
 }  // namespace

@@ -69,6 +69,9 @@ void add_render_options(CLI::App& command, RenderOptions& o) {
       ->capture_default_str();
   command.add_option("--geometry", o.geometry, "points: far plants, people and animals as view-adaptive point "
                                                "splats; polygons: everything as polygons (plants culled to each view as the points are)")->capture_default_str();
+  command.add_option("--sampler", o.sampler, "Where the frame's points and polygons are chosen: cpu (the view sampler, "
+                                             "with occlusion by coverage) or gpu (compute passes band by band of distance, "
+                                             "occlusion by a depth pyramid; the shadow map's are chosen on the CPU)")->capture_default_str();
   command.add_option("--k", o.k, "Point density: points per pixel of projected surface")->capture_default_str();
   command.add_option("--splat", o.splat, "Splat size in pixels (per side)")->capture_default_str();
 }
@@ -84,6 +87,8 @@ RenderSettings render_settings(const RenderOptions& o) {
     throw InputError("--geometry: expected points or polygons, got '" + o.geometry + "'");
   }
   settings.points = o.geometry == "points";
+  if (o.sampler != "cpu" && o.sampler != "gpu") throw InputError("--sampler: expected cpu or gpu, got '" + o.sampler + "'");
+  settings.gpu_sampler = o.sampler == "gpu";
   if (!std::isfinite(o.k) || o.k <= 0.0 || o.k > 1000.0) throw InputError("--k: must be above 0 and at most 1000");
   settings.k = static_cast<float>(o.k);
   if (o.splat < 1 || o.splat > 16) throw InputError("--splat: must be between 1 and 16 pixels");

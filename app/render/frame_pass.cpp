@@ -64,12 +64,23 @@ void FramePass::draw_surfaces(const GpuScene& scene, const shadow::Camera& camer
   const float far_depth = 1.0f;
   glClearNamedFramebufferfv(fb, GL_COLOR, 2, no_surface);
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
+  start_surfaces(camera);
+  scene.draw();
+}
+
+void FramePass::add_chosen_surfaces(const GpuScene& scene, const GpuSampler& sampler, int band, const shadow::Camera& camera) const {
+  start_surfaces(camera);
+  scene.draw_chosen(sampler, band);
+}
+
+void FramePass::start_surfaces(const shadow::Camera& camera) const {
+  glBindFramebuffer(GL_FRAMEBUFFER, surfaces_.name());
+  glViewport(0, 0, width_, height_);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
   glUseProgram(surface_program_.name());
   set_camera(surface_program_, camera);
-  scene.draw();
 }
 
 void FramePass::add_points(const PointSplat& points, const shadow::Camera& camera) const {

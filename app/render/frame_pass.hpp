@@ -1,5 +1,6 @@
 #pragma once
 #include "app/gl/gl_objects.hpp"
+#include "app/render/gpu_sampler.hpp"
 #include "app/render/gpu_scene.hpp"
 #include "app/render/image.hpp"
 #include "app/render/point_splat.hpp"
@@ -24,6 +25,8 @@ class FramePass {
 
   // Clears the frame and draws the polygons' surfaces.
   void draw_surfaces(const GpuScene& scene, const shadow::Camera& camera) const;
+  // Adds the surfaces of the plants a band of the GPU sampler chose as polygons.
+  void add_chosen_surfaces(const GpuScene& scene, const GpuSampler& sampler, int band, const shadow::Camera& camera) const;
   // Adds the nearest splatted point of each pixel, depth-tested against the polygons.
   void add_points(const PointSplat& points, const shadow::Camera& camera) const;
 
@@ -70,6 +73,8 @@ class FramePass {
   // Built when a frame first needs it, then kept.
   const gl::Program& shade_program(const ShadeVariant& variant) const;
   void set_camera(const gl::Program& program, const shadow::Camera& camera) const;
+  // Binds the surfaces' targets and program for polygons.
+  void start_surfaces(const shadow::Camera& camera) const;
   void set_light(const gl::Program& program, const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;
   void draw_fullscreen() const;  // one triangle over the viewport
 

@@ -6,27 +6,42 @@
 #include "pointgen/sampling/frustum_culling.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace ecoview {
 namespace {
 
-// As shaders/sample_common.glsl declares them.
+// As shaders/sample_common.glsl and sample_draws.comp declare them.
 struct GpuInstance {
   glm::mat4 model;
   glm::vec4 tint;
 };
 struct GpuMesh {
   glm::vec4 center_radius;
-  glm::vec4 area;
+  glm::vec4 half_size_area;
   glm::vec4 moments[3];
   glm::uvec4 sizes;
 };
+struct PolygonInstance {
+  glm::mat4 model;
+  glm::vec4 normal_matrix[3];
+  glm::vec4 color;
+};
+struct GpuTotals {
+  GLuint total_points, draw_count, band_first_point, all_points, polygon_count;
+};
+constexpr std::size_t command_uints = 5;  // DrawElementsIndirectCommand
 
 constexpr GLuint draws_binding = 1, instances_binding = 2, block_draws_binding = 8, plant_meshes_binding = 10,
-                 meshes_binding = 11, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15;
+                 meshes_binding = 11, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
+                 polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19;
 constexpr std::size_t plants_per_group = 1024, threads_per_group = 256;  // shaders/sample_count.comp
 constexpr std::size_t points_per_block = 16;                              // shaders/point_common.glsl
 constexpr std::size_t max_views = 6;                                      // planes[36]
+
+// Bands: the first ends this far from the eye (metres), each next one this many times as far.
+// Finer bands hide more of what lies behind a near one, at a pyramid and a few passes each.
+constexpr float first_band_end = 12.0f, band_ratio = 1.5f;
 
 // The same threshold pointgen::sample_view rounds a whole plant's count at.
 float rounding(const pointgen::InstanceTable& table, std::size_t i) {
@@ -34,33 +49,57 @@ float rounding(const pointgen::InstanceTable& table, std::size_t i) {
 }
 
 template <class T>
-void storage(gl::Buffer& buffer, std::size_t count) {
-  glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(std::max<std::size_t>(count, 1) * sizeof(T)), nullptr, 0);
+void storage(gl::Buffer& buffer, std::size_t count, GLbitfield flags = 0) {
+  glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(std::max<std::size_t>(count, 1) * sizeof(T)), nullptr, flags);
+}
+
+GLuint groups_for(std::size_t threads, std::size_t per_group) {
+  return static_cast<GLuint>(std::max<std::size_t>((threads + per_group - 1) / per_group, 1));
 }
 
 }  // namespace
 
+std::vector<glm::vec2> GpuSampler::bands(float far) {
+  std::vector<glm::vec2> bands;
+  for (float near = 0.0f, end = first_band_end; static_cast<int>(bands.size()) + 1 < max_bands; near = end, end *= band_ratio) {
+    if (near >= far) break;
+    bands.emplace_back(near, end);
+  }
+  bands.emplace_back(bands.empty() ? 0.0f : bands.back().y, INFINITY);
+  return bands;
+}
+
 GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const PointSamples& samples)
     : count_program_(gl::build_program({"sample_count.comp"})),
       groups_program_(gl::build_program({"sample_groups.comp"})),
-      draws_program_(gl::build_program({"sample_draws.comp"})) {
+      draws_program_(gl::build_program({"sample_draws.comp"})),
+      commands_program_(gl::build_program({"sample_commands.comp"})) {
   const std::vector<pointgen::SampledMesh>& meshes = samples.meshes();
   std::vector<GpuInstance> instances;
   std::vector<glm::uvec2> plant_meshes;
+  std::vector<glm::uvec4> table_ranges;
   std::size_t most_points = 0;  // the draw list's points if every plant took its whole list
   for (const pointgen::InstanceTable& table : tables) {
     first_plant_.push_back(static_cast<std::uint32_t>(instances.size()));
-    if (meshes[table.mesh].samples == 0) continue;
+    const pointgen::SampledMesh& mesh = meshes[table.mesh];
+    if (mesh.samples == 0 || table.size() == 0) {
+      command_of_table_.push_back(-1);
+      continue;
+    }
+    command_of_table_.push_back(static_cast<int>(table_ranges.size()));
+    triangles_of_command_.push_back(mesh.triangles);
+    const auto first = static_cast<std::uint32_t>(instances.size());
     for (std::size_t i = 0; i < table.size(); ++i) {
       instances.push_back({table.transforms[i], glm::vec4(table.tints[i], 1.0f)});
       plant_meshes.emplace_back(static_cast<std::uint32_t>(table.mesh), glm::floatBitsToUint(rounding(table, i)));
     }
-    most_points += table.size() * meshes[table.mesh].samples;
+    table_ranges.emplace_back(first, static_cast<std::uint32_t>(instances.size()), static_cast<std::uint32_t>(3 * mesh.triangles), 0u);
+    most_points += table.size() * mesh.samples;
   }
   std::vector<GpuMesh> gpu_meshes;
   for (std::size_t m = 0; m < meshes.size(); ++m) {
     const pointgen::SampledMesh& mesh = meshes[m];
-    gpu_meshes.push_back({glm::vec4(mesh.center, mesh.radius), glm::vec4(mesh.area, 0.0f, 0.0f, 0.0f),
+    gpu_meshes.push_back({glm::vec4(mesh.center, mesh.radius), glm::vec4(mesh.half_size, mesh.area),
                           {glm::vec4(mesh.normal_moments[0], 0.0f), glm::vec4(mesh.normal_moments[1], 0.0f),
                            glm::vec4(mesh.normal_moments[2], 0.0f)},
                           glm::uvec4(mesh.triangles, mesh.samples, samples.first_sample(m), 0u)});
@@ -70,22 +109,25 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   // Room for as many points as every plant's whole list, or as a splat's buffers address (one
   // uvec2 per point where the frame's splat puts it).
   point_capacity_ = std::min(most_points, gl::max_storage_block_bytes() / sizeof(glm::uvec2));
+  if (plant_count_ * sizeof(PolygonInstance) > gl::max_storage_block_bytes()) {
+    throw RuntimeFailure("the scene's " + std::to_string(plant_count_) + " plants are more than this driver's shaders address "
+                         "as polygon instances; use fewer plants");
+  }
   gl::store(instances_, instances);
   gl::store(plant_meshes_, plant_meshes);
   gl::store(meshes_, gpu_meshes);
-  storage<glm::uvec2>(counts_, plant_count_);
-  storage<glm::uvec2>(offsets_, plant_count_);
-  storage<glm::uvec2>(group_sums_, group_count_);
+  gl::store(tables_, table_ranges);
+  storage<glm::uvec4>(counts_, plant_count_);
+  storage<glm::uvec4>(offsets_, plant_count_);
+  storage<glm::uvec4>(group_sums_, group_count_);
   storage<glm::uvec4>(draws_, plant_count_);
   storage<GLuint>(block_draws_, (point_capacity_ + points_per_block - 1) / points_per_block);
-  storage<GLuint>(totals_, 2);
+  storage<GpuTotals>(totals_, 1);
+  storage<PolygonInstance>(polygon_instances_, plant_count_);
+  storage<GLuint>(commands_, command_uints * max_bands * std::max<std::size_t>(table_ranges.size(), 1));
 }
 
-void GpuSampler::sample(const pointgen::SamplerView& view) {
-  if (view.views.size() > max_views) throw RuntimeFailure("the GPU sampler takes at most 6 views at once");
-  const pointgen::ViewFrusta frusta(view.views);
-  std::vector<glm::vec4> planes;
-  for (const std::array<glm::vec4, 6>& p : frusta.planes()) planes.insert(planes.end(), p.begin(), p.end());
+void GpuSampler::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draws_binding, draws_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, instances_binding, instances_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, block_draws_binding, block_draws_.name());
@@ -95,20 +137,47 @@ void GpuSampler::sample(const pointgen::SamplerView& view) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, offsets_binding, offsets_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, group_sums_binding, group_sums_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, totals_binding, totals_.name());
-  const auto plants = static_cast<unsigned>(plant_count_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, polygon_instances_binding, polygon_instances_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, tables_binding, tables_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, commands_binding, commands_.name());
+}
 
+void GpuSampler::begin(const pointgen::SamplerView& view) {
+  if (view.views.size() > max_views) throw RuntimeFailure("the GPU sampler takes at most 6 views at once");
+  const pointgen::ViewFrusta frusta(view.views);
+  std::vector<glm::vec4> planes;
+  for (const std::array<glm::vec4, 6>& p : frusta.planes()) planes.insert(planes.end(), p.begin(), p.end());
   const GLuint count = count_program_.name();
   glProgramUniform4fv(count, glGetUniformLocation(count, "planes"), static_cast<GLsizei>(planes.size()), &planes.front().x);
   gl::set_uniform(count_program_, "view_count", static_cast<unsigned>(view.views.size()));
+  gl::set_uniform(count_program_, "view_projection", view.views.front());
   gl::set_uniform(count_program_, "eye", view.eye);
   gl::set_uniform(count_program_, "forward", view.forward);
   gl::set_uniform(count_program_, "edge_cos", view.edge_cos);
   gl::set_uniform(count_program_, "pixels_per_radian", view.density.pixels_per_radian);
   gl::set_uniform(count_program_, "k", view.density.k);
   gl::set_uniform(count_program_, "points_per_triangle", view.points_per_triangle);
+  const GLuint zero = 0;
+  glClearNamedBufferData(counts_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferData(totals_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferData(commands_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  bands_used_ = 0;
+}
+
+void GpuSampler::add_band(int band, glm::vec2 range, const DepthPyramid* occluders) {
+  if (band < 0 || band >= max_bands) throw RuntimeFailure("the GPU sampler takes at most 24 bands a frame");
+  bands_used_ = std::max(bands_used_, band + 1);
+  bind();
+  const auto plants = static_cast<unsigned>(plant_count_);
+  const auto number = static_cast<unsigned>(band + 1);
   gl::set_uniform(count_program_, "plant_count", plants);
-  glUseProgram(count);
-  glDispatchCompute(static_cast<GLuint>(std::max<std::size_t>(group_count_, 1)), 1, 1);
+  gl::set_uniform(count_program_, "band", range);
+  gl::set_uniform(count_program_, "band_number", number);
+  gl::set_uniform(count_program_, "occlusion", occluders ? 1 : 0);
+  if (occluders) occluders->bind_for(count_program_);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  glUseProgram(count_program_.name());
+  glDispatchCompute(groups_for(plant_count_, plants_per_group), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   gl::set_uniform(groups_program_, "group_count", static_cast<unsigned>(group_count_));
@@ -119,24 +188,62 @@ void GpuSampler::sample(const pointgen::SamplerView& view) {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   gl::set_uniform(draws_program_, "plant_count", plants);
+  gl::set_uniform(draws_program_, "band_number", number);
   gl::set_uniform(draws_program_, "block_capacity", static_cast<unsigned>((point_capacity_ + points_per_block - 1) / points_per_block));
   glUseProgram(draws_program_.name());
-  glDispatchCompute(static_cast<GLuint>(std::max<std::size_t>((plant_count_ + threads_per_group - 1) / threads_per_group, 1)), 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  glDispatchCompute(groups_for(plant_count_, threads_per_group), 1, 1);
+
+  gl::set_uniform(commands_program_, "plant_count", plants);
+  gl::set_uniform(commands_program_, "band_number", number);
+  gl::set_uniform(commands_program_, "table_count", static_cast<unsigned>(triangles_of_command_.size()));
+  glUseProgram(commands_program_.name());
+  glDispatchCompute(groups_for(triangles_of_command_.size(), 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT |
+                  GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void GpuSampler::sample(const pointgen::SamplerView& view) {
+  begin(view);
+  add_band(0, glm::vec2(0.0f, INFINITY), nullptr);
+}
+
+PointDrawList GpuSampler::draw_list() const {
+  return {draws_.name(), instances_.name(), block_draws_.name(), totals_.name(), point_capacity_};
+}
+
+long GpuSampler::command_offset(std::size_t table, int band) const {
+  const int place = command_of_table_[table];
+  if (place < 0) return -1;
+  return static_cast<long>(((static_cast<std::size_t>(band) * triangles_of_command_.size()) + static_cast<std::size_t>(place)) *
+                           command_uints * sizeof(GLuint));
 }
 
 std::vector<glm::uvec2> GpuSampler::read_counts() const {
-  std::vector<glm::uvec2> counts(plant_count_);
-  if (!counts.empty()) glGetNamedBufferSubData(counts_.name(), 0, static_cast<GLsizeiptr>(counts.size() * sizeof(glm::uvec2)), counts.data());
-  return counts;
+  std::vector<glm::uvec4> counts(plant_count_);
+  if (!counts.empty()) glGetNamedBufferSubData(counts_.name(), 0, static_cast<GLsizeiptr>(counts.size() * sizeof(glm::uvec4)), counts.data());
+  std::vector<glm::uvec2> out;
+  out.reserve(counts.size());
+  for (const glm::uvec4& c : counts) out.emplace_back(c.x, c.z);
+  return out;
 }
 
 std::vector<glm::uvec4> GpuSampler::read_draws() const {
-  glm::uvec2 totals(0u);
+  GpuTotals totals{};
   glGetNamedBufferSubData(totals_.name(), 0, sizeof totals, &totals);
-  std::vector<glm::uvec4> draws(totals.y);
+  std::vector<glm::uvec4> draws(totals.draw_count);
   if (!draws.empty()) glGetNamedBufferSubData(draws_.name(), 0, static_cast<GLsizeiptr>(draws.size() * sizeof(glm::uvec4)), draws.data());
   return draws;
+}
+
+GpuSampler::Totals GpuSampler::read_totals() const {
+  GpuTotals totals{};
+  glGetNamedBufferSubData(totals_.name(), 0, sizeof totals, &totals);
+  const std::size_t tables = triangles_of_command_.size();
+  std::vector<GLuint> commands(command_uints * tables * static_cast<std::size_t>(std::max(bands_used_, 1)));
+  glGetNamedBufferSubData(commands_.name(), 0, static_cast<GLsizeiptr>(commands.size() * sizeof(GLuint)), commands.data());
+  Totals out{totals.total_points, totals.polygon_count, 0};
+  for (std::size_t c = 0; c < commands.size() / command_uints; ++c) out.triangles += commands[c * command_uints + 1] * triangles_of_command_[c % tables];
+  return out;
 }
 
 }  // namespace ecoview

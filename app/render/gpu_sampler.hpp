@@ -1,5 +1,6 @@
 #pragma once
 #include "app/gl/gl_objects.hpp"
+#include "app/render/depth_pyramid.hpp"
 #include "app/render/point_samples.hpp"
 #include "app/render/point_splat.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
@@ -8,41 +9,70 @@
 
 namespace ecoview {
 
-// The view sampler's per-plant choice on the GPU: the plants of point meshes stay in GL buffers
-// from load on (transform, tint, mesh, rounding threshold), and each sample() culls every one
-// against the view's frusta, counts it with the density formula, chooses points or polygons with
-// the band around break-even, and writes the frame's point draws in plant order, as PointSplat
-// reads them, with no read-back. It chooses as pointgen::sample_view does without occlusion, by
-// whole plants and without cells' aggregates: the CPU sampler is its test oracle.
+// The view sampler's per-plant choice on the GPU. The plants of point meshes stay in GL buffers
+// from load on (transform, tint, mesh, rounding threshold). A frame is sampled band by band of
+// distance from the eye, nearest first: each band culls its plants against the view's frusta and
+// against a depth pyramid of what the bands before drew (occluders drawn first in the same frame,
+// so a frame depends on its own view alone), counts them with the density formula, chooses points
+// or polygons with the band around break-even, and appends their point draws (as PointSplat reads
+// them) and polygon instances with one indirect draw per table, with no read-back. Without
+// occlusion it chooses as pointgen::sample_view does, by whole plants and without cells'
+// aggregates: the CPU sampler is its test oracle.
 class GpuSampler {
  public:
-  // `tables` are the scene's groups; only those of point meshes (`samples` has lists for them)
-  // become plants, in table order.
+  // `tables` are the scene's groups; those of point meshes (`samples` has lists for them) become
+  // plants, in table order.
   GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const PointSamples& samples);
 
-  // The view's first and only frusta list, eye, density and point cost are used; occlusion, the
-  // cap and receivers are not.
+  // The distance bands for a view whose far plane is `far` metres away: the first to
+  // first_band_end, each next one `band_ratio` times as far, the last to infinity.
+  static std::vector<glm::vec2> bands(float far);
+  static constexpr int max_bands = 24;
+
+  // Starts a frame's lists for the view: its first frusta list, eye, density and point cost are
+  // used; its occlusion, cap and receivers are not.
+  void begin(const pointgen::SamplerView& view);
+  // Adds the plants whose centres lie at `range` metres from the eye, the band numbered `band`
+  // from 0; hidden ones left out where `occluders` is given (built over the view's image).
+  void add_band(int band, glm::vec2 range, const DepthPyramid* occluders);
+  // One band holding every plant, without occlusion.
   void sample(const pointgen::SamplerView& view);
 
-  // The draws of the last sample(), for PointSplat::use.
-  PointDrawList draw_list() const { return {draws_.name(), instances_.name(), block_draws_.name(), totals_.name(), point_capacity_}; }
+  // The point draws so far, for PointSplat::use.
+  PointDrawList draw_list() const;
+  // The polygon plants (GpuScene's instance layout) and the indirect draws of a band's, one
+  // DrawElementsIndirectCommand per table of point meshes.
+  GLuint polygon_instances() const { return polygon_instances_.name(); }
+  GLuint polygon_commands() const { return commands_.name(); }
+  // The byte offset of a table's command for a band; -1 for a table that holds no plants.
+  long command_offset(std::size_t table, int band) const;
 
   std::size_t plant_count() const { return plant_count_; }
-  // The plant index of a table's first instance (tables of other meshes hold none).
+  // The plant index of a table's first instance.
   std::uint32_t first_plant(std::size_t table) const { return first_plant_[table]; }
 
-  // Read back, for tests and for figures a frame late: per plant (points, 1 when drawn as
-  // polygons), and the draws (first point, count, first sample, plant) of the last sample().
+  // Read back, for tests and figures: per plant (points, polygons: 1 when drawn so), the draws
+  // (first point, count, first sample, plant), and the totals (points, polygon plants, triangles
+  // of the polygon plants).
   std::vector<glm::uvec2> read_counts() const;
   std::vector<glm::uvec4> read_draws() const;
+  struct Totals {
+    std::size_t points = 0, polygon_plants = 0, triangles = 0;
+  };
+  Totals read_totals() const;
 
  private:
+  void bind() const;
   std::size_t plant_count_ = 0;
   std::size_t group_count_ = 0;
   std::size_t point_capacity_ = 0;  // points the draw list has room for
+  int bands_used_ = 0;
   std::vector<std::uint32_t> first_plant_;
+  std::vector<int> command_of_table_;  // per table, its place among the tables of plants; -1 none
+  std::vector<std::size_t> triangles_of_command_;  // per place, the mesh's triangles
   gl::Buffer instances_, plant_meshes_, meshes_, counts_, offsets_, group_sums_, draws_, block_draws_, totals_;
-  gl::Program count_program_, groups_program_, draws_program_;
+  gl::Buffer polygon_instances_, tables_, commands_;
+  gl::Program count_program_, groups_program_, draws_program_, commands_program_;
 };
 
 }  // namespace ecoview

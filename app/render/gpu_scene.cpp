@@ -1,5 +1,6 @@
 #include "app/render/gpu_scene.hpp"
 
+#include "app/render/gpu_sampler.hpp"
 #include "pointgen/sampling/mesh_parts.hpp"
 
 #include <algorithm>
@@ -65,18 +66,40 @@ GpuScene::GpuScene(const Scene& scene) {
     g.whole = {0, g.instance_count};
     g.capacity = instances.size();
 
-    const GLuint vao = g.vertex_array.name();
-    glVertexArrayVertexBuffer(vao, 0, mesh.vertices.name(), 0, sizeof(Vertex));
-    glVertexArrayVertexBuffer(vao, 1, g.instances.name(), 0, sizeof(Instance));
-    glVertexArrayBindingDivisor(vao, 1, 1);
-    glVertexArrayElementBuffer(vao, mesh.indices.name());
-    attribute(vao, 0, 0, 3, offsetof(Vertex, position));
-    attribute(vao, 1, 0, 3, offsetof(Vertex, normal));
-    attribute(vao, 2, 0, 3, offsetof(Vertex, color));
-    for (GLuint c = 0; c < 4; ++c) attribute(vao, 3 + c, 1, 4, offsetof(Instance, model) + c * sizeof(glm::vec4));
-    for (GLuint c = 0; c < 3; ++c) attribute(vao, 7 + c, 1, 3, offsetof(Instance, normal_matrix) + c * sizeof(glm::vec4));
-    attribute(vao, 10, 1, 3, offsetof(Instance, color));
+    set_attributes(g.vertex_array.name(), mesh, g.instances.name());
   }
+}
+
+void GpuScene::set_attributes(GLuint vao, const Mesh& mesh, GLuint instances) {
+  glVertexArrayVertexBuffer(vao, 0, mesh.vertices.name(), 0, sizeof(Vertex));
+  glVertexArrayVertexBuffer(vao, 1, instances, 0, sizeof(Instance));
+  glVertexArrayBindingDivisor(vao, 1, 1);
+  glVertexArrayElementBuffer(vao, mesh.indices.name());
+  attribute(vao, 0, 0, 3, offsetof(Vertex, position));
+  attribute(vao, 1, 0, 3, offsetof(Vertex, normal));
+  attribute(vao, 2, 0, 3, offsetof(Vertex, color));
+  for (GLuint c = 0; c < 4; ++c) attribute(vao, 3 + c, 1, 4, offsetof(Instance, model) + c * sizeof(glm::vec4));
+  for (GLuint c = 0; c < 3; ++c) attribute(vao, 7 + c, 1, 3, offsetof(Instance, normal_matrix) + c * sizeof(glm::vec4));
+  attribute(vao, 10, 1, 3, offsetof(Instance, color));
+}
+
+void GpuScene::attach(const GpuSampler& sampler) {
+  for (Group& g : groups_) {
+    g.chosen_vertex_array = std::make_unique<gl::VertexArray>();
+    set_attributes(g.chosen_vertex_array->name(), meshes_[g.mesh], sampler.polygon_instances());
+  }
+}
+
+void GpuScene::draw_chosen(const GpuSampler& sampler, int band) const {
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, sampler.polygon_commands());
+  for (std::size_t group = 0; group < groups_.size(); ++group) {
+    const long offset = sampler.command_offset(group, band);
+    if (offset < 0 || !groups_[group].chosen_vertex_array) continue;
+    glBindVertexArray(groups_[group].chosen_vertex_array->name());
+    glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(offset)));
+  }
+  glBindVertexArray(0);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 
 void GpuScene::reserve(Group& group, std::size_t instances) {

@@ -2,9 +2,12 @@
 #include "app/gl/gl_objects.hpp"
 #include "app/scene/scene.hpp"
 
+#include <memory>
 #include <vector>
 
 namespace ecoview {
+
+class GpuSampler;
 
 // The scene's meshes and instance tables in GL buffers: each mesh once, drawn with one instanced
 // call per group, or per polygon part of a point mesh (pointgen::split_triangles) when the sampler
@@ -21,6 +24,11 @@ class GpuScene {
   // group: posed moving objects, or the subset a pass draws as polygons. `parts`, for a point
   // mesh's group, has for each instance the polygon parts to draw, a bit each; none: all.
   void update(std::size_t group, const pointgen::InstanceTable& table, const std::vector<std::uint64_t>& parts = {});
+  // Draws, from the next frame on, the plants of point meshes a GpuSampler chooses as polygons
+  // with draw_chosen (its instances, in GpuScene's layout, and its indirect draws).
+  void attach(const GpuSampler& sampler);
+  // The plants a band of the attached sampler chose as polygons (GL_TRIANGLES).
+  void draw_chosen(const GpuSampler& sampler, int band) const;
 
  private:
   struct Range {
@@ -43,7 +51,9 @@ class GpuScene {
     Range whole;
     std::vector<Range> part_instances;
     std::size_t capacity = 0;
+    std::unique_ptr<gl::VertexArray> chosen_vertex_array;  // over the attached sampler's polygon plants
   };
+  static void set_attributes(GLuint vertex_array, const Mesh& mesh, GLuint instances);
   void reserve(Group& group, std::size_t instances);
   std::vector<Mesh> meshes_;
   std::vector<Group> groups_;

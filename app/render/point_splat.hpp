@@ -11,7 +11,8 @@ namespace ecoview {
 // A frame's point draws in GL buffers, wherever they were made (PointSplat::upload on the CPU,
 // GpuSampler on the GPU): per draw (first point, count, first sample, instance), the instances
 // (model matrix, tint), per block of 16 points the draw holding its first point, and the totals
-// (points, draws) as two uints, so that a list made on the GPU is drawn without a read-back.
+// (points, draws, where the band last added begins) as three uints, so that a list made on the GPU
+// is drawn without a read-back.
 struct PointDrawList {
   GLuint draws = 0, instances = 0, block_draws = 0, totals = 0;
   std::size_t most_points = 0;  // the most points the list may hold
@@ -32,6 +33,13 @@ class PointSplat {
   void use(const PointDrawList& list, const PointSamples& samples);
   // Passes 1 and 2, with splats of splat_size x splat_size pixels, for shading.
   void splat(const glm::mat4& view_projection, int splat_size, float depth_bias);
+  // The same in steps, for a list made band by band (GpuSampler): clear; pass 1 over the band
+  // last added, or over the whole list; then pass 2 over the whole list.
+  void begin();
+  void add(const glm::mat4& view_projection, int splat_size, float depth_bias, bool band_only);
+  void resolve(const glm::mat4& view_projection, int splat_size, float depth_bias);
+  // Per pixel the nearest point's window depth (float bits; all ones where none), after pass 1.
+  GLuint depth_buffer() const { return depths_.name(); }
   // Pass 1 onto one layer of a depth-texture array of the target's size (a shadow map): each
   // texel keeps the nearer of its depth and the points'. For a paraboloid shadow view,
   // `view_projection` is its world → light space matrix and `paraboloid` its zoom and range
@@ -54,9 +62,9 @@ class PointSplat {
   gl::Buffer draws_, instances_, block_draws_, totals_, depths_, winners_, projected_, dispatch_;
   std::size_t draws_capacity_ = 0, instances_capacity_ = 0, block_draws_capacity_ = 0, projected_capacity_ = 0;
   // The passes' work groups for the list's points, written on the GPU (shaders/point_dispatch.comp).
-  void count_groups() const;
+  void count_groups(bool band_only) const;
   void dispatch(const gl::Program& program, const glm::mat4& view_projection, int splat_size, float depth_bias,
-                glm::vec2 paraboloid) const;
+                glm::vec2 paraboloid, bool band_only) const;
 
   gl::Program dispatch_program_, depth_program_, keeping_depth_program_, resolve_program_;
   std::unique_ptr<gl::Program> count_program_;  // made when first counting

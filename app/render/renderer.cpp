@@ -124,6 +124,11 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       cells_.update(g, tables_[g], samples_.meshes()[tables_[g].mesh]);
     }
   }
+  if (settings.points && settings.gpu_sampler && settings.measure == RenderSettings::Measure::off) {
+    gpu_sampler_ = std::make_unique<GpuSampler>(tables_, samples_);
+    occluders_ = std::make_unique<DepthPyramid>(glm::ivec2(settings.width, settings.height));
+    gpu_scene_.attach(*gpu_sampler_);
+  }
 }
 
 // Made with the renderer, not with the first frame, so that frame times hold no shader compilation.
@@ -330,11 +335,27 @@ FramePass::ShadowLookup Renderer::render_reference_mask(const shadow::Camera& ca
 void Renderer::draw_frame(const shadow::Camera& camera, const shadow::Light& light,
                           const std::optional<FramePass::ShadowLookup>& lookup) {
   frame_pass_.draw_surfaces(gpu_scene_, camera);
-  if (settings_.points) {
+  if (gpu_sampler_) {
+    sample_on_gpu(camera);
+  } else if (settings_.points) {
     frame_points_.splat(view_projection_, settings_.splat_size, 0.0f);
-    frame_pass_.add_points(frame_points_, camera);
   }
+  if (settings_.points) frame_pass_.add_points(frame_points_, camera);
   frame_pass_.shade(camera, light, lookup);
+}
+
+void Renderer::sample_on_gpu(const shadow::Camera& camera) {
+  gpu_sampler_->begin(sampler_view(camera, settings_, {view_projection_}));
+  frame_points_.use(gpu_sampler_->draw_list(), samples_);
+  frame_points_.begin();
+  const std::vector<glm::vec2> bands = GpuSampler::bands(camera.far);
+  for (std::size_t b = 0; b < bands.size(); ++b) {
+    occluders_->build(frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
+    gpu_sampler_->add_band(static_cast<int>(b), bands[b], occluders_.get());
+    frame_pass_.add_chosen_surfaces(gpu_scene_, *gpu_sampler_, static_cast<int>(b), camera);
+    frame_points_.add(view_projection_, settings_.splat_size, 0.0f, true);
+  }
+  frame_points_.resolve(view_projection_, settings_.splat_size, 0.0f);
 }
 
 void Renderer::pose(double t) {
@@ -414,7 +435,7 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   // cores. The sampler only reads what pose() left.
   std::future<pointgen::SampledFrame> frame_sample;
   double frame_sample_ms = 0.0, frame_sample_cpu_ms = 0.0;
-  if (settings_.points) {
+  if (settings_.points && !gpu_sampler_) {
     frame_sample = std::async(std::launch::async, [this, &camera, &frame_sample_ms, &frame_sample_cpu_ms] {
       const auto start = std::chrono::steady_clock::now();
       const double cpu_start = thread_cpu_ms();
@@ -431,7 +452,9 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
     lookup.emplace(FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size()});
   }
   pointgen::SampledFrame selection;
-  if (settings_.points) {
+  if (gpu_sampler_) {
+    selection.polygons.resize(tables_.size());  // the frame's plants come from gpu_sampler_
+  } else if (settings_.points) {
     selection = frame_sample.get();
     stats_.sample_ms += frame_sample_ms;
     stats_.host_ms += frame_sample_cpu_ms;
@@ -447,6 +470,12 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   frame_timer_.start();
   draw_frame(camera, light, lookup);
   stats_.frame_pass_ms = frame_timer_.stop_ms();
+  if (gpu_sampler_) {
+    // Read back for the figures after the frame's commands, where nothing waits on them.
+    const GpuSampler::Totals chosen = gpu_sampler_->read_totals();
+    selection.point_count = chosen.points;
+    selection.triangle_count = chosen.triangles;
+  }
   stats_.points = selection.point_count;
   for (const pointgen::InstanceTable& table : tables_) {
     if (!scene_.point_meshes[table.mesh]) stats_.triangles += scene_.meshes[table.mesh].triangle_count() * table.size();

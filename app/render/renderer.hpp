@@ -1,6 +1,8 @@
 #pragma once
 #include "app/gl/gpu_timer.hpp"
+#include "app/render/depth_pyramid.hpp"
 #include "app/render/frame_pass.hpp"
+#include "app/render/gpu_sampler.hpp"
 #include "app/render/gpu_scene.hpp"
 #include "app/render/point_samples.hpp"
 #include "app/render/point_splat.hpp"
@@ -46,6 +48,9 @@ struct RenderSettings {
   bool aliasing = false;  // fill the frame's aliasing target (the `aliasing` AOV, alias_p95)
   // Skip point casters whose shadows fall on nothing the last frame showed (pointgen::ReceiverMask).
   bool cull_casters = true;
+  // The frame's points and polygons chosen on the GPU (GpuSampler), not by the CPU's view sampler;
+  // not for the density figures' measures.
+  bool gpu_sampler = false;
 };
 
 // What a frame drew, and how long its parts took.
@@ -123,6 +128,9 @@ class Renderer {
   // The exact reference in place of a map: the mask from ExactVisibility.
   FramePass::ShadowLookup render_reference_mask(const shadow::Camera& camera, const shadow::Light& light);
   ExactVisibility& exact();
+  // The frame's plants chosen on the GPU band by band, nearest first: each band's polygons and
+  // points drawn into the frame before the next band is culled against them.
+  void sample_on_gpu(const shadow::Camera& camera);
   // The frame pass proper: polygons, then the point splats.
   void draw_frame(const shadow::Camera& camera, const shadow::Light& light, const std::optional<FramePass::ShadowLookup>& lookup);
   // With every plant as polygons (no points): the instances of point meshes the frusta hold, culled
@@ -142,6 +150,8 @@ class Renderer {
   ShadowPass shadow_pass_;
   FramePass frame_pass_;
   PointSplat frame_points_;
+  std::unique_ptr<GpuSampler> gpu_sampler_;  // --sampler gpu
+  std::unique_ptr<DepthPyramid> occluders_;  // over the frame, for gpu_sampler_
   std::unique_ptr<PointSplat> shadow_points_;  // made with the first shadow map that needs it
   std::unique_ptr<ShadowVolumePass> volume_pass_;  // --method volumes
   std::unique_ptr<ExactVisibility> exact_;          // made when first asked for

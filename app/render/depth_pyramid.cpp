@@ -1,0 +1,64 @@
+#include "app/render/depth_pyramid.hpp"
+
+#include "app/gl/shader_program.hpp"
+
+#include <algorithm>
+#include <string>
+
+namespace ecoview {
+namespace {
+
+constexpr GLuint pyramid_binding = 17, point_depths_binding = 6;  // shaders/depth_pyramid.glsl, point_common.glsl
+constexpr int max_levels = 16;                                     // the shaders' arrays
+constexpr int tile = 8;                                            // local size per side
+
+GLuint groups(int texels) { return static_cast<GLuint>((texels + tile - 1) / tile); }
+
+}  // namespace
+
+DepthPyramid::DepthPyramid(glm::ivec2 size)
+    : size_(size),
+      base_program_(gl::build_program({"depth_pyramid.comp"}, "#define BASE\n")),
+      reduce_program_(gl::build_program({"depth_pyramid.comp"})) {
+  GLuint total = 0;
+  for (glm::ivec2 s = size; static_cast<int>(sizes_.size()) < max_levels; s = (s + 1) / 2) {
+    sizes_.push_back(s);
+    offsets_.push_back(total);
+    total += static_cast<GLuint>(s.x * s.y);
+    if (s.x == 1 && s.y == 1) break;
+  }
+  glNamedBufferStorage(depths_.name(), static_cast<GLsizeiptr>(total * sizeof(float)), nullptr, 0);
+}
+
+void DepthPyramid::set_levels(const gl::Program& program) const {
+  const GLuint p = program.name();
+  glProgramUniform1uiv(p, glGetUniformLocation(p, "pyramid_offset"), static_cast<GLsizei>(offsets_.size()), offsets_.data());
+  glProgramUniform2iv(p, glGetUniformLocation(p, "pyramid_size"), static_cast<GLsizei>(sizes_.size()), &sizes_.front().x);
+  gl::set_uniform(program, "pyramid_levels", static_cast<int>(sizes_.size()));
+}
+
+void DepthPyramid::build(GLuint polygon_depth, GLuint point_depths) const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, pyramid_binding, depths_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, point_depths_binding, point_depths);
+  glBindTextureUnit(0, polygon_depth);
+  set_levels(base_program_);
+  gl::set_uniform(base_program_, "polygon_depth", 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  glUseProgram(base_program_.name());
+  glDispatchCompute(groups(size_.x), groups(size_.y), 1);
+  set_levels(reduce_program_);
+  glUseProgram(reduce_program_.name());
+  for (std::size_t level = 1; level < sizes_.size(); ++level) {
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    gl::set_uniform(reduce_program_, "level", static_cast<int>(level));
+    glDispatchCompute(groups(sizes_[level].x), groups(sizes_[level].y), 1);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void DepthPyramid::bind_for(const gl::Program& program) const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, pyramid_binding, depths_.name());
+  set_levels(program);
+}
+
+}  // namespace ecoview

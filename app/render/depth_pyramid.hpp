@@ -1,0 +1,34 @@
+#pragma once
+#include "app/gl/gl_objects.hpp"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace ecoview {
+
+// A farthest-depth pyramid over a frame, as GPU-driven renderers cull by: level 0 holds each
+// pixel's nearest window depth of what is drawn so far (polygons in a depth texture, points in a
+// splat's depth buffer; 1 where nothing is), each level above the farthest of the 2 × 2 texels
+// below. A box whose nearest depth lies beyond the pyramid's farthest over its screen rectangle is
+// hidden (shaders/depth_pyramid.glsl).
+class DepthPyramid {
+ public:
+  explicit DepthPyramid(glm::ivec2 size);
+  // Rebuilds it from the polygons' depth texture (a depth or depth-stencil texture of the size)
+  // and the points' nearest depths (the float bits of window depths, one uint per pixel, all ones
+  // where none).
+  void build(GLuint polygon_depth, GLuint point_depths) const;
+  // Binds it for a program that includes depth_pyramid.glsl.
+  void bind_for(const gl::Program& program) const;
+
+ private:
+  void set_levels(const gl::Program& program) const;
+  glm::ivec2 size_;
+  std::vector<glm::ivec2> sizes_;      // per level
+  std::vector<GLuint> offsets_;        // per level, in floats
+  gl::Buffer depths_;
+  gl::Program base_program_, reduce_program_;
+};
+
+}  // namespace ecoview

@@ -1,0 +1,29 @@
+// A farthest-depth pyramid over the frame (app/render/depth_pyramid.hpp): window depths, level 0
+// per pixel, each level above the farthest of the 2 × 2 below; levels packed one after another.
+#ifdef PYRAMID_WRITTEN
+layout(std430, binding = 17) buffer Pyramid { float pyramid[]; };
+#else
+layout(std430, binding = 17) readonly buffer Pyramid { float pyramid[]; };
+#endif
+uniform uint pyramid_offset[16];
+uniform ivec2 pyramid_size[16];
+uniform int pyramid_levels;
+
+float pyramid_at(int level, ivec2 texel) {
+  return pyramid[pyramid_offset[level] + uint(texel.y * pyramid_size[level].x + texel.x)];
+}
+
+// The farthest depth drawn over the pixels from `lo` to `hi` (inclusive, level 0's): read at the
+// lowest level where they span at most 2 × 2 texels.
+float farthest_over(ivec2 lo, ivec2 hi) {
+  lo = clamp(lo, ivec2(0), pyramid_size[0] - 1);
+  hi = clamp(hi, ivec2(0), pyramid_size[0] - 1);
+  int level = 0;
+  while (level + 1 < pyramid_levels && any(greaterThan((hi >> level) - (lo >> level), ivec2(1)))) ++level;
+  ivec2 a = lo >> level, b = hi >> level;
+  float farthest = 0.0;
+  for (int y = a.y; y <= b.y; ++y) {
+    for (int x = a.x; x <= b.x; ++x) farthest = max(farthest, pyramid_at(level, ivec2(x, y)));
+  }
+  return farthest;
+}
