@@ -8,18 +8,28 @@ layout(local_size_x = 64) in;
 layout(std430, binding = 18) readonly buffer Tables { uvec4 tables[]; };  // first plant, end, index count, 0
 layout(std430, binding = 19) writeonly buffer Commands { uint commands[]; };
 uniform uint table_count;
-uniform uint band_number;  // from 1
 
-// The polygon plants before `plant` in the lists, this band's and the bands' before.
-uint polygons_before(uint plant) {
-  return plant < plant_count ? offsets[plant].z + group_sums[plant / plants_per_group].z : polygon_count;
+// The first place in the band whose plant is `plant` or after it (the band holds plants in order).
+uint place_of(uvec2 band, uint plant) {
+  uint lo = 0u, hi = band.y;
+  while (lo < hi) {
+    uint mid = (lo + hi) / 2u;
+    if (band_list[band.x + mid] < plant) lo = mid + 1u; else hi = mid;
+  }
+  return lo;
+}
+
+// The polygon plants before a place in the band, in the lists of this band and the bands' before.
+uint polygons_before(uvec2 band, uint place) {
+  return place < band.y ? offsets[band.x + place].z + group_sums[place / plants_per_group].z : polygon_count;
 }
 
 void main() {
   uint t = gl_GlobalInvocationID.x;
   if (t >= table_count) return;
   uvec4 table = tables[t];
-  uint first = polygons_before(table.x), end = polygons_before(table.y);
+  uvec2 band = this_band();
+  uint first = polygons_before(band, place_of(band, table.x)), end = polygons_before(band, place_of(band, table.y));
   uint at = 5u * ((band_number - 1u) * table_count + t);
   commands[at] = table.z;
   commands[at + 1u] = end - first;

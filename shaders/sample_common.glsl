@@ -1,5 +1,6 @@
 // The GPU sampler's buffers (app/render/gpu_sampler.hpp): the plants resident on the GPU, what it
-// knows of their meshes, and per plant its count and its place in the frame's lists.
+// knows of their meshes, the frame's plants in view sorted into distance bands, and per plant its
+// count and its place in the frame's lists.
 struct Instance {
   mat4 model;
   vec4 tint;
@@ -14,10 +15,11 @@ layout(std430, binding = 2) readonly buffer Instances { Instance instances[]; };
 layout(std430, binding = 10) readonly buffer PlantMeshes { uvec2 plant_meshes[]; };  // mesh, rounding's float bits
 layout(std430, binding = 11) readonly buffer SampledMeshes { SampledMesh meshes[]; };
 // Per plant, once counted: (points, the number of its band from 1, 1 when drawn as polygons, 0);
-// zero before. Per plant of every
-// band: its exclusive prefix sums of (points, plants with points, plants as polygons) within its
-// work group, until the groups' sums (after the bands before) are added.
+// zero before.
 layout(std430, binding = 12) buffer Counts { uvec4 counts[]; };
+// Per place in the band list: the exclusive prefix sums of (points, plants with points, plants as
+// polygons) within its work group of its band, until the groups' sums (after the bands before)
+// are added.
 layout(std430, binding = 13) buffer Offsets { uvec4 offsets[]; };
 layout(std430, binding = 14) buffer GroupSums { uvec4 group_sums[]; };
 // The lists' sizes: the points a splat draws (no more than its buffers hold), the point draws,
@@ -29,7 +31,16 @@ layout(std430, binding = 15) buffer Totals {
   uint all_points;
   uint polygon_count;
 };
+// The plants in view, band after band, each band's in plant order; per band its first place in
+// that list and its plants.
+layout(std430, binding = 20) buffer BandList { uint band_list[]; };
+layout(std430, binding = 21) buffer BandRanges { uvec2 band_ranges[]; };
 
 uniform uint plant_count;
+uniform uint band_number;  // the band being counted, from 1
 
 const uint plants_per_group = 1024u;  // 256 threads of 4 plants (app/render/gpu_sampler.cpp)
+const uint no_band = 0xFFFFFFFFu;
+
+// The band's first place in the band list, and its plants.
+uvec2 this_band() { return band_ranges[band_number - 1u]; }

@@ -1,18 +1,14 @@
 #version 450 core
-// The GPU sampler's first pass, per band: each plant whose centre lies in the band culled against
-// the view's frusta and, with occlusion, against the depth pyramid of what nearer bands drew;
-// counted with the density formula (docs/point_density.md); points or polygons chosen as
-// pointgen::sample_view chooses them. Then the prefix sums of the counts within each work group.
+// The GPU sampler's count pass, per band: each of the band's plants (in view, sample_bins.comp)
+// culled, with occlusion, against the depth pyramid of what nearer bands drew; counted with the
+// density formula (docs/point_density.md); points or polygons chosen as pointgen::sample_view
+// chooses them. Then the prefix sums of the counts within each work group.
 #include "sample_common.glsl"
 #include "depth_pyramid.glsl"
 layout(local_size_x = 256) in;
 
-uniform vec4 planes[36];  // six per view, inside where dot >= 0
-uniform uint view_count;
 uniform mat4 view_projection;  // the first view's, for occlusion
 uniform bool occlusion;
-uniform vec2 band;             // the band's distances from the eye to plants' centres, [x, y)
-uniform uint band_number;      // from 1
 uniform vec3 eye;
 uniform vec3 forward;
 uniform float edge_cos;
@@ -22,15 +18,6 @@ uniform float points_per_triangle;
 
 // The band around break-even (pointgen/sampling/view_sampler.cpp).
 const float band_low = 0.8, band_high = 1.25;
-
-bool in_view(vec3 center, float radius) {
-  for (uint v = 0u; v < view_count; ++v) {
-    bool inside = true;
-    for (uint p = 0u; p < 6u; ++p) inside = inside && dot(planes[6u * v + p].xyz, center) + planes[6u * v + p].w >= -radius;
-    if (inside) return true;
-  }
-  return false;
-}
 
 // Whether the plant's bounds box is off screen or behind what nearer bands drew over all of its
 // screen rectangle. Not where the box reaches behind the eye.
@@ -57,20 +44,15 @@ float facing(SampledMesh mesh, vec3 v) {
   return sqrt(max(dot(v, moments * v), 0.0));
 }
 
-// (points, 1 when drawn as polygons) of plant i; none outside the band.
-uvec2 count_plant(uint i, out bool in_band) {
-  in_band = false;
-  if (i >= plant_count) return uvec2(0u);
+// (points, 1 when drawn as polygons) of plant i.
+uvec2 count_plant(uint i) {
   mat4 model = instances[i].model;
   SampledMesh mesh = meshes[plant_meshes[i].x];
+  if (occlusion && hidden(model, mesh)) return uvec2(0u);
   vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
-  float from_eye = length(eye - center);
-  in_band = from_eye >= band.x && from_eye < band.y;
-  if (!in_band) return uvec2(0u);
   float scale = pow(abs(determinant(mat3(model))), 1.0 / 3.0);
   float radius = mesh.center_radius.w * scale;
-  if (!in_view(center, radius) || (occlusion && hidden(model, mesh))) return uvec2(0u);
-  float distance = max(from_eye, max(0.5 * radius, 1e-3));
+  float distance = max(length(eye - center), max(0.5 * radius, 1e-3));
   float depth = max(dot(center - eye, forward), distance * edge_cos);
   vec3 to_eye = inverse(mat3(model)) * (eye - center);
   float facing_eye = dot(to_eye, to_eye) > 0.0 ? facing(mesh, normalize(to_eye)) : 0.5;
@@ -88,15 +70,17 @@ uvec2 count_plant(uint i, out bool in_band) {
 shared uvec4 sums[256];
 
 void main() {
-  uint first = gl_WorkGroupID.x * plants_per_group + gl_LocalInvocationID.x * 4u;
+  uvec2 band = this_band();
+  uint first = gl_WorkGroupID.x * plants_per_group + gl_LocalInvocationID.x * 4u;  // places in the band
   uvec4 own[4];
   uvec4 total = uvec4(0u);
   for (uint j = 0u; j < 4u; ++j) {
-    bool in_band;
-    uvec2 c = count_plant(first + j, in_band);
     own[j] = total;
+    if (first + j >= band.y) continue;
+    uint plant = band_list[band.x + first + j];
+    uvec2 c = count_plant(plant);
     total += uvec4(c.x, c.x > 0u ? 1u : 0u, c.y, 0u);
-    if (in_band) counts[first + j] = uvec4(c.x, band_number, c.y, 0u);
+    counts[plant] = uvec4(c.x, band_number, c.y, 0u);
   }
   // Inclusive scan of the threads' totals (Hillis-Steele), then each plant's exclusive offset.
   uint t = gl_LocalInvocationID.x;
@@ -110,7 +94,7 @@ void main() {
   }
   uvec4 thread_offset = sums[t] - total;
   for (uint j = 0u; j < 4u; ++j) {
-    if (first + j < plant_count) offsets[first + j] = thread_offset + own[j];
+    if (first + j < band.y) offsets[band.x + first + j] = thread_offset + own[j];
   }
   if (t == 255u) group_sums[gl_WorkGroupID.x] = sums[t];
 }

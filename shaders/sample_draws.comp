@@ -1,6 +1,6 @@
 #version 450 core
-// The GPU sampler's third pass, per band: each plant with points writes its draw, in plant order
-// after the bands before, as the point splat reads them (first point, count, first sample,
+// The GPU sampler's third pass, per band: each of the band's plants with points writes its draw,
+// in plant order after the bands before, as the point splat reads them (first point, count, first sample,
 // instance), and the draw of each block of points that starts in its run; each plant drawn as
 // polygons its instance for the polygon draws (GpuScene's instance layout).
 #include "sample_common.glsl"
@@ -16,15 +16,16 @@ layout(std430, binding = 8) writeonly buffer BlockDraws { uint block_draws[]; };
 layout(std430, binding = 16) writeonly buffer PolygonInstances { PolygonInstance polygon_instances[]; };
 const uint points_per_block = 16u;  // point_common.glsl
 uniform uint block_capacity;        // beyond it the frame's points are not drawn
-uniform uint band_number;           // this band's, from 1
 
 void main() {
-  uint i = gl_GlobalInvocationID.x;
-  if (i >= plant_count) return;
+  uvec2 band = this_band();
+  uint place = gl_GlobalInvocationID.x;
+  if (place >= band.y) return;
+  uint i = band_list[band.x + place];
   uvec4 c = counts[i];
-  if (c.y != band_number || (c.x == 0u && c.z == 0u)) return;
+  if (c.x == 0u && c.z == 0u) return;
   mat4 model = instances[i].model;
-  uvec4 at = offsets[i] + group_sums[i / plants_per_group];
+  uvec4 at = offsets[band.x + place] + group_sums[place / plants_per_group];
   if (c.x > 0u) {
     draws[at.y] = uvec4(at.x, c.x, meshes[plant_meshes[i].x].sizes.z, i);
     for (uint b = (at.x + points_per_block - 1u) / points_per_block; b * points_per_block < at.x + c.x && b < block_capacity; ++b) {

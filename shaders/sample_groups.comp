@@ -1,16 +1,16 @@
 #version 450 core
-// The GPU sampler's second pass, one work group: the groups' sums turned into their exclusive
-// prefix sums after the lists of the bands before, and the lists' new totals.
+// The GPU sampler's second pass per band, one work group: the band's groups' sums turned into
+// their exclusive prefix sums after the lists of the bands before, and the lists' new totals.
 #include "sample_common.glsl"
 layout(local_size_x = 256) in;
 
-uniform uint group_count;
 uniform uint point_capacity;  // the points the splat's buffers hold: those past it are not drawn
 
 shared uvec4 sums[256];
 
 void main() {
   uint t = gl_LocalInvocationID.x;
+  uint group_count = (this_band().y + plants_per_group - 1u) / plants_per_group;
   uvec4 carried = uvec4(all_points, draw_count, polygon_count, 0u);
   for (uint first = 0u; first < group_count; first += 256u) {
     uvec4 own = first + t < group_count ? group_sums[first + t] : uvec4(0u);

@@ -34,7 +34,8 @@ constexpr std::size_t command_uints = 5;  // DrawElementsIndirectCommand
 
 constexpr GLuint draws_binding = 1, instances_binding = 2, block_draws_binding = 8, plant_meshes_binding = 10,
                  meshes_binding = 11, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
-                 polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19;
+                 polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19, band_list_binding = 20,
+                 band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24;
 constexpr std::size_t plants_per_group = 1024, threads_per_group = 256;  // shaders/sample_count.comp
 constexpr std::size_t points_per_block = 16;                              // shaders/point_common.glsl
 constexpr std::size_t max_views = 6;                                      // planes[36]
@@ -70,7 +71,11 @@ std::vector<glm::vec2> GpuSampler::bands(float far) {
 }
 
 GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const PointSamples& samples)
-    : count_program_(gl::build_program({"sample_count.comp"})),
+    : keys_program_(gl::build_program({"sample_bins.comp"}, "#define KEYS\n")),
+      bin_count_program_(gl::build_program({"sample_bins.comp"}, "#define COUNT\n")),
+      bands_program_(gl::build_program({"sample_bands.comp"})),
+      place_program_(gl::build_program({"sample_bins.comp"})),
+      count_program_(gl::build_program({"sample_count.comp"})),
       groups_program_(gl::build_program({"sample_groups.comp"})),
       draws_program_(gl::build_program({"sample_draws.comp"})),
       commands_program_(gl::build_program({"sample_commands.comp"})) {
@@ -113,7 +118,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
     throw RuntimeFailure("the scene's " + std::to_string(plant_count_) + " plants are more than this driver's shaders address "
                          "as polygon instances; use fewer plants");
   }
-  gl::store(instances_, instances);
+  gl::store(instances_, instances, GL_DYNAMIC_STORAGE_BIT);  // moving plants are posed each frame
   gl::store(plant_meshes_, plant_meshes);
   gl::store(meshes_, gpu_meshes);
   gl::store(tables_, table_ranges);
@@ -125,6 +130,22 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<GpuTotals>(totals_, 1);
   storage<PolygonInstance>(polygon_instances_, plant_count_);
   storage<GLuint>(commands_, command_uints * max_bands * std::max<std::size_t>(table_ranges.size(), 1));
+  storage<GLuint>(band_keys_, plant_count_);
+  storage<GLuint>(group_bands_, group_count_ * max_bands);
+  storage<GLuint>(band_list_, plant_count_);
+  storage<glm::uvec2>(band_ranges_, max_bands);
+  storage<glm::uvec4>(band_dispatch_, 2 * max_bands);
+}
+
+void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed) {
+  if (command_of_table_[table] < 0) return;
+  const std::size_t end = table + 1 < first_plant_.size() ? first_plant_[table + 1] : plant_count_;
+  if (posed.size() != end - first_plant_[table]) throw RuntimeFailure("a posed table changed its number of instances");
+  std::vector<GpuInstance> instances;
+  instances.reserve(posed.size());
+  for (std::size_t i = 0; i < posed.size(); ++i) instances.push_back({posed.transforms[i], glm::vec4(posed.tints[i], 1.0f)});
+  glNamedBufferSubData(instances_.name(), static_cast<GLintptr>(first_plant_[table] * sizeof(GpuInstance)),
+                       static_cast<GLsizeiptr>(instances.size() * sizeof(GpuInstance)), instances.data());
 }
 
 void GpuSampler::bind() const {
@@ -140,16 +161,32 @@ void GpuSampler::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, polygon_instances_binding, polygon_instances_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, tables_binding, tables_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, commands_binding, commands_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_list_binding, band_list_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_ranges_binding, band_ranges_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_keys_binding, band_keys_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, group_bands_binding, group_bands_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_dispatch_binding, band_dispatch_.name());
 }
 
-void GpuSampler::begin(const pointgen::SamplerView& view) {
+void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands) {
   if (view.views.size() > max_views) throw RuntimeFailure("the GPU sampler takes at most 6 views at once");
+  if (bands.empty() || bands.size() > max_bands) throw RuntimeFailure("the GPU sampler takes 1 to 24 bands a frame");
+  bands_used_ = static_cast<int>(bands.size());
+  const GLuint zero = 0;
+  glClearNamedBufferData(counts_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferData(totals_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferData(commands_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferData(band_dispatch_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  if (plant_count_ == 0) return;
+
   const pointgen::ViewFrusta frusta(view.views);
   std::vector<glm::vec4> planes;
   for (const std::array<glm::vec4, 6>& p : frusta.planes()) planes.insert(planes.end(), p.begin(), p.end());
-  const GLuint count = count_program_.name();
-  glProgramUniform4fv(count, glGetUniformLocation(count, "planes"), static_cast<GLsizei>(planes.size()), &planes.front().x);
-  gl::set_uniform(count_program_, "view_count", static_cast<unsigned>(view.views.size()));
+  std::vector<float> band_ends;
+  for (const glm::vec2& band : bands) band_ends.push_back(band.y);
+  const GLuint keys = keys_program_.name();
+  glProgramUniform4fv(keys, glGetUniformLocation(keys, "planes"), static_cast<GLsizei>(planes.size()), &planes.front().x);
+  glProgramUniform1fv(keys, glGetUniformLocation(keys, "band_ends"), static_cast<GLsizei>(band_ends.size()), band_ends.data());
   gl::set_uniform(count_program_, "view_projection", view.views.front());
   gl::set_uniform(count_program_, "eye", view.eye);
   gl::set_uniform(count_program_, "forward", view.forward);
@@ -157,44 +194,62 @@ void GpuSampler::begin(const pointgen::SamplerView& view) {
   gl::set_uniform(count_program_, "pixels_per_radian", view.density.pixels_per_radian);
   gl::set_uniform(count_program_, "k", view.density.k);
   gl::set_uniform(count_program_, "points_per_triangle", view.points_per_triangle);
-  const GLuint zero = 0;
-  glClearNamedBufferData(counts_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glClearNamedBufferData(totals_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glClearNamedBufferData(commands_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  bands_used_ = 0;
+  gl::set_uniform(keys_program_, "view_count", static_cast<unsigned>(view.views.size()));
+  gl::set_uniform(keys_program_, "eye", view.eye);
+
+  // The stable counting sort of the plants in view into bands (shaders/sample_bins.comp).
+  bind();
+  const auto plants = static_cast<unsigned>(plant_count_), groups = static_cast<unsigned>(group_count_);
+  const auto band_count = static_cast<unsigned>(bands.size());
+  for (const gl::Program* program : {&keys_program_, &bin_count_program_, &bands_program_, &place_program_}) {
+    gl::set_uniform(*program, "plant_count", plants);
+    gl::set_uniform(*program, "group_count", groups);
+    gl::set_uniform(*program, "band_count", band_count);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  glUseProgram(keys);
+  glDispatchCompute(groups_for(plant_count_, threads_per_group), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glUseProgram(bin_count_program_.name());
+  glDispatchCompute(groups_for(group_count_, 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glUseProgram(bands_program_.name());
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glUseProgram(place_program_.name());
+  glDispatchCompute(groups_for(group_count_, 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
-void GpuSampler::add_band(int band, glm::vec2 range, const DepthPyramid* occluders) {
-  if (band < 0 || band >= max_bands) throw RuntimeFailure("the GPU sampler takes at most 24 bands a frame");
-  bands_used_ = std::max(bands_used_, band + 1);
+void GpuSampler::add_band(int band, const DepthPyramid* occluders) {
+  if (band < 0 || band >= bands_used_) throw RuntimeFailure("the GPU sampler has no band " + std::to_string(band) + " this frame");
+  if (plant_count_ == 0) return;
   bind();
   const auto plants = static_cast<unsigned>(plant_count_);
   const auto number = static_cast<unsigned>(band + 1);
-  gl::set_uniform(count_program_, "plant_count", plants);
-  gl::set_uniform(count_program_, "band", range);
-  gl::set_uniform(count_program_, "band_number", number);
+  for (const gl::Program* program : {&count_program_, &groups_program_, &draws_program_, &commands_program_}) {
+    gl::set_uniform(*program, "plant_count", plants);
+    gl::set_uniform(*program, "band_number", number);
+  }
   gl::set_uniform(count_program_, "occlusion", occluders ? 1 : 0);
   if (occluders) occluders->bind_for(count_program_);
+  const auto dispatch_at = [&](int which) { return static_cast<GLintptr>((2 * band + which) * sizeof(glm::uvec4)); };
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, band_dispatch_.name());
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   glUseProgram(count_program_.name());
-  glDispatchCompute(groups_for(plant_count_, plants_per_group), 1, 1);
+  glDispatchComputeIndirect(dispatch_at(0));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-  gl::set_uniform(groups_program_, "group_count", static_cast<unsigned>(group_count_));
-  gl::set_uniform(groups_program_, "plant_count", plants);
   gl::set_uniform(groups_program_, "point_capacity", static_cast<unsigned>(point_capacity_));
   glUseProgram(groups_program_.name());
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-  gl::set_uniform(draws_program_, "plant_count", plants);
-  gl::set_uniform(draws_program_, "band_number", number);
   gl::set_uniform(draws_program_, "block_capacity", static_cast<unsigned>((point_capacity_ + points_per_block - 1) / points_per_block));
   glUseProgram(draws_program_.name());
-  glDispatchCompute(groups_for(plant_count_, threads_per_group), 1, 1);
+  glDispatchComputeIndirect(dispatch_at(1));
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 
-  gl::set_uniform(commands_program_, "plant_count", plants);
-  gl::set_uniform(commands_program_, "band_number", number);
   gl::set_uniform(commands_program_, "table_count", static_cast<unsigned>(triangles_of_command_.size()));
   glUseProgram(commands_program_.name());
   glDispatchCompute(groups_for(triangles_of_command_.size(), 64), 1, 1);
@@ -203,8 +258,8 @@ void GpuSampler::add_band(int band, glm::vec2 range, const DepthPyramid* occlude
 }
 
 void GpuSampler::sample(const pointgen::SamplerView& view) {
-  begin(view);
-  add_band(0, glm::vec2(0.0f, INFINITY), nullptr);
+  begin(view, {glm::vec2(0.0f, INFINITY)});
+  add_band(0, nullptr);
 }
 
 PointDrawList GpuSampler::draw_list() const {

@@ -29,12 +29,17 @@ class GpuSampler {
   static std::vector<glm::vec2> bands(float far);
   static constexpr int max_bands = 24;
 
-  // Starts a frame's lists for the view: its first frusta list, eye, density and point cost are
-  // used; its occlusion, cap and receivers are not.
-  void begin(const pointgen::SamplerView& view);
-  // Adds the plants whose centres lie at `range` metres from the eye, the band numbered `band`
-  // from 0; hidden ones left out where `occluders` is given (built over the view's image).
-  void add_band(int band, glm::vec2 range, const DepthPyramid* occluders);
+  // Moves a table's plants (posed people, animals, vehicles): their transforms and tints alone
+  // cross the bus. `table` has as many instances as at load.
+  void update(std::size_t table, const pointgen::InstanceTable& posed);
+
+  // Starts a frame's lists for the view, and sorts the plants in its frusta into the bands (from
+  // bands()): the view's frusta, eye, density and point cost are used; its occlusion, cap and
+  // receivers are not.
+  void begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands);
+  // Adds the plants of a band (numbered from 0, nearest first); hidden ones are left out where
+  // `occluders` is given (built over the first view's image).
+  void add_band(int band, const DepthPyramid* occluders);
   // One band holding every plant, without occlusion.
   void sample(const pointgen::SamplerView& view);
 
@@ -72,6 +77,8 @@ class GpuSampler {
   std::vector<std::size_t> triangles_of_command_;  // per place, the mesh's triangles
   gl::Buffer instances_, plant_meshes_, meshes_, counts_, offsets_, group_sums_, draws_, block_draws_, totals_;
   gl::Buffer polygon_instances_, tables_, commands_;
+  gl::Buffer band_keys_, group_bands_, band_list_, band_ranges_, band_dispatch_;
+  gl::Program keys_program_, bin_count_program_, bands_program_, place_program_;
   gl::Program count_program_, groups_program_, draws_program_, commands_program_;
 };
 

@@ -345,13 +345,13 @@ void Renderer::draw_frame(const shadow::Camera& camera, const shadow::Light& lig
 }
 
 void Renderer::sample_on_gpu(const shadow::Camera& camera) {
-  gpu_sampler_->begin(sampler_view(camera, settings_, {view_projection_}));
+  const std::vector<glm::vec2> bands = GpuSampler::bands(camera.far);
+  gpu_sampler_->begin(sampler_view(camera, settings_, {view_projection_}), bands);
   frame_points_.use(gpu_sampler_->draw_list(), samples_);
   frame_points_.begin();
-  const std::vector<glm::vec2> bands = GpuSampler::bands(camera.far);
   for (std::size_t b = 0; b < bands.size(); ++b) {
     occluders_->build(frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
-    gpu_sampler_->add_band(static_cast<int>(b), bands[b], occluders_.get());
+    gpu_sampler_->add_band(static_cast<int>(b), occluders_.get());
     frame_pass_.add_chosen_surfaces(gpu_scene_, *gpu_sampler_, static_cast<int>(b), camera);
     frame_points_.add(view_projection_, settings_.splat_size, 0.0f, true);
   }
@@ -366,8 +366,9 @@ void Renderer::pose(double t) {
       if (settings_.point_meshes_only && !scene_.point_meshes[posed[i].mesh]) continue;
       tables_[group] = std::move(posed[i]);
       cells_.update(group, tables_[group], samples_.meshes()[tables_[group].mesh]);
-      // Point meshes get their drawn subset per pass (upload_polygons).
+      // Point meshes get their drawn subset per pass (upload_polygons), or live on the GPU sampler.
       if (!scene_.point_meshes[tables_[group].mesh]) gpu_scene_.update(group, tables_[group]);
+      if (gpu_sampler_ && scene_.point_meshes[tables_[group].mesh]) gpu_sampler_->update(group, tables_[group]);
     }
   }
 }

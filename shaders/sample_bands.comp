@@ -1,0 +1,45 @@
+#version 450 core
+// Between the band sort's passes, one work group: the counts per band and group of plants turned
+// into first places in the band list (band-major exclusive prefix sums), each band's range, and
+// the work groups each band's passes take, as glDispatchComputeIndirect commands.
+#include "sample_common.glsl"
+layout(local_size_x = 256) in;
+
+layout(std430, binding = 23) buffer GroupBands { uint group_bands[]; };
+// Per band: the groups of its count pass (plants_per_group plants each), then of its draw pass
+// (256 plants each), each as (x, 1, 1, 0).
+layout(std430, binding = 24) writeonly buffer BandDispatch { uvec4 band_dispatch[]; };
+uniform uint group_count;
+uniform uint band_count;
+
+shared uint sums[256];
+
+void main() {
+  uint t = gl_LocalInvocationID.x;
+  uint carried = 0u;
+  uint cells = group_count * band_count;
+  for (uint first = 0u; first < cells; first += 256u) {
+    uint own = first + t < cells ? group_bands[first + t] : 0u;
+    sums[t] = own;
+    barrier();
+    for (uint step = 1u; step < 256u; step *= 2u) {
+      uint before = t >= step ? sums[t - step] : 0u;
+      barrier();
+      sums[t] += before;
+      barrier();
+    }
+    if (first + t < cells) group_bands[first + t] = carried + sums[t] - own;
+    uint chunk = sums[255];
+    barrier();
+    carried += chunk;
+  }
+  memoryBarrierBuffer();
+  barrier();
+  for (uint b = t; b < band_count; b += 256u) {
+    uint start = group_bands[b * group_count];
+    uint end = b + 1u < band_count ? group_bands[(b + 1u) * group_count] : carried;
+    band_ranges[b] = uvec2(start, end - start);
+    band_dispatch[2u * b] = uvec4((end - start + plants_per_group - 1u) / plants_per_group, 1u, 1u, 0u);
+    band_dispatch[2u * b + 1u] = uvec4((end - start + 255u) / 256u, 1u, 1u, 0u);
+  }
+}

@@ -1,0 +1,70 @@
+#version 450 core
+// The GPU sampler's first passes, once a frame: the plants in view sorted into distance bands,
+// each band's in plant order (a stable counting sort). With KEYS each plant culled against the
+// view's frusta and given its band; with PLACES each work group of plants counts (COUNT) or places
+// its plants band by band, one thread walking the group's plants in order.
+#include "sample_common.glsl"
+
+layout(std430, binding = 22) buffer BandKeys { uint band_keys[]; };  // per plant: its band from 0, or no_band
+// Per band and group of plants (band-major): its plants there, then (sample_bands.comp) their
+// first place in the band list.
+layout(std430, binding = 23) buffer GroupBands { uint group_bands[]; };
+uniform uint group_count;
+uniform uint band_count;
+
+#ifdef KEYS
+layout(local_size_x = 256) in;
+uniform vec4 planes[36];  // six per view, inside where dot >= 0
+uniform uint view_count;
+uniform vec3 eye;
+uniform float band_ends[24];  // each band's far end from the eye, metres; the last's is infinite
+
+bool in_view(vec3 center, float radius) {
+  for (uint v = 0u; v < view_count; ++v) {
+    bool inside = true;
+    for (uint p = 0u; p < 6u; ++p) inside = inside && dot(planes[6u * v + p].xyz, center) + planes[6u * v + p].w >= -radius;
+    if (inside) return true;
+  }
+  return false;
+}
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= plant_count) return;
+  mat4 model = instances[i].model;
+  vec4 bounds = meshes[plant_meshes[i].x].center_radius;
+  vec3 center = (model * vec4(bounds.xyz, 1.0)).xyz;
+  float radius = bounds.w * pow(abs(determinant(mat3(model))), 1.0 / 3.0);
+  uint key = no_band;
+  if (in_view(center, radius)) {
+    float from_eye = length(eye - center);
+    key = 0u;
+    while (key + 1u < band_count && from_eye >= band_ends[key]) ++key;
+  }
+  band_keys[i] = key;
+}
+#else
+layout(local_size_x = 64) in;
+#define MAX_BANDS 24
+
+void main() {
+  uint group = gl_GlobalInvocationID.x;
+  if (group >= group_count) return;
+  uint next[MAX_BANDS];
+  for (uint b = 0u; b < band_count; ++b) next[b] = 0u;
+  uint end = min((group + 1u) * plants_per_group, plant_count);
+#ifdef COUNT
+  for (uint i = group * plants_per_group; i < end; ++i) {
+    uint key = band_keys[i];
+    if (key != no_band) ++next[key];
+  }
+  for (uint b = 0u; b < band_count; ++b) group_bands[b * group_count + group] = next[b];
+#else
+  for (uint b = 0u; b < band_count; ++b) next[b] = group_bands[b * group_count + group];
+  for (uint i = group * plants_per_group; i < end; ++i) {
+    uint key = band_keys[i];
+    if (key != no_band) band_list[next[key]++] = i;
+  }
+#endif
+}
+#endif
