@@ -1,7 +1,8 @@
 #version 450 core
 // Between the band sort's passes, one work group: the counts per band and group of plants turned
 // into first places in the band list (band-major exclusive prefix sums), each band's range, and
-// the work groups each band's passes take, as glDispatchComputeIndirect commands.
+// the work groups each band's passes take, as glDispatchComputeIndirect commands; the lists'
+// totals set to none.
 #include "sample_common.glsl"
 layout(local_size_x = 256) in;
 
@@ -16,6 +17,13 @@ shared uint sums[256];
 
 void main() {
   uint t = gl_LocalInvocationID.x;
+  if (t == 0u) {
+    total_points = 0u;
+    draw_count = 0u;
+    band_first_point = 0u;
+    all_points = 0u;
+    polygon_count = 0u;
+  }
   uint carried = 0u;
   uint cells = group_count * band_count;
   for (uint first = 0u; first < cells; first += 256u) {

@@ -1,8 +1,10 @@
 #version 450 core
 // The GPU sampler's first passes, once a frame: the plants in view sorted into distance bands,
 // each band's in plant order (a stable counting sort). With KEYS each plant culled against the
-// view's frusta and given its band; with PLACES each work group of plants counts (COUNT) or places
-// its plants band by band, one thread walking the group's plants in order.
+// view's frusta and given its band by its distance from the eye; a plant in none of them but in the
+// body of the casters (what may shadow the view) goes to the last band, the casters'; with PLACES each work group of plants counts (COUNT) or places
+// its plants band by band, one thread walking the group's plants in order. The keys pass also
+// clears the plants' counts.
 #include "sample_common.glsl"
 
 layout(std430, binding = 22) buffer BandKeys { uint band_keys[]; };  // per plant: its band from 0, or no_band
@@ -14,16 +16,21 @@ uniform uint band_count;
 
 #ifdef KEYS
 layout(local_size_x = 256) in;
-uniform vec4 planes[36];  // six per view, inside where dot >= 0
+uniform vec4 planes[96];  // inside where dot >= 0: six per view, then the casters' body's
 uniform uint view_count;
+uniform uint caster_plane_count;  // none: no casters' band
 uniform vec3 eye;
-uniform float band_ends[24];  // each band's far end from the eye, metres; the last's is infinite
+uniform float band_ends[32];  // each band's far end from the eye, metres; the last's is infinite
+
+bool in_planes(vec3 center, float radius, uint first, uint end) {
+  bool inside = true;
+  for (uint p = first; p < end; ++p) inside = inside && dot(planes[p].xyz, center) + planes[p].w >= -radius;
+  return inside;
+}
 
 bool in_view(vec3 center, float radius) {
   for (uint v = 0u; v < view_count; ++v) {
-    bool inside = true;
-    for (uint p = 0u; p < 6u; ++p) inside = inside && dot(planes[6u * v + p].xyz, center) + planes[6u * v + p].w >= -radius;
-    if (inside) return true;
+    if (in_planes(center, radius, 6u * v, 6u * v + 6u)) return true;
   }
   return false;
 }
@@ -36,16 +43,20 @@ void main() {
   vec3 center = (model * vec4(bounds.xyz, 1.0)).xyz;
   float radius = bounds.w * pow(abs(determinant(mat3(model))), 1.0 / 3.0);
   uint key = no_band;
+  uint distance_bands = caster_plane_count > 0u ? band_count - 1u : band_count;
   if (in_view(center, radius)) {
     float from_eye = length(eye - center);
     key = 0u;
-    while (key + 1u < band_count && from_eye >= band_ends[key]) ++key;
+    while (key + 1u < distance_bands && from_eye >= band_ends[key]) ++key;
+  } else if (caster_plane_count > 0u && in_planes(center, radius, 6u * view_count, 6u * view_count + caster_plane_count)) {
+    key = band_count - 1u;
   }
   band_keys[i] = key;
+  counts[i] = uvec4(0u);
 }
 #else
 layout(local_size_x = 64) in;
-#define MAX_BANDS 24
+#define MAX_BANDS 32
 
 void main() {
   uint group = gl_GlobalInvocationID.x;

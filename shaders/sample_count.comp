@@ -9,6 +9,14 @@ layout(local_size_x = 256) in;
 
 uniform mat4 view_projection;  // the first view's, for occlusion
 uniform bool occlusion;
+// For casters out of view: no more than k points per texel of the surface a shadow view projects
+// (half the area: taken as facing every way), whatever the camera's density asks.
+uniform bool cap_to_map;
+uniform mat4 map_view_projection;
+uniform float map_texels;
+// For casters out of view: only those whose box covers a receiver the frame shows, as marked in
+// the pyramid bound (then a receiver mask over the shadow view's image, DepthPyramid).
+uniform bool receivers_only;
 uniform vec3 eye;
 uniform vec3 forward;
 uniform float edge_cos;
@@ -19,22 +27,50 @@ uniform float points_per_triangle;
 // The band around break-even (pointgen/sampling/view_sampler.cpp).
 const float band_low = 0.8, band_high = 1.25;
 
-// Whether the plant's bounds box is off screen or behind what nearer bands drew over all of its
-// screen rectangle. Not where the box reaches behind the eye.
-bool hidden(mat4 model, SampledMesh mesh) {
-  vec3 lo = vec3(1e30), hi = vec3(-1e30);
+// The NDC rectangle of the plant's bounds box through `m`, and its nearest NDC depth; false where
+// the box reaches behind the eye.
+bool box_rect(mat4 m, mat4 model, SampledMesh mesh, out vec3 lo, out vec3 hi) {
+  lo = vec3(1e30);
+  hi = vec3(-1e30);
   for (int c = 0; c < 8; ++c) {
     vec3 corner = mesh.center_radius.xyz + mesh.half_size_area.xyz * vec3((c & 1) != 0 ? 1.0 : -1.0, (c & 2) != 0 ? 1.0 : -1.0,
                                                                           (c & 4) != 0 ? 1.0 : -1.0);
-    vec4 clip = view_projection * (model * vec4(corner, 1.0));
+    vec4 clip = m * (model * vec4(corner, 1.0));
     if (!(clip.w > 0.0)) return false;
     vec3 ndc = clip.xyz / clip.w;
     lo = min(lo, ndc);
     hi = max(hi, ndc);
   }
-  if (any(lessThan(hi.xy, vec2(-1.0))) || any(greaterThan(lo.xy, vec2(1.0)))) return true;
+  return true;
+}
+
+// The pyramid texels over an NDC rectangle.
+void texels_of(vec3 lo, vec3 hi, out ivec2 first, out ivec2 last) {
   vec2 size = vec2(pyramid_size[0]);
-  ivec2 first = ivec2(floor((lo.xy * 0.5 + 0.5) * size)), last = ivec2(floor((hi.xy * 0.5 + 0.5) * size));
+  first = ivec2(floor((lo.xy * 0.5 + 0.5) * size));
+  last = ivec2(floor((hi.xy * 0.5 + 0.5) * size));
+}
+
+bool off_image(vec3 lo, vec3 hi) { return any(lessThan(hi.xy, vec2(-1.0))) || any(greaterThan(lo.xy, vec2(1.0))); }
+
+// Whether a caster's box covers no receiver in the mask; false where it reaches behind the light.
+bool shadows_nothing(mat4 model, SampledMesh mesh) {
+  vec3 lo, hi;
+  if (!box_rect(map_view_projection, model, mesh, lo, hi)) return false;
+  if (off_image(lo, hi)) return true;
+  ivec2 first, last;
+  texels_of(lo, hi, first, last);
+  return farthest_over(first, last) < 0.5;
+}
+
+// Whether the plant's bounds box is off screen or behind what nearer bands drew over all of its
+// screen rectangle. Not where the box reaches behind the eye.
+bool hidden(mat4 model, SampledMesh mesh) {
+  vec3 lo, hi;
+  if (!box_rect(view_projection, model, mesh, lo, hi)) return false;
+  if (off_image(lo, hi)) return true;
+  ivec2 first, last;
+  texels_of(lo, hi, first, last);
   return lo.z * 0.5 + 0.5 > farthest_over(first, last);
 }
 
@@ -48,7 +84,7 @@ float facing(SampledMesh mesh, vec3 v) {
 uvec2 count_plant(uint i) {
   mat4 model = instances[i].model;
   SampledMesh mesh = meshes[plant_meshes[i].x];
-  if (occlusion && hidden(model, mesh)) return uvec2(0u);
+  if ((occlusion && hidden(model, mesh)) || (receivers_only && shadows_nothing(model, mesh))) return uvec2(0u);
   vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
   float scale = pow(abs(determinant(mat3(model))), 1.0 / 3.0);
   float radius = mesh.center_radius.w * scale;
@@ -57,7 +93,15 @@ uvec2 count_plant(uint i) {
   vec3 to_eye = inverse(mat3(model)) * (eye - center);
   float facing_eye = dot(to_eye, to_eye) > 0.0 ? facing(mesh, normalize(to_eye)) : 0.5;
   float z = max(depth, 1e-3);
-  float needed = k * pixels_per_radian * pixels_per_radian * mesh.half_size_area.w * scale * scale * facing_eye * max(distance, z) / (z * z * z);
+  float area = mesh.half_size_area.w * scale * scale;
+  float needed = k * pixels_per_radian * pixels_per_radian * area * facing_eye * max(distance, z) / (z * z * z);
+  if (cap_to_map) {
+    float w = (map_view_projection * vec4(center, 1.0)).w;
+    vec3 row_x = vec3(map_view_projection[0][0], map_view_projection[1][0], map_view_projection[2][0]);
+    vec3 row_y = vec3(map_view_projection[0][1], map_view_projection[1][1], map_view_projection[2][1]);
+    float ndc_per_square_metre = length(row_x) * length(row_y) / (w * w);
+    needed = min(needed, k * 0.5 * area * ndc_per_square_metre * 0.25 * map_texels);
+  }
   float samples = float(mesh.sizes.y);
   float ratio = needed / (points_per_triangle * float(mesh.sizes.x));
   bool as_polygons = ratio > band_low || needed > samples;

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -175,6 +176,40 @@ TEST_F(GpuSampling, PlantsBehindAWallAreLeftOut) {
   }
   ASSERT_GT(beside, 50000u);
   EXPECT_GT(static_cast<double>(same) / static_cast<double>(beside), 0.97);
+}
+
+// The shadow map draws the camera's plants and the casters out of view whose shadows reach what
+// the frame shows, and no others: a beech beside the view shadows the ground in it; behind a wall
+// that hides that ground, or far behind the camera, it is left out.
+TEST_F(GpuSampling, TheShadowMapTakesTheCastersOutOfViewThatShadowTheView) {
+  const std::string start = R"({"camera": {"position": [0, 2, 0], "target": [0, 0, -20], "fov_y_deg": 40, "near": 0.5, "far": 200},
+      "lights": [{"type": "directional", "direction": [1, -0.5, 0]}],
+      "objects": [{"type": "plane", "center": [0, 0, -20], "size": [200, 200]})";
+  const std::string wall = R"(, {"type": "box", "min": [-15, 0, -6], "max": [15, 10, -5]})";
+  const std::string beside = R"(, {"type": "plant", "species": "beech", "positions": [[-35, 0, -20]]})";
+  const std::string behind = R"(, {"type": "plant", "species": "beech", "positions": [[0, 0, 60]]})";
+  settings.width = 320;
+  settings.height = 180;
+  settings.method = ShadowMethod::psm;
+  settings.gpu_sampler = true;
+  struct Frame {
+    std::size_t shadowed = 0, triangles = 0;
+  };
+  const auto render = [&](const std::string& objects) {
+    const Scene s = load_scene({"beech.json", start + objects + "]}", [](const std::string&) { return std::nullopt; }});
+    Renderer renderer(s, settings);
+    renderer.render(s.camera, s.lights[0]);
+    const Image8 visibility = renderer.frame().read_visibility();
+    return Frame{static_cast<std::size_t>(std::count_if(visibility.samples.begin(), visibility.samples.end(), [](std::uint8_t v) { return v < 128; })),
+                 renderer.stats().triangles};
+  };
+  const Frame ground = render(""), seen = render(beside);
+  EXPECT_GT(seen.shadowed, 500u) << "its shadow should lie across the view";
+  EXPECT_GT(seen.triangles, ground.triangles) << "drawn (near: as polygons)";
+  EXPECT_EQ(render(behind).triangles, ground.triangles) << "its shadow falls behind the camera";
+  const Frame walled = render(wall), hidden = render(wall + beside);
+  EXPECT_EQ(hidden.triangles, walled.triangles) << "its shadow falls on ground the wall hides";
+  EXPECT_EQ(hidden.shadowed, walled.shadowed);
 }
 
 }  // namespace

@@ -11,6 +11,9 @@ namespace {
 constexpr GLuint pyramid_binding = 17, point_depths_binding = 6;  // shaders/depth_pyramid.glsl, point_common.glsl
 constexpr int max_levels = 16;                                     // the shaders' arrays
 constexpr int tile = 8;                                            // local size per side
+constexpr GLuint frame_depths_binding = 25;                        // shaders/receiver_marks.comp
+// The frame's pixels that mark receivers: every 2nd each way, far denser than the marks' texels.
+constexpr int receiver_pixel_step = 2;
 
 GLuint groups(int texels) { return static_cast<GLuint>((texels + tile - 1) / tile); }
 
@@ -46,6 +49,36 @@ void DepthPyramid::build(GLuint polygon_depth, GLuint point_depths) const {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   glUseProgram(base_program_.name());
   glDispatchCompute(groups(size_.x), groups(size_.y), 1);
+  reduce();
+}
+
+void DepthPyramid::build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection,
+                                   const glm::mat4& map_view_projection) {
+  if (!marks_program_) {
+    clear_marks_program_ = std::make_unique<gl::Program>(gl::build_program({"receiver_marks.comp"}, "#define CLEAR\n"));
+    marks_program_ = std::make_unique<gl::Program>(gl::build_program({"receiver_marks.comp"}));
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, pyramid_binding, depths_.name());
+  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, frame_depths_binding, frame.depths_.name(), 0,
+                    static_cast<GLsizeiptr>(frame.size_.x) * frame.size_.y * static_cast<GLsizeiptr>(sizeof(float)));
+  set_levels(*clear_marks_program_);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glUseProgram(clear_marks_program_->name());
+  glDispatchCompute(groups(size_.x), groups(size_.y), 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  set_levels(*marks_program_);
+  gl::set_uniform(*marks_program_, "frame_size", frame.size_);
+  gl::set_uniform(*marks_program_, "pixel_step", receiver_pixel_step);
+  gl::set_uniform(*marks_program_, "frame_to_world", glm::inverse(frame_view_projection));
+  gl::set_uniform(*marks_program_, "map_view_projection", map_view_projection);
+  glUseProgram(marks_program_->name());
+  glDispatchCompute(groups((frame.size_.x + receiver_pixel_step - 1) / receiver_pixel_step),
+                    groups((frame.size_.y + receiver_pixel_step - 1) / receiver_pixel_step), 1);
+  reduce();
+}
+
+void DepthPyramid::reduce() const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, pyramid_binding, depths_.name());
   set_levels(reduce_program_);
   glUseProgram(reduce_program_.name());
   for (std::size_t level = 1; level < sizes_.size(); ++level) {

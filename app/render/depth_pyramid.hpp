@@ -3,6 +3,7 @@
 
 #include <glm/glm.hpp>
 
+#include <memory>
 #include <vector>
 
 namespace ecoview {
@@ -19,16 +20,23 @@ class DepthPyramid {
   // and the points' nearest depths (the float bits of window depths, one uint per pixel, all ones
   // where none).
   void build(GLuint polygon_depth, GLuint point_depths) const;
+  // Or, over a shadow view's image, as a receiver mask: level 0 is 1 where `frame` (the frame's
+  // pyramid, last built) shows a surface through `map_view_projection`, 0 elsewhere, and each
+  // level above the most of the 2 × 2 below; a caster whose rectangle there holds no 1 shadows
+  // nothing the frame shows.
+  void build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection, const glm::mat4& map_view_projection);
   // Binds it for a program that includes depth_pyramid.glsl.
   void bind_for(const gl::Program& program) const;
 
  private:
   void set_levels(const gl::Program& program) const;
+  void reduce() const;  // the levels above 0
   glm::ivec2 size_;
   std::vector<glm::ivec2> sizes_;      // per level
   std::vector<GLuint> offsets_;        // per level, in floats
   gl::Buffer depths_;
   gl::Program base_program_, reduce_program_;
+  std::unique_ptr<gl::Program> clear_marks_program_, marks_program_;  // made when first marking receivers
 };
 
 }  // namespace ecoview

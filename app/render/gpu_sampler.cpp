@@ -38,7 +38,7 @@ constexpr GLuint draws_binding = 1, instances_binding = 2, block_draws_binding =
                  band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24;
 constexpr std::size_t plants_per_group = 1024, threads_per_group = 256;  // shaders/sample_count.comp
 constexpr std::size_t points_per_block = 16;                              // shaders/point_common.glsl
-constexpr std::size_t max_views = 6;                                      // planes[36]
+constexpr std::size_t max_planes = 96;                                    // planes[96]
 
 // Bands: the first ends this far from the eye (metres), each next one this many times as far.
 // Finer bands hide more of what lies behind a near one, at a pyramid and a few passes each.
@@ -61,8 +61,9 @@ GLuint groups_for(std::size_t threads, std::size_t per_group) {
 }  // namespace
 
 std::vector<glm::vec2> GpuSampler::bands(float far) {
+  constexpr int most = 24;  // and the casters' after them
   std::vector<glm::vec2> bands;
-  for (float near = 0.0f, end = first_band_end; static_cast<int>(bands.size()) + 1 < max_bands; near = end, end *= band_ratio) {
+  for (float near = 0.0f, end = first_band_end; static_cast<int>(bands.size()) + 1 < most; near = end, end *= band_ratio) {
     if (near >= far) break;
     bands.emplace_back(near, end);
   }
@@ -168,22 +169,24 @@ void GpuSampler::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_dispatch_binding, band_dispatch_.name());
 }
 
-void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands) {
-  if (view.views.size() > max_views) throw RuntimeFailure("the GPU sampler takes at most 6 views at once");
-  if (bands.empty() || bands.size() > max_bands) throw RuntimeFailure("the GPU sampler takes 1 to 24 bands a frame");
-  bands_used_ = static_cast<int>(bands.size());
-  const GLuint zero = 0;
-  glClearNamedBufferData(counts_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glClearNamedBufferData(totals_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glClearNamedBufferData(commands_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glClearNamedBufferData(band_dispatch_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands,
+                       const std::vector<shadow::Plane>& casters) {
+  if (6 * view.views.size() + casters.size() > max_planes) throw RuntimeFailure("the GPU sampler takes at most 96 planes at once");
+  if (bands.empty() || bands.size() + 1 > max_bands) throw RuntimeFailure("the GPU sampler takes 1 to 31 bands a frame");
+  bands_used_ = static_cast<int>(bands.size() + (casters.empty() ? 0 : 1));
+  casters_band_ = casters.empty() ? std::nullopt : std::optional<int>(static_cast<int>(bands.size()));
+  // The lists are reset by the sort's passes, not by buffer clears: on llvmpipe a clear of the
+  // counts at times landed after the count pass that followed it (counts of the first plants lost,
+  // differently from run to run).
   if (plant_count_ == 0) return;
 
-  const pointgen::ViewFrusta frusta(view.views);
   std::vector<glm::vec4> planes;
+  const pointgen::ViewFrusta frusta(view.views);
   for (const std::array<glm::vec4, 6>& p : frusta.planes()) planes.insert(planes.end(), p.begin(), p.end());
+  for (const shadow::Plane& p : casters) planes.emplace_back(-p.normal, p.offset);  // inside where dot >= 0
   std::vector<float> band_ends;
   for (const glm::vec2& band : bands) band_ends.push_back(band.y);
+  if (casters_band_) band_ends.push_back(INFINITY);
   const GLuint keys = keys_program_.name();
   glProgramUniform4fv(keys, glGetUniformLocation(keys, "planes"), static_cast<GLsizei>(planes.size()), &planes.front().x);
   glProgramUniform1fv(keys, glGetUniformLocation(keys, "band_ends"), static_cast<GLsizei>(band_ends.size()), band_ends.data());
@@ -195,12 +198,13 @@ void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm:
   gl::set_uniform(count_program_, "k", view.density.k);
   gl::set_uniform(count_program_, "points_per_triangle", view.points_per_triangle);
   gl::set_uniform(keys_program_, "view_count", static_cast<unsigned>(view.views.size()));
+  gl::set_uniform(keys_program_, "caster_plane_count", static_cast<unsigned>(casters.size()));
   gl::set_uniform(keys_program_, "eye", view.eye);
 
   // The stable counting sort of the plants in view into bands (shaders/sample_bins.comp).
   bind();
   const auto plants = static_cast<unsigned>(plant_count_), groups = static_cast<unsigned>(group_count_);
-  const auto band_count = static_cast<unsigned>(bands.size());
+  const auto band_count = static_cast<unsigned>(bands_used_);
   for (const gl::Program* program : {&keys_program_, &bin_count_program_, &bands_program_, &place_program_}) {
     gl::set_uniform(*program, "plant_count", plants);
     gl::set_uniform(*program, "group_count", groups);
@@ -219,6 +223,18 @@ void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm:
   glUseProgram(place_program_.name());
   glDispatchCompute(groups_for(group_count_, 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+}
+
+void GpuSampler::add_casters(const glm::mat4& map_view, float texels, const DepthPyramid& receivers) {
+  if (!casters_band_) return;
+  gl::set_uniform(count_program_, "cap_to_map", 1);
+  gl::set_uniform(count_program_, "receivers_only", 1);
+  gl::set_uniform(count_program_, "map_view_projection", map_view);
+  gl::set_uniform(count_program_, "map_texels", texels);
+  receivers.bind_for(count_program_);
+  add_band(*casters_band_, nullptr);
+  gl::set_uniform(count_program_, "cap_to_map", 0);
+  gl::set_uniform(count_program_, "receivers_only", 0);
 }
 
 void GpuSampler::add_band(int band, const DepthPyramid* occluders) {

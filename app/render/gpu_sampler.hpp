@@ -4,7 +4,9 @@
 #include "app/render/point_samples.hpp"
 #include "app/render/point_splat.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
+#include "shadow/plane.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace ecoview {
@@ -27,7 +29,7 @@ class GpuSampler {
   // The distance bands for a view whose far plane is `far` metres away: the first to
   // first_band_end, each next one `band_ratio` times as far, the last to infinity.
   static std::vector<glm::vec2> bands(float far);
-  static constexpr int max_bands = 24;
+  static constexpr int max_bands = 32;
 
   // Moves a table's plants (posed people, animals, vehicles): their transforms and tints alone
   // cross the bus. `table` has as many instances as at load.
@@ -35,11 +37,24 @@ class GpuSampler {
 
   // Starts a frame's lists for the view, and sorts the plants in its frusta into the bands (from
   // bands()): the view's frusta, eye, density and point cost are used; its occlusion, cap and
-  // receivers are not.
-  void begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands);
+  // receivers are not. With `casters` (the planes of a convex body, normals out: all that may
+  // shadow what the view sees), the plants in it but outside the view's frusta are a band of their
+  // own after the others, the casters', counted as the view's density asks (their shadows are seen
+  // in it).
+  void begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands,
+             const std::vector<shadow::Plane>& casters = {});
+  // The bands of this frame, the casters' among them.
+  int band_count() const { return bands_used_; }
+  // The number of the casters' band in this frame; none without caster views.
+  std::optional<int> casters_band() const { return casters_band_; }
   // Adds the plants of a band (numbered from 0, nearest first); hidden ones are left out where
   // `occluders` is given (built over the first view's image).
   void add_band(int band, const DepthPyramid* occluders);
+  // The casters' band, counted for a shadow map of `texels` texels through `map_view` (its first
+  // view's world → clip matrix): only plants whose boxes cover a receiver in `receivers` (a mask
+  // over that view's image, DepthPyramid::build_receivers), none with more points than k per
+  // texel it covers there.
+  void add_casters(const glm::mat4& map_view, float texels, const DepthPyramid& receivers);
   // One band holding every plant, without occlusion.
   void sample(const pointgen::SamplerView& view);
 
@@ -72,6 +87,7 @@ class GpuSampler {
   std::size_t group_count_ = 0;
   std::size_t point_capacity_ = 0;  // points the draw list has room for
   int bands_used_ = 0;
+  std::optional<int> casters_band_;
   std::vector<std::uint32_t> first_plant_;
   std::vector<int> command_of_table_;  // per table, its place among the tables of plants; -1 none
   std::vector<std::size_t> triangles_of_command_;  // per place, the mesh's triangles

@@ -90,13 +90,13 @@ void GpuScene::attach(const GpuSampler& sampler) {
   }
 }
 
-void GpuScene::draw_chosen(const GpuSampler& sampler, int band) const {
+void GpuScene::draw_chosen(const GpuSampler& sampler, int band, GLenum mode) const {
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, sampler.polygon_commands());
   for (std::size_t group = 0; group < groups_.size(); ++group) {
     const long offset = sampler.command_offset(group, band);
     if (offset < 0 || !groups_[group].chosen_vertex_array) continue;
     glBindVertexArray(groups_[group].chosen_vertex_array->name());
-    glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(offset)));
+    glDrawElementsIndirect(mode, GL_UNSIGNED_INT, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(offset)));
   }
   glBindVertexArray(0);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);

@@ -27,8 +27,8 @@ class GpuScene {
   // Draws, from the next frame on, the plants of point meshes a GpuSampler chooses as polygons
   // with draw_chosen (its instances, in GpuScene's layout, and its indirect draws).
   void attach(const GpuSampler& sampler);
-  // The plants a band of the attached sampler chose as polygons (GL_TRIANGLES).
-  void draw_chosen(const GpuSampler& sampler, int band) const;
+  // The plants a band of the attached sampler chose as polygons; `mode` as for draw().
+  void draw_chosen(const GpuSampler& sampler, int band, GLenum mode = GL_TRIANGLES) const;
 
  private:
   struct Range {

@@ -128,9 +128,23 @@ class Renderer {
   // The exact reference in place of a map: the mask from ExactVisibility.
   FramePass::ShadowLookup render_reference_mask(const shadow::Camera& camera, const shadow::Light& light);
   ExactVisibility& exact();
+  // A frame whose plants the CPU's view sampler chooses, for the frame and for each shadow view;
+  // or, with the GPU sampler, one without a shadow map. Returns what the frame drew.
+  pointgen::SampledFrame draw_sampled_on_cpu(const shadow::Camera& camera, const shadow::Light& light, bool shadows);
+  // A frame with a shadow map whose plants the GPU sampler chooses once, for the camera: the frame's
+  // surfaces first, then the map from the same plants (and the casters out of view), then the
+  // frame's lighting.
+  pointgen::SampledFrame draw_sampled_on_gpu(const shadow::Camera& camera, const shadow::Light& light);
+  // The GPU sampler's points and triangles, read back.
+  void add_gpu_choice(pointgen::SampledFrame& selection) const;
   // The frame's plants chosen on the GPU band by band, nearest first: each band's polygons and
-  // points drawn into the frame before the next band is culled against them.
-  void sample_on_gpu(const shadow::Camera& camera);
+  // points drawn into the frame before the next band is culled against them; then the plants in
+  // the casters' body (planes, normals out) that the frame does not show, for the shadow map.
+  void sample_on_gpu(const shadow::Camera& camera, const std::vector<shadow::Plane>& casters);
+  // The frame's surfaces: polygons, and with points their nearest depths (the splat's pass 1).
+  void draw_surfaces(const shadow::Camera& camera, const std::vector<shadow::Plane>& casters);
+  // Then the points' surfaces and the lighting.
+  void finish_frame(const shadow::Camera& camera, const shadow::Light& light, const std::optional<FramePass::ShadowLookup>& lookup);
   // The frame pass proper: polygons, then the point splats.
   void draw_frame(const shadow::Camera& camera, const shadow::Light& light, const std::optional<FramePass::ShadowLookup>& lookup);
   // With every plant as polygons (no points): the instances of point meshes the frusta hold, culled
@@ -152,6 +166,7 @@ class Renderer {
   PointSplat frame_points_;
   std::unique_ptr<GpuSampler> gpu_sampler_;  // --sampler gpu
   std::unique_ptr<DepthPyramid> occluders_;  // over the frame, for gpu_sampler_
+  std::unique_ptr<DepthPyramid> receivers_;  // over the first shadow view: the frame's receivers
   std::unique_ptr<PointSplat> shadow_points_;  // made with the first shadow map that needs it
   std::unique_ptr<ShadowVolumePass> volume_pass_;  // --method volumes
   std::unique_ptr<ExactVisibility> exact_;          // made when first asked for

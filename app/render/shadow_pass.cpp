@@ -1,6 +1,7 @@
 #include "app/render/shadow_pass.hpp"
 
 #include "app/gl/shader_program.hpp"
+#include "app/render/gpu_sampler.hpp"
 
 namespace ecoview {
 namespace {
@@ -9,6 +10,11 @@ namespace {
 // removes acne on surfaces the light grazes; the units add a few depth steps everywhere.
 constexpr float offset_factor = 2.0f;
 constexpr float offset_units = 4.0f;
+
+void draw_chosen(const GpuScene& scene, const GpuSampler* chosen, GLenum mode) {
+  if (!chosen) return;
+  for (int band = 0; band < chosen->band_count(); ++band) scene.draw_chosen(*chosen, band, mode);
+}
 
 }  // namespace
 
@@ -39,7 +45,7 @@ void ShadowPass::allocate(int layers) {
   glNamedFramebufferReadBuffer(framebuffer_.name(), GL_NONE);
 }
 
-void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer) {
+void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const GpuSampler* chosen) {
   if (static_cast<int>(setup.views.size()) > layers_) allocate(static_cast<int>(setup.views.size()));
   const GLuint fb = framebuffer_.name();
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
@@ -60,11 +66,13 @@ void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup,
     glPatchParameteri(GL_PATCH_VERTICES, 3);
     glEnable(GL_CLIP_DISTANCE0);
     scene.draw(GL_PATCHES);
+    draw_chosen(scene, chosen, GL_PATCHES);
     glDisable(GL_CLIP_DISTANCE0);
   } else {
     glUseProgram(program_.name());
     gl::set_uniform(program_, "light_view_projection", view.view_projection());
     scene.draw();
+    draw_chosen(scene, chosen, GL_TRIANGLES);
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
 }

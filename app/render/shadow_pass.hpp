@@ -6,6 +6,8 @@
 
 namespace ecoview {
 
+class GpuSampler;
+
 // Renders the scene's depth as the light sees it, one layer of a square depth-texture array per
 // view of the shadow setup, set up for hardware depth comparison (sampler2DArrayShadow, bilinear
 // PCF), with slope-scaled polygon offset against acne. Paraboloid views tessellate the scene.
@@ -13,7 +15,8 @@ class ShadowPass {
  public:
   explicit ShadowPass(int size);
   // Draws one view of the setup into its layer.
-  void render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer);
+  // With `chosen`, also the plants every band of that sampler chose as polygons this frame.
+  void render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const GpuSampler* chosen = nullptr);
   GLuint depth_texture() const { return depth_.name(); }
   // One layer's depths, window depth 0 (near) to 1 (far), rows from the top.
   Image<float> read_layer(int layer) const;

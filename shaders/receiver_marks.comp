@@ -1,0 +1,35 @@
+#version 450 core
+// Marks, in level 0 of a max pyramid over a shadow view's image (depth_pyramid.glsl), the texels
+// where the frame shows a surface: 1 there, 0 elsewhere; with CLEAR the zeros alone. The frame's
+// surfaces are its nearest window depths, level 0 of the frame's own depth pyramid (binding 25).
+#define PYRAMID_WRITTEN
+#include "depth_pyramid.glsl"
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#ifdef CLEAR
+void main() {
+  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+  if (all(lessThan(texel, pyramid_size[0]))) pyramid[pyramid_offset[0] + uint(texel.y * pyramid_size[0].x + texel.x)] = 0.0;
+}
+#else
+layout(std430, binding = 25) readonly buffer FrameDepths { float frame_depths[]; };  // the frame's level 0
+uniform ivec2 frame_size;
+uniform int pixel_step;         // every this many pixels each way
+uniform mat4 frame_to_world;    // inverse of the frame's view-projection
+uniform mat4 map_view_projection;
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pixel_step;
+  if (any(greaterThanEqual(pixel, frame_size))) return;
+  float depth = frame_depths[pixel.y * frame_size.x + pixel.x];
+  if (!(depth < 1.0)) return;  // nothing drawn there
+  vec2 ndc = (vec2(pixel) + 0.5) / vec2(frame_size) * 2.0 - 1.0;
+  vec4 world = frame_to_world * vec4(ndc, depth * 2.0 - 1.0, 1.0);
+  vec4 clip = map_view_projection * vec4(world.xyz / world.w, 1.0);
+  if (!(clip.w > 0.0)) return;
+  vec2 map = clip.xy / clip.w;
+  if (any(greaterThan(abs(map), vec2(1.0)))) return;
+  ivec2 texel = min(ivec2((map * 0.5 + 0.5) * vec2(pyramid_size[0])), pyramid_size[0] - 1);
+  pyramid[pyramid_offset[0] + uint(texel.y * pyramid_size[0].x + texel.x)] = 1.0;
+}
+#endif
