@@ -5,7 +5,8 @@
 #include "sample_common.glsl"
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 18) readonly buffer Tables { uvec4 tables[]; };  // first plant, end, index count, 0
+// Per table of plants: (first plant, end, 0, 0), then (index count, first index, base vertex, 0).
+layout(std430, binding = 18) readonly buffer Tables { uvec4 tables[]; };
 layout(std430, binding = 19) writeonly buffer Commands { uint commands[]; };
 uniform uint table_count;
 
@@ -27,13 +28,13 @@ uint polygons_before(uvec2 band, uint place) {
 void main() {
   uint t = gl_GlobalInvocationID.x;
   if (t >= table_count) return;
-  uvec4 table = tables[t];
+  uvec4 plants = tables[2u * t], mesh = tables[2u * t + 1u];
   uvec2 band = this_band();
-  uint first = polygons_before(band, place_of(band, table.x)), end = polygons_before(band, place_of(band, table.y));
+  uint first = polygons_before(band, place_of(band, plants.x)), end = polygons_before(band, place_of(band, plants.y));
   uint at = 5u * ((band_number - 1u) * table_count + t);
-  commands[at] = table.z;
+  commands[at] = mesh.x;
   commands[at + 1u] = end - first;
-  commands[at + 2u] = 0u;
-  commands[at + 3u] = 0u;
+  commands[at + 2u] = mesh.y;
+  commands[at + 3u] = mesh.z;
   commands[at + 4u] = first;
 }

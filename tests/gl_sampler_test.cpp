@@ -78,7 +78,7 @@ TEST_F(GpuSampling, ChoosesAsTheCpuSamplerDoesWithoutOcclusion) {
   ASSERT_GT(cpu.point_count, 100000u);
   ASSERT_GT(cpu.triangle_count, 0u);
 
-  GpuSampler gpu(scene.groups, samples);
+  GpuSampler gpu(scene.groups, samples, GpuScene(scene).point_mesh_places());
   gpu.sample(view());
   const std::vector<glm::uvec2> counts = gpu.read_counts();
   ASSERT_EQ(counts.size(), scene.groups[0].size() + scene.groups[1].size());
@@ -103,7 +103,7 @@ TEST_F(GpuSampling, ChoosesAsTheCpuSamplerDoesWithoutOcclusion) {
 }
 
 TEST_F(GpuSampling, WritesTheDrawsInPlantOrderWithoutGaps) {
-  GpuSampler gpu(scene.groups, samples);
+  GpuSampler gpu(scene.groups, samples, GpuScene(scene).point_mesh_places());
   gpu.sample(view());
   const std::vector<glm::uvec2> counts = gpu.read_counts();
   const std::vector<glm::uvec4> draws = gpu.read_draws();

@@ -70,7 +70,7 @@ void FramePass::draw_surfaces(const GpuScene& scene, const shadow::Camera& camer
 
 void FramePass::add_chosen_surfaces(const GpuScene& scene, const GpuSampler& sampler, int band, const shadow::Camera& camera) const {
   start_surfaces(camera);
-  scene.draw_chosen(sampler, band);
+  scene.draw_chosen(sampler, band, band + 1);
 }
 
 void FramePass::start_surfaces(const shadow::Camera& camera) const {

@@ -71,7 +71,8 @@ std::vector<glm::vec2> GpuSampler::bands(float far) {
   return bands;
 }
 
-GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const PointSamples& samples)
+GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const PointSamples& samples,
+                       const std::vector<GpuScene::DrawPlace>& places)
     : keys_program_(gl::build_program({"sample_bins.comp"}, "#define KEYS\n")),
       bin_count_program_(gl::build_program({"sample_bins.comp"}, "#define COUNT\n")),
       bands_program_(gl::build_program({"sample_bands.comp"})),
@@ -83,23 +84,22 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   const std::vector<pointgen::SampledMesh>& meshes = samples.meshes();
   std::vector<GpuInstance> instances;
   std::vector<glm::uvec2> plant_meshes;
-  std::vector<glm::uvec4> table_ranges;
+  std::vector<glm::uvec4> table_ranges;  // per table of plants: first plant, end, then (sample_commands.comp)
   std::size_t most_points = 0;  // the draw list's points if every plant took its whole list
   for (const pointgen::InstanceTable& table : tables) {
     first_plant_.push_back(static_cast<std::uint32_t>(instances.size()));
     const pointgen::SampledMesh& mesh = meshes[table.mesh];
-    if (mesh.samples == 0 || table.size() == 0) {
-      command_of_table_.push_back(-1);
-      continue;
-    }
-    command_of_table_.push_back(static_cast<int>(table_ranges.size()));
+    holds_plants_.push_back(mesh.samples > 0 && table.size() > 0);
+    if (!holds_plants_.back()) continue;
     triangles_of_command_.push_back(mesh.triangles);
     const auto first = static_cast<std::uint32_t>(instances.size());
     for (std::size_t i = 0; i < table.size(); ++i) {
       instances.push_back({table.transforms[i], glm::vec4(table.tints[i], 1.0f)});
       plant_meshes.emplace_back(static_cast<std::uint32_t>(table.mesh), glm::floatBitsToUint(rounding(table, i)));
     }
-    table_ranges.emplace_back(first, static_cast<std::uint32_t>(instances.size()), static_cast<std::uint32_t>(3 * mesh.triangles), 0u);
+    table_ranges.emplace_back(first, static_cast<std::uint32_t>(instances.size()), 0u, 0u);
+    table_ranges.emplace_back(static_cast<std::uint32_t>(3 * mesh.triangles), places[table.mesh].first_index,
+                              static_cast<std::uint32_t>(places[table.mesh].base_vertex), 0u);
     most_points += table.size() * mesh.samples;
   }
   std::vector<GpuMesh> gpu_meshes;
@@ -130,7 +130,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<GLuint>(block_draws_, (point_capacity_ + points_per_block - 1) / points_per_block);
   storage<GpuTotals>(totals_, 1);
   storage<PolygonInstance>(polygon_instances_, plant_count_);
-  storage<GLuint>(commands_, command_uints * max_bands * std::max<std::size_t>(table_ranges.size(), 1));
+  storage<GLuint>(commands_, command_uints * max_bands * std::max<std::size_t>(triangles_of_command_.size(), 1));
   storage<GLuint>(band_keys_, plant_count_);
   storage<GLuint>(group_bands_, group_count_ * max_bands);
   storage<GLuint>(band_list_, plant_count_);
@@ -139,7 +139,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
 }
 
 void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed) {
-  if (command_of_table_[table] < 0) return;
+  if (!holds_plants_[table]) return;
   const std::size_t end = table + 1 < first_plant_.size() ? first_plant_[table + 1] : plant_count_;
   if (posed.size() != end - first_plant_[table]) throw RuntimeFailure("a posed table changed its number of instances");
   std::vector<GpuInstance> instances;
@@ -282,12 +282,6 @@ PointDrawList GpuSampler::draw_list() const {
   return {draws_.name(), instances_.name(), block_draws_.name(), totals_.name(), point_capacity_};
 }
 
-long GpuSampler::command_offset(std::size_t table, int band) const {
-  const int place = command_of_table_[table];
-  if (place < 0) return -1;
-  return static_cast<long>(((static_cast<std::size_t>(band) * triangles_of_command_.size()) + static_cast<std::size_t>(place)) *
-                           command_uints * sizeof(GLuint));
-}
 
 std::vector<glm::uvec2> GpuSampler::read_counts() const {
   std::vector<glm::uvec4> counts(plant_count_);

@@ -1,6 +1,7 @@
 #pragma once
 #include "app/gl/gl_objects.hpp"
 #include "app/render/depth_pyramid.hpp"
+#include "app/render/gpu_scene.hpp"
 #include "app/render/point_samples.hpp"
 #include "app/render/point_splat.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
@@ -23,8 +24,9 @@ namespace ecoview {
 class GpuSampler {
  public:
   // `tables` are the scene's groups; those of point meshes (`samples` has lists for them) become
-  // plants, in table order.
-  GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const PointSamples& samples);
+  // plants, in table order. `places`: where each mesh's triangles lie for the polygon draws.
+  GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const PointSamples& samples,
+             const std::vector<GpuScene::DrawPlace>& places);
 
   // The distance bands for a view whose far plane is `far` metres away: the first to
   // first_band_end, each next one `band_ratio` times as far, the last to infinity.
@@ -64,8 +66,9 @@ class GpuSampler {
   // DrawElementsIndirectCommand per table of point meshes.
   GLuint polygon_instances() const { return polygon_instances_.name(); }
   GLuint polygon_commands() const { return commands_.name(); }
-  // The byte offset of a table's command for a band; -1 for a table that holds no plants.
-  long command_offset(std::size_t table, int band) const;
+  // The byte offset of a band's commands, one per table of plants, band after band.
+  std::size_t commands_offset(int band) const { return static_cast<std::size_t>(band) * triangles_of_command_.size() * command_bytes; }
+  static constexpr std::size_t command_bytes = 5 * sizeof(GLuint);  // DrawElementsIndirectCommand
 
   std::size_t plant_count() const { return plant_count_; }
   // The plant index of a table's first instance.
@@ -89,7 +92,7 @@ class GpuSampler {
   int bands_used_ = 0;
   std::optional<int> casters_band_;
   std::vector<std::uint32_t> first_plant_;
-  std::vector<int> command_of_table_;  // per table, its place among the tables of plants; -1 none
+  std::vector<bool> holds_plants_;  // per table
   std::vector<std::size_t> triangles_of_command_;  // per place, the mesh's triangles
   gl::Buffer instances_, plant_meshes_, meshes_, counts_, offsets_, group_sums_, draws_, block_draws_, totals_;
   gl::Buffer polygon_instances_, tables_, commands_;

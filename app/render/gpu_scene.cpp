@@ -46,11 +46,17 @@ GpuScene::GpuScene(const Scene& scene) {
     }
     Mesh& m = meshes_.emplace_back();
     gl::store(m.vertices, vertices);
+    m.vertex_count = static_cast<GLsizei>(vertices.size());
     m.index_count = static_cast<GLsizei>(mesh.indices.size());
+    places_.emplace_back();
     if (!scene.point_meshes[i]) {
       gl::store(m.indices, mesh.indices);
       continue;
     }
+    m.point_mesh = true;
+    places_.back() = {static_cast<GLuint>(point_mesh_indices_), point_mesh_vertices_};
+    point_mesh_indices_ += m.index_count;
+    point_mesh_vertices_ += m.vertex_count;
     // In the order of the parts the sampler chooses from (PointSamples makes the same split).
     const pointgen::TriangleSplit split = pointgen::split_triangles(mesh);
     gl::store(m.indices, split.indices);
@@ -66,15 +72,15 @@ GpuScene::GpuScene(const Scene& scene) {
     g.whole = {0, g.instance_count};
     g.capacity = instances.size();
 
-    set_attributes(g.vertex_array.name(), mesh, g.instances.name());
+    set_attributes(g.vertex_array.name(), mesh.vertices.name(), mesh.indices.name(), g.instances.name());
   }
 }
 
-void GpuScene::set_attributes(GLuint vao, const Mesh& mesh, GLuint instances) {
-  glVertexArrayVertexBuffer(vao, 0, mesh.vertices.name(), 0, sizeof(Vertex));
+void GpuScene::set_attributes(GLuint vao, GLuint vertices, GLuint indices, GLuint instances) {
+  glVertexArrayVertexBuffer(vao, 0, vertices, 0, sizeof(Vertex));
   glVertexArrayVertexBuffer(vao, 1, instances, 0, sizeof(Instance));
   glVertexArrayBindingDivisor(vao, 1, 1);
-  glVertexArrayElementBuffer(vao, mesh.indices.name());
+  glVertexArrayElementBuffer(vao, indices);
   attribute(vao, 0, 0, 3, offsetof(Vertex, position));
   attribute(vao, 1, 0, 3, offsetof(Vertex, normal));
   attribute(vao, 2, 0, 3, offsetof(Vertex, color));
@@ -84,20 +90,29 @@ void GpuScene::set_attributes(GLuint vao, const Mesh& mesh, GLuint instances) {
 }
 
 void GpuScene::attach(const GpuSampler& sampler) {
-  for (Group& g : groups_) {
-    g.chosen_vertex_array = std::make_unique<gl::VertexArray>();
-    set_attributes(g.chosen_vertex_array->name(), meshes_[g.mesh], sampler.polygon_instances());
+  chosen_ = std::make_unique<Chosen>();
+  glNamedBufferStorage(chosen_->vertices.name(), static_cast<GLsizeiptr>(std::max(point_mesh_vertices_, 1)) * sizeof(Vertex), nullptr, 0);
+  glNamedBufferStorage(chosen_->indices.name(), static_cast<GLsizeiptr>(std::max(point_mesh_indices_, 1)) * sizeof(GLuint), nullptr, 0);
+  for (std::size_t m = 0; m < meshes_.size(); ++m) {
+    if (!meshes_[m].point_mesh) continue;
+    glCopyNamedBufferSubData(meshes_[m].vertices.name(), chosen_->vertices.name(), 0,
+                             static_cast<GLintptr>(places_[m].base_vertex) * static_cast<GLintptr>(sizeof(Vertex)),
+                             static_cast<GLsizeiptr>(meshes_[m].vertex_count) * static_cast<GLsizeiptr>(sizeof(Vertex)));
+    glCopyNamedBufferSubData(meshes_[m].indices.name(), chosen_->indices.name(), 0,
+                             static_cast<GLintptr>(places_[m].first_index) * static_cast<GLintptr>(sizeof(GLuint)),
+                             static_cast<GLsizeiptr>(meshes_[m].index_count) * static_cast<GLsizeiptr>(sizeof(GLuint)));
   }
+  set_attributes(chosen_->vertex_array.name(), chosen_->vertices.name(), chosen_->indices.name(), sampler.polygon_instances());
 }
 
-void GpuScene::draw_chosen(const GpuSampler& sampler, int band, GLenum mode) const {
+void GpuScene::draw_chosen(const GpuSampler& sampler, int first, int end, GLenum mode) const {
+  if (!chosen_ || end <= first) return;
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, sampler.polygon_commands());
-  for (std::size_t group = 0; group < groups_.size(); ++group) {
-    const long offset = sampler.command_offset(group, band);
-    if (offset < 0 || !groups_[group].chosen_vertex_array) continue;
-    glBindVertexArray(groups_[group].chosen_vertex_array->name());
-    glDrawElementsIndirect(mode, GL_UNSIGNED_INT, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(offset)));
-  }
+  glBindVertexArray(chosen_->vertex_array.name());
+  glMultiDrawElementsIndirect(mode, GL_UNSIGNED_INT, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(sampler.commands_offset(first))),
+                              static_cast<GLsizei>(sampler.commands_offset(end) - sampler.commands_offset(first)) /
+                                  static_cast<GLsizei>(GpuSampler::command_bytes),
+                              0);
   glBindVertexArray(0);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }

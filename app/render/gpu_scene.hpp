@@ -24,11 +24,19 @@ class GpuScene {
   // group: posed moving objects, or the subset a pass draws as polygons. `parts`, for a point
   // mesh's group, has for each instance the polygon parts to draw, a bit each; none: all.
   void update(std::size_t group, const pointgen::InstanceTable& table, const std::vector<std::uint64_t>& parts = {});
+  // Where each point mesh lies in the one vertex and index buffer the GPU sampler's polygon plants
+  // are drawn from (zeros for other meshes): its first index and base vertex.
+  struct DrawPlace {
+    GLuint first_index = 0;
+    GLint base_vertex = 0;
+  };
+  const std::vector<DrawPlace>& point_mesh_places() const { return places_; }
   // Draws, from the next frame on, the plants of point meshes a GpuSampler chooses as polygons
   // with draw_chosen (its instances, in GpuScene's layout, and its indirect draws).
   void attach(const GpuSampler& sampler);
-  // The plants a band of the attached sampler chose as polygons; `mode` as for draw().
-  void draw_chosen(const GpuSampler& sampler, int band, GLenum mode = GL_TRIANGLES) const;
+  // The plants bands `first` to `end` - 1 of the attached sampler chose as polygons, in one
+  // indirect multi-draw; `mode` as for draw().
+  void draw_chosen(const GpuSampler& sampler, int first, int end, GLenum mode = GL_TRIANGLES) const;
 
  private:
   struct Range {
@@ -38,7 +46,8 @@ class GpuScene {
   struct Mesh {
     gl::Buffer vertices;
     gl::Buffer indices;
-    GLsizei index_count = 0;
+    GLsizei vertex_count = 0, index_count = 0;
+    bool point_mesh = false;
     std::vector<Range> parts;  // index ranges of its polygon parts (point meshes)
   };
   struct Group {
@@ -51,12 +60,19 @@ class GpuScene {
     Range whole;
     std::vector<Range> part_instances;
     std::size_t capacity = 0;
-    std::unique_ptr<gl::VertexArray> chosen_vertex_array;  // over the attached sampler's polygon plants
   };
-  static void set_attributes(GLuint vertex_array, const Mesh& mesh, GLuint instances);
+  static void set_attributes(GLuint vertex_array, GLuint vertices, GLuint indices, GLuint instances);
   void reserve(Group& group, std::size_t instances);
   std::vector<Mesh> meshes_;
   std::vector<Group> groups_;
+  std::vector<DrawPlace> places_;
+  GLsizei point_mesh_vertices_ = 0, point_mesh_indices_ = 0;  // in all point meshes
+  // The point meshes in one buffer each, over the attached sampler's polygon plants (attach).
+  struct Chosen {
+    gl::Buffer vertices, indices;
+    gl::VertexArray vertex_array;
+  };
+  std::unique_ptr<Chosen> chosen_;
 };
 
 }  // namespace ecoview

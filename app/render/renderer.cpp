@@ -130,7 +130,7 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
     }
   }
   if (settings.points && settings.gpu_sampler && settings.measure == RenderSettings::Measure::off) {
-    gpu_sampler_ = std::make_unique<GpuSampler>(tables_, samples_);
+    gpu_sampler_ = std::make_unique<GpuSampler>(tables_, samples_, gpu_scene_.point_mesh_places());
     occluders_ = std::make_unique<DepthPyramid>(glm::ivec2(settings.width, settings.height));
     receivers_ = std::make_unique<DepthPyramid>(glm::ivec2(receiver_mask_size));
     gpu_scene_.attach(*gpu_sampler_);

@@ -12,8 +12,7 @@ constexpr float offset_factor = 2.0f;
 constexpr float offset_units = 4.0f;
 
 void draw_chosen(const GpuScene& scene, const GpuSampler* chosen, GLenum mode) {
-  if (!chosen) return;
-  for (int band = 0; band < chosen->band_count(); ++band) scene.draw_chosen(*chosen, band, mode);
+  if (chosen) scene.draw_chosen(*chosen, 0, chosen->band_count(), mode);
 }
 
 }  // namespace
