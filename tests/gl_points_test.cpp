@@ -2,6 +2,7 @@
 // the polygons cover, and stand where they stand.
 #include "app/bench/density_figures.hpp"
 #include "app/gl/context.hpp"
+#include "depth_coverage.hpp"
 #include "app/render/renderer.hpp"
 #include "app/scene/scene_file.hpp"
 
@@ -25,21 +26,6 @@ std::string grove(int nearest = 40, const std::string& species = "beech") {
   }
   s << "]}]}";
   return s.str();
-}
-
-struct Coverage {
-  std::size_t polygons = 0, points = 0, both = 0;
-};
-
-Coverage compare(const Image<float>& polygon_depth, const Image<float>& point_depth) {
-  Coverage c;
-  for (std::size_t i = 0; i < polygon_depth.samples.size(); ++i) {
-    const bool a = polygon_depth.samples[i] >= 0.0f, b = point_depth.samples[i] >= 0.0f;
-    c.polygons += a;
-    c.points += b;
-    c.both += a && b;
-  }
-  return c;
 }
 
 // The grove rendered at the default density as polygons and as points.

@@ -1,6 +1,7 @@
 // The GPU sampler against the CPU sampler (its oracle) without occlusion: the same plants culled,
 // the same counts, the same choice of points or polygons, and a draw list a point splat can read.
 #include "app/gl/context.hpp"
+#include "depth_coverage.hpp"
 #include "app/render/gpu_sampler.hpp"
 #include "app/render/renderer.hpp"
 #include "app/scene/scene_file.hpp"
@@ -122,22 +123,6 @@ TEST_F(GpuSampling, WritesTheDrawsInPlantOrderWithoutGaps) {
     first_point += d.y;
   }
   EXPECT_EQ(next, draws.size());
-}
-
-// Depth images of the same plants drawn as polygons and by the GPU sampler.
-struct Coverage {
-  std::size_t polygons = 0, points = 0, both = 0;
-};
-
-Coverage compare(const Image<float>& polygon_depth, const Image<float>& point_depth) {
-  Coverage c;
-  for (std::size_t i = 0; i < polygon_depth.samples.size(); ++i) {
-    const bool a = polygon_depth.samples[i] >= 0.0f, b = point_depth.samples[i] >= 0.0f;
-    c.polygons += a;
-    c.points += b;
-    c.both += a && b;
-  }
-  return c;
 }
 
 TEST_F(GpuSampling, ItsFrameCoversWhatThePolygonsCover) {
