@@ -560,5 +560,4 @@ void Renderer::add_gpu_choice(pointgen::SampledFrame& selection) const {
   selection.triangle_count = chosen.triangles;
 }
 
-
 }  // namespace ecoview
