@@ -1,8 +1,8 @@
 #!/bin/sh
 # The GPU check: the ecosystem's camera path at 1920x1080 with a 2048² perspective shadow map,
-# headless through EGL (the device platform on an NVIDIA driver), and the medians of its frame,
-# pass and host times after 3 warm-up frames. Frame 0's colour and shadow images are kept, to hold
-# against the same frame rendered on llvmpipe.
+# headless through EGL (the device platform on an NVIDIA driver), with each sampler (cpu, gpu),
+# and the medians of its frame, pass and host times after 3 warm-up frames. Frame 0's colour and
+# shadow images are kept, to hold against the same frame rendered on llvmpipe.
 #
 #   gpu_check.sh [OUT] [FRAMES]   (default OUT gpu_check, FRAMES 40)
 #
@@ -24,33 +24,35 @@ if [ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}" ] && ! ls /usr/share/glvnd/egl_ven
 fi
 
 mkdir -p "$out"
-"$ecoview" capture --scene ecosystem --path ecosystem --size 1920x1080 --shadow-size 2048 --method psm \
-  --frames "0:$frames" --aov color --stats "$out/stats.json" --out "$out/frames" --force
-"$ecoview" capture --scene ecosystem --path ecosystem --size 1920x1080 --shadow-size 2048 --method psm \
-  --frames 0:1 --aov color,shadow --out "$out/frame0" --force >/dev/null
+for sampler in cpu gpu; do
+  "$ecoview" capture --scene ecosystem --path ecosystem --size 1920x1080 --shadow-size 2048 --method psm \
+    --sampler "$sampler" --frames "0:$frames" --aov color --stats "$out/stats_$sampler.json" --out "$out/frames_$sampler" --force
+  "$ecoview" capture --scene ecosystem --path ecosystem --size 1920x1080 --shadow-size 2048 --method psm \
+    --sampler "$sampler" --frames 0:1 --aov color,shadow --out "$out/frame0_$sampler" --force >/dev/null
 
-# The stats file has one "key": value per line (ecoview writes it so).
-awk -v warmup="$warmup" -v frames="$frames" '
-  function median(key,   n, i, j, t, v) {
-    n = count[key]
-    for (i = 1; i <= n; ++i) v[i] = values[key, i]
-    for (i = 2; i <= n; ++i) { t = v[i]; for (j = i - 1; j >= 1 && v[j] > t; --j) v[j + 1] = v[j]; v[j + 1] = t }
-    return n == 0 ? 0 : (n % 2 ? v[(n + 1) / 2] : (v[n / 2] + v[n / 2 + 1]) / 2)
-  }
-  /"frame":/ { gsub(/[ ",]/, ""); split($0, kv, ":"); frame = kv[2] }
-  /"(render_ms|host_ms|sample_ms|shadow_pass_ms|frame_pass_ms|points|shadow_points)":/ {
-    line = $0; gsub(/[ ",]/, "", line); split(line, kv, ":"); key = kv[1]; value = kv[2]
-    pending[key] = value
-  }
-  /^  }/ {
-    if (frame >= warmup) for (key in pending) values[key, ++count[key]] = pending[key]
-    delete pending
-  }
-  END {
-    render = median("render_ms")
-    printf "gpu_check: ecosystem path, 1920x1080, psm 2048, medians of frames %d to %d\n", warmup, frames - 1
-    printf "  frame %.1f ms (%.1f fps), host %.1f ms, sampling %.1f ms, shadow pass %.1f ms, frame pass %.1f ms\n",
-      render, (render > 0 ? 1000 / render : 0), median("host_ms"), median("sample_ms"), median("shadow_pass_ms"), median("frame_pass_ms")
-    printf "  points %.0f, shadow points %.0f\n", median("points"), median("shadow_points")
-  }' "$out/stats.json"
-echo "gpu_check: frame 0 for the llvmpipe comparison in $out/frame0"
+  # The stats file has one "key": value per line (ecoview writes it so).
+  awk -v warmup="$warmup" -v frames="$frames" -v sampler="$sampler" '
+    function median(key,   n, i, j, t, v) {
+      n = count[key]
+      for (i = 1; i <= n; ++i) v[i] = values[key, i]
+      for (i = 2; i <= n; ++i) { t = v[i]; for (j = i - 1; j >= 1 && v[j] > t; --j) v[j + 1] = v[j]; v[j + 1] = t }
+      return n == 0 ? 0 : (n % 2 ? v[(n + 1) / 2] : (v[n / 2] + v[n / 2 + 1]) / 2)
+    }
+    /"frame":/ { gsub(/[ ",]/, ""); split($0, kv, ":"); frame = kv[2] }
+    /"(render_ms|host_ms|sample_ms|shadow_pass_ms|frame_pass_ms|points|shadow_points)":/ {
+      line = $0; gsub(/[ ",]/, "", line); split(line, kv, ":"); key = kv[1]; value = kv[2]
+      pending[key] = value
+    }
+    /^  }/ {
+      if (frame >= warmup) for (key in pending) values[key, ++count[key]] = pending[key]
+      delete pending
+    }
+    END {
+      render = median("render_ms")
+      printf "gpu_check: ecosystem path, 1920x1080, psm 2048, --sampler %s, medians of frames %d to %d\n", sampler, warmup, frames - 1
+      printf "  frame %.1f ms (%.1f fps), host %.1f ms, sampling %.1f ms, shadow pass %.1f ms, frame pass %.1f ms\n",
+        render, (render > 0 ? 1000 / render : 0), median("host_ms"), median("sample_ms"), median("shadow_pass_ms"), median("frame_pass_ms")
+      printf "  points %.0f, shadow points %.0f\n", median("points"), median("shadow_points")
+    }' "$out/stats_$sampler.json"
+done
+echo "gpu_check: frame 0 for the llvmpipe comparison in $out/frame0_cpu and $out/frame0_gpu"

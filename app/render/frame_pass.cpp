@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@ namespace ecoview {
 namespace {
 
 const glm::vec3 sky_color(0.62f, 0.74f, 0.86f);  // sRGB
+constexpr GLuint nearest_binding = 26;  // shaders/nearest_depth.comp
 
 // Attaches `targets` as colour attachments 0, 1, ... and draws into all of them.
 void attach(const gl::Framebuffer& framebuffer, std::initializer_list<const gl::Texture*> targets) {
@@ -35,7 +37,9 @@ FramePass::FramePass(int width, int height, bool aliasing)
       height_(height),
       aliasing_wanted_(aliasing),
       surface_program_(gl::build_program({"frame.vert", "surface.frag"})),
-      point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})) {
+      point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})),
+      nearest_program_(gl::build_program({"nearest_depth.comp"})) {
+  glNamedBufferStorage(nearest_.name(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glTextureStorage2D(normals_.name(), 1, GL_RGBA32F, width, height);
   glTextureStorage2D(albedos_.name(), 1, GL_RGBA32F, width, height);
   glTextureStorage2D(depth_.name(), 1, GL_R32F, width, height);
@@ -182,6 +186,23 @@ Image<Sample> FramePass::read(const gl::Framebuffer& framebuffer, GLenum attachm
 Image8 FramePass::read_color() const { return read<std::uint8_t>(lit_, GL_COLOR_ATTACHMENT0, 3, GL_RGB, GL_UNSIGNED_BYTE); }
 Image8 FramePass::read_visibility() const { return read<std::uint8_t>(lit_, GL_COLOR_ATTACHMENT1, 1, GL_RED, GL_UNSIGNED_BYTE); }
 Image<float> FramePass::read_depth() const { return read<float>(surfaces_, GL_COLOR_ATTACHMENT2, 1, GL_RED, GL_FLOAT); }
+
+// Set by an upload, not a buffer clear: on llvmpipe a clear could land after the pass behind it.
+float FramePass::nearest_depth() const {
+  const GLuint none = 0xFFFFFFFFu;
+  glNamedBufferSubData(nearest_.name(), 0, sizeof none, &none);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nearest_binding, nearest_.name());
+  glBindTextureUnit(0, depth_.name());
+  gl::set_uniform(nearest_program_, "view_depth", 0);
+  glUseProgram(nearest_program_.name());
+  glDispatchCompute(static_cast<GLuint>((width_ + 15) / 16), static_cast<GLuint>((height_ + 15) / 16), 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  GLuint bits = none;
+  glGetNamedBufferSubData(nearest_.name(), 0, sizeof bits, &bits);
+  float depth = 0.0f;
+  if (bits != none) std::memcpy(&depth, &bits, sizeof depth);
+  return depth;
+}
 Image<float> FramePass::read_aliasing() const { return read<float>(lit_, GL_COLOR_ATTACHMENT2, 1, GL_RED, GL_FLOAT); }
 
 void FramePass::present(int width, int height) const {

@@ -45,6 +45,8 @@ class FramePass {
   Image8 read_visibility() const;
   // Linear view depth in metres; negative where no surface was drawn.
   Image<float> read_depth() const;
+  // The nearest of those depths, reduced on the GPU and read back (4 bytes); 0 where none.
+  float nearest_depth() const;
   // The aliasing factor (DESIGN.md) of the surface in each pixel; negative where no surface was
   // drawn, 0 without a shadow map.
   Image<float> read_aliasing() const;
@@ -94,7 +96,9 @@ class FramePass {
   gl::Program surface_program_;
   gl::Program point_program_;
   mutable std::map<ShadeVariant, gl::Program> shade_programs_;
-  gl::VertexArray empty_vertex_array_;  // for the fullscreen triangle, which has no attributes
+  gl::VertexArray empty_vertex_array_;
+  gl::Program nearest_program_;
+  gl::Buffer nearest_;  // for the fullscreen triangle, which has no attributes
 };
 
 }  // namespace ecoview
