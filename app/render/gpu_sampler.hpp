@@ -13,14 +13,15 @@
 namespace ecoview {
 
 // The view sampler's per-plant choice on the GPU. The plants of point meshes stay in GL buffers
-// from load on (transform, tint, mesh, rounding threshold). A frame is sampled band by band of
-// distance from the eye, nearest first: each band culls its plants against the view's frusta and
-// against a depth pyramid of what the bands before drew (occluders drawn first in the same frame,
-// so a frame depends on its own view alone), counts them with the density formula, chooses points
-// or polygons with the band around break-even, and appends their point draws (as PointSplat reads
-// them) and polygon instances with one indirect draw per table, with no read-back. Without
-// occlusion it chooses as pointgen::sample_view does, by whole plants and without cells'
-// aggregates: the CPU sampler is its test oracle.
+// from load on (transform, tint, mesh, rounding threshold). A frame's plants in view are sorted
+// into bands of distance from the eye and sampled band by band, nearest first: each band's plants
+// are culled against a depth pyramid of what the bands before drew (occluders drawn first in the
+// same frame, so a frame depends on its own view alone), counted with the density formula, given
+// points or polygons with the band around break-even, and appended to the point draws (as
+// PointSplat reads them) and the polygon instances, with an indirect draw per table and band and
+// no read-back. A last band may hold the casters out of view that shadow what the frame shows.
+// Without occlusion it chooses as pointgen::sample_view does, by whole plants and without cells'
+// aggregates: the CPU sampler is its test oracle. docs/point_density.md, "On the GPU".
 class GpuSampler {
  public:
   // `tables` are the scene's groups; those of point meshes (`samples` has lists for them) become
