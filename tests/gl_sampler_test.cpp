@@ -197,5 +197,18 @@ TEST_F(GpuSampling, TheShadowMapTakesTheCastersOutOfViewThatShadowTheView) {
   EXPECT_EQ(hidden.shadowed, walled.shadowed);
 }
 
+TEST_F(GpuSampling, AFrameWithoutPlantsDrawsNone) {
+  const Scene bare = load_scene({"bare.json", R"({"camera": {"position": [0, 3, 8], "target": [0, 0, 0]},
+      "lights": [{"type": "directional", "direction": [0.3, -1, 0.2]}],
+      "objects": [{"type": "plane", "center": [0, 0, 0], "size": [40, 40]}, {"type": "box", "min": [-1, 0, -1], "max": [1, 2, 1]}]})",
+                                 [](const std::string&) { return std::nullopt; }});
+  settings.method = ShadowMethod::psm;
+  settings.gpu_sampler = true;
+  Renderer renderer(bare, settings);
+  renderer.render(bare.camera, bare.lights[0]);
+  EXPECT_EQ(renderer.stats().points, 0u);
+  EXPECT_EQ(renderer.stats().triangles, 14u);  // the plane's 2 and the box's 12
+}
+
 }  // namespace
 }  // namespace ecoview

@@ -128,7 +128,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<glm::uvec4>(group_sums_, group_count_);
   storage<glm::uvec4>(draws_, plant_count_);
   storage<GLuint>(block_draws_, (point_capacity_ + points_per_block - 1) / points_per_block);
-  storage<GpuTotals>(totals_, 1);
+  gl::store(totals_, std::vector<GpuTotals>(1, GpuTotals{}));  // stays so in a scene without plants
   storage<PolygonInstance>(polygon_instances_, plant_count_);
   storage<GLuint>(commands_, command_uints * max_bands * std::max<std::size_t>(triangles_of_command_.size(), 1));
   storage<GLuint>(band_keys_, plant_count_);
