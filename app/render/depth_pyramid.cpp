@@ -22,7 +22,9 @@ GLuint groups(int texels) { return static_cast<GLuint>((texels + tile - 1) / til
 DepthPyramid::DepthPyramid(glm::ivec2 size)
     : size_(size),
       base_program_(gl::build_program({"depth_pyramid.comp"}, "#define BASE\n")),
-      reduce_program_(gl::build_program({"depth_pyramid.comp"})) {
+      reduce_program_(gl::build_program({"depth_pyramid.comp"})),
+      clear_marks_program_(gl::build_program({"receiver_marks.comp"}, "#define CLEAR\n")),
+      marks_program_(gl::build_program({"receiver_marks.comp"})) {
   GLuint total = 0;
   for (glm::ivec2 s = size; static_cast<int>(sizes_.size()) < max_levels; s = (s + 1) / 2) {
     sizes_.push_back(s);
@@ -53,25 +55,21 @@ void DepthPyramid::build(GLuint polygon_depth, GLuint point_depths) const {
 }
 
 void DepthPyramid::build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection,
-                                   const glm::mat4& map_view_projection) {
-  if (!marks_program_) {
-    clear_marks_program_ = std::make_unique<gl::Program>(gl::build_program({"receiver_marks.comp"}, "#define CLEAR\n"));
-    marks_program_ = std::make_unique<gl::Program>(gl::build_program({"receiver_marks.comp"}));
-  }
+                                   const glm::mat4& map_view_projection) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, pyramid_binding, depths_.name());
   glBindBufferRange(GL_SHADER_STORAGE_BUFFER, frame_depths_binding, frame.depths_.name(), 0,
                     static_cast<GLsizeiptr>(frame.size_.x) * frame.size_.y * static_cast<GLsizeiptr>(sizeof(float)));
-  set_levels(*clear_marks_program_);
+  set_levels(clear_marks_program_);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  glUseProgram(clear_marks_program_->name());
+  glUseProgram(clear_marks_program_.name());
   glDispatchCompute(groups(size_.x), groups(size_.y), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  set_levels(*marks_program_);
-  gl::set_uniform(*marks_program_, "frame_size", frame.size_);
-  gl::set_uniform(*marks_program_, "pixel_step", receiver_pixel_step);
-  gl::set_uniform(*marks_program_, "frame_to_world", glm::inverse(frame_view_projection));
-  gl::set_uniform(*marks_program_, "map_view_projection", map_view_projection);
-  glUseProgram(marks_program_->name());
+  set_levels(marks_program_);
+  gl::set_uniform(marks_program_, "frame_size", frame.size_);
+  gl::set_uniform(marks_program_, "pixel_step", receiver_pixel_step);
+  gl::set_uniform(marks_program_, "frame_to_world", glm::inverse(frame_view_projection));
+  gl::set_uniform(marks_program_, "map_view_projection", map_view_projection);
+  glUseProgram(marks_program_.name());
   glDispatchCompute(groups((frame.size_.x + receiver_pixel_step - 1) / receiver_pixel_step),
                     groups((frame.size_.y + receiver_pixel_step - 1) / receiver_pixel_step), 1);
   reduce();

@@ -3,7 +3,6 @@
 
 #include <glm/glm.hpp>
 
-#include <memory>
 #include <vector>
 
 namespace ecoview {
@@ -24,7 +23,7 @@ class DepthPyramid {
   // pyramid, last built) shows a surface through `map_view_projection`, 0 elsewhere, and each
   // level above the most of the 2 × 2 below; a caster whose rectangle there holds no 1 shadows
   // nothing the frame shows.
-  void build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection, const glm::mat4& map_view_projection);
+  void build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection, const glm::mat4& map_view_projection) const;
   // Binds it for a program that includes depth_pyramid.glsl.
   void bind_for(const gl::Program& program) const;
 
@@ -36,7 +35,9 @@ class DepthPyramid {
   std::vector<GLuint> offsets_;        // per level, in floats
   gl::Buffer depths_;
   gl::Program base_program_, reduce_program_;
-  std::unique_ptr<gl::Program> clear_marks_program_, marks_program_;  // made when first marking receivers
+  // Made with the pyramid, not with the first frame that marks receivers, so that frame times
+  // hold no shader compilation.
+  gl::Program clear_marks_program_, marks_program_;
 };
 
 }  // namespace ecoview

@@ -30,7 +30,7 @@ struct PolygonInstance {
 struct GpuTotals {
   GLuint total_points, draw_count, band_first_point, all_points, polygon_count;
 };
-constexpr std::size_t command_uints = 5;  // DrawElementsIndirectCommand
+constexpr std::size_t command_uints = GpuSampler::command_bytes / sizeof(GLuint);
 
 constexpr GLuint draws_binding = 1, instances_binding = 2, block_draws_binding = 8, plant_meshes_binding = 10,
                  meshes_binding = 11, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
@@ -43,6 +43,13 @@ constexpr std::size_t max_planes = 96;                                    // pla
 // Bands: the first ends this far from the eye (metres), each next one this many times as far.
 // Finer bands hide more of what lies behind a near one, at a pyramid and a few passes each.
 constexpr float first_band_end = 12.0f, band_ratio = 1.5f;
+
+std::vector<GpuInstance> instances_of(const pointgen::InstanceTable& table) {
+  std::vector<GpuInstance> instances;
+  instances.reserve(table.size());
+  for (std::size_t i = 0; i < table.size(); ++i) instances.push_back({table.transforms[i], glm::vec4(table.tints[i], 1.0f)});
+  return instances;
+}
 
 // The same threshold pointgen::sample_view rounds a whole plant's count at.
 float rounding(const pointgen::InstanceTable& table, std::size_t i) {
@@ -93,8 +100,9 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
     if (!holds_plants_.back()) continue;
     triangles_of_command_.push_back(mesh.triangles);
     const auto first = static_cast<std::uint32_t>(instances.size());
+    const std::vector<GpuInstance> own = instances_of(table);
+    instances.insert(instances.end(), own.begin(), own.end());
     for (std::size_t i = 0; i < table.size(); ++i) {
-      instances.push_back({table.transforms[i], glm::vec4(table.tints[i], 1.0f)});
       plant_meshes.emplace_back(static_cast<std::uint32_t>(table.mesh), glm::floatBitsToUint(rounding(table, i)));
     }
     table_ranges.emplace_back(first, static_cast<std::uint32_t>(instances.size()), 0u, 0u);
@@ -142,9 +150,7 @@ void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed)
   if (!holds_plants_[table]) return;
   const std::size_t end = table + 1 < first_plant_.size() ? first_plant_[table + 1] : plant_count_;
   if (posed.size() != end - first_plant_[table]) throw RuntimeFailure("a posed table changed its number of instances");
-  std::vector<GpuInstance> instances;
-  instances.reserve(posed.size());
-  for (std::size_t i = 0; i < posed.size(); ++i) instances.push_back({posed.transforms[i], glm::vec4(posed.tints[i], 1.0f)});
+  const std::vector<GpuInstance> instances = instances_of(posed);
   glNamedBufferSubData(instances_.name(), static_cast<GLintptr>(first_plant_[table] * sizeof(GpuInstance)),
                        static_cast<GLsizeiptr>(instances.size() * sizeof(GpuInstance)), instances.data());
 }
