@@ -1,6 +1,9 @@
 #version 450 core
-// Builds a level of the farthest-depth pyramid (depth_pyramid.glsl): with BASE level 0 from the
-// polygons' depth and the points' nearest depths, otherwise `level` from the one below.
+// Builds the farthest-depth pyramid (depth_pyramid.glsl). With BASE, levels 0 to 2 from the
+// polygons' depth and the points' nearest depths, a block of 4 × 4 pixels a thread: level 0 is
+// the nearest depth within a pixel of each pixel, so that one-pixel gaps between leaves and
+// between point splats hide what lies behind them (on the ecosystem's default view half the
+// points and a quarter of the triangles; docs/benchmarks.md). Otherwise `level` from the one below.
 #define PYRAMID_WRITTEN
 #include "depth_pyramid.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -9,14 +12,46 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(std430, binding = 6) readonly buffer PointDepths { uint point_depths[]; };
 uniform sampler2D polygon_depth;
 
+float nearest_at(ivec2 pixel) {
+  pixel = clamp(pixel, ivec2(0), pyramid_size[0] - 1);
+  float nearest = texelFetch(polygon_depth, pixel, 0).r;
+  uint point = point_depths[uint(pixel.y * pyramid_size[0].x + pixel.x)];
+  return point != 0xFFFFFFFFu ? min(nearest, uintBitsToFloat(point)) : nearest;
+}
+
+void store(int level, ivec2 texel, float depth) {
+  if (all(lessThan(texel, pyramid_size[level]))) pyramid[pyramid_offset[level] + uint(texel.y * pyramid_size[level].x + texel.x)] = depth;
+}
+
 void main() {
-  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(texel, pyramid_size[0]))) return;
-  uint index = uint(texel.y * pyramid_size[0].x + texel.x);
-  float nearest = texelFetch(polygon_depth, texel, 0).r;
-  uint point = point_depths[index];
-  if (point != 0xFFFFFFFFu) nearest = min(nearest, uintBitsToFloat(point));
-  pyramid[pyramid_offset[0] + index] = nearest;
+  ivec2 block = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 origin = block * 4;
+  if (any(greaterThanEqual(origin, pyramid_size[0]))) return;
+  // The 6 × 6 pixels around the block, their nearest within a pixel each way: rows first.
+  float rows[6][4];
+  for (int y = 0; y < 6; ++y) {
+    float around[6];
+    for (int x = 0; x < 6; ++x) around[x] = nearest_at(origin + ivec2(x - 1, y - 1));
+    for (int x = 0; x < 4; ++x) rows[y][x] = min(around[x], min(around[x + 1], around[x + 2]));
+  }
+  float farthest_1[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 4; ++x) {
+      float depth = min(rows[y][x], min(rows[y + 1][x], rows[y + 2][x]));
+      ivec2 pixel = origin + ivec2(x, y);
+      store(0, pixel, depth);
+      // A pixel past the image's edge takes its last pixels' depths: at worst a farther one.
+      farthest_1[y / 2][x / 2] = max(farthest_1[y / 2][x / 2], depth);
+    }
+  }
+  float farthest_2 = 0.0;
+  for (int y = 0; y < 2; ++y) {
+    for (int x = 0; x < 2; ++x) {
+      store(1, block * 2 + ivec2(x, y), farthest_1[y][x]);
+      farthest_2 = max(farthest_2, farthest_1[y][x]);
+    }
+  }
+  store(2, block, farthest_2);
 }
 #else
 uniform int level;

@@ -1,5 +1,6 @@
 // A farthest-depth pyramid over the frame (app/render/depth_pyramid.hpp): window depths, level 0
-// per pixel, each level above the farthest of the 2 × 2 below; levels packed one after another.
+// per pixel (the nearest within a pixel of it), each level above the farthest of the 2 × 2 below;
+// levels packed one after another.
 #ifdef PYRAMID_WRITTEN
 layout(std430, binding = 17) buffer Pyramid { float pyramid[]; };
 #else

@@ -163,6 +163,35 @@ TEST_F(GpuSampling, PlantsBehindAWallAreLeftOut) {
   EXPECT_GT(static_cast<double>(same) / static_cast<double>(beside), 0.97);
 }
 
+// Occluders close one-pixel gaps (DepthPyramid): a beech seen through a slit one pixel wide in a
+// wall is left out, through one ten pixels wide it is drawn. A backdrop shows through both.
+TEST_F(GpuSampling, APlantSeenThroughAOnePixelSlitIsLeftOutButNotThroughAWiderOne) {
+  settings.method = ShadowMethod::none;
+  settings.gpu_sampler = true;
+  // At 20 m a pixel is 2 × 20 m × tan 25° × 960 / 540 / 960 = 0.0345 m wide; the centre of the
+  // pixel right of the middle is at 0.0173 m, in either slit, and no other pixel's is in the narrow one.
+  const auto render = [&](float slit) {
+    std::ostringstream s;
+    s << R"({"camera": {"position": [0, 3, 0], "target": [0, 3, -60], "fov_y_deg": 50, "near": 0.5, "far": 400},
+            "lights": [{"type": "directional", "direction": [0.4, -0.8, -0.3]}], "objects": [
+            {"type": "box", "min": [-100, -50, -21], "max": [0, 60, -20]},
+            {"type": "box", "min": [)" << slit << R"(, -50, -21], "max": [100, 60, -20]},
+            {"type": "box", "min": [-300, -200, -301], "max": [300, 200, -300]},
+            {"type": "plant", "species": "beech", "positions": [[0, 0, -60]]}]})";
+    const Scene walled = load_scene({"slit.json", s.str(), [](const std::string&) { return std::nullopt; }});
+    Renderer renderer(walled, settings);
+    renderer.render(walled.camera, walled.lights[0]);
+    const Image<float> depth = renderer.frame().read_depth();
+    const auto seen_beyond = std::count_if(depth.samples.begin(), depth.samples.end(), [](float d) { return d > 40.0f; });
+    EXPECT_GT(seen_beyond, 0) << "the slit should be open";
+    return renderer.stats();
+  };
+  const FrameStats narrow = render(0.03f), wide = render(0.35f);
+  EXPECT_EQ(narrow.points, 0u);
+  EXPECT_EQ(narrow.triangles, 36u) << "the three boxes alone";
+  EXPECT_GT(wide.points + wide.triangles, 36u);
+}
+
 // The shadow map draws the camera's plants and the casters out of view whose shadows reach what
 // the frame shows, and no others: a beech beside the view shadows the ground in it; behind a wall
 // that hides that ground, or far behind the camera, it is left out.

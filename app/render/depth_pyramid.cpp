@@ -11,6 +11,7 @@ namespace {
 constexpr GLuint pyramid_binding = 17, point_depths_binding = 6;  // shaders/depth_pyramid.glsl, point_common.glsl
 constexpr int max_levels = 16;                                     // the shaders' arrays
 constexpr int tile = 8;                                            // local size per side
+constexpr int base_levels = 3, base_block = 4;                     // levels 0-2, 4 × 4 pixels a thread
 constexpr GLuint frame_depths_binding = 25;                        // shaders/receiver_marks.comp
 // The frame's pixels that mark receivers: every 2nd each way, far denser than the marks' texels.
 constexpr int receiver_pixel_step = 2;
@@ -50,8 +51,8 @@ void DepthPyramid::build(GLuint polygon_depth, GLuint point_depths) const {
   gl::set_uniform(base_program_, "polygon_depth", 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   glUseProgram(base_program_.name());
-  glDispatchCompute(groups(size_.x), groups(size_.y), 1);
-  reduce();
+  glDispatchCompute(groups((size_.x + base_block - 1) / base_block), groups((size_.y + base_block - 1) / base_block), 1);
+  reduce(base_levels);
 }
 
 void DepthPyramid::build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection,
@@ -72,14 +73,14 @@ void DepthPyramid::build_receivers(const DepthPyramid& frame, const glm::mat4& f
   glUseProgram(marks_program_.name());
   glDispatchCompute(groups((frame.size_.x + receiver_pixel_step - 1) / receiver_pixel_step),
                     groups((frame.size_.y + receiver_pixel_step - 1) / receiver_pixel_step), 1);
-  reduce();
+  reduce(1);
 }
 
-void DepthPyramid::reduce() const {
+void DepthPyramid::reduce(std::size_t first_level) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, pyramid_binding, depths_.name());
   set_levels(reduce_program_);
   glUseProgram(reduce_program_.name());
-  for (std::size_t level = 1; level < sizes_.size(); ++level) {
+  for (std::size_t level = first_level; level < sizes_.size(); ++level) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     gl::set_uniform(reduce_program_, "level", static_cast<int>(level));
     glDispatchCompute(groups(sizes_[level].x), groups(sizes_[level].y), 1);

@@ -7,11 +7,12 @@
 
 namespace ecoview {
 
-// A farthest-depth pyramid over a frame, as GPU-driven renderers cull by: level 0 holds each
-// pixel's nearest window depth of what is drawn so far (polygons in a depth texture, points in a
-// splat's depth buffer; 1 where nothing is), each level above the farthest of the 2 × 2 texels
-// below. A box whose nearest depth lies beyond the pyramid's farthest over its screen rectangle is
-// hidden (shaders/depth_pyramid.glsl).
+// A farthest-depth pyramid over a frame, as GPU-driven renderers cull by: level 0 holds, per
+// pixel, the nearest window depth of what is drawn so far within one pixel of it (polygons in a
+// depth texture, points in a splat's depth buffer; 1 where nothing is), so that one-pixel gaps
+// between leaves and splats count as closed; each level above holds the farthest of the 2 × 2
+// texels below. A box whose nearest depth lies beyond the pyramid's farthest over its screen
+// rectangle is hidden (shaders/depth_pyramid.glsl).
 class DepthPyramid {
  public:
   explicit DepthPyramid(glm::ivec2 size);
@@ -29,7 +30,7 @@ class DepthPyramid {
 
  private:
   void set_levels(const gl::Program& program) const;
-  void reduce() const;  // the levels above 0
+  void reduce(std::size_t first_level) const;  // the levels from first_level up
   glm::ivec2 size_;
   std::vector<glm::ivec2> sizes_;      // per level
   std::vector<GLuint> offsets_;        // per level, in floats
