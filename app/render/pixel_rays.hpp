@@ -11,31 +11,34 @@ namespace ecoview {
 // ray meets the surface the frame drew at a linear view depth.
 class PixelRays {
  public:
-  PixelRays(const shadow::Camera& camera, int width, int height)
-      : eye_(camera.position),
-        forward_(camera.forward()),
-        to_world_(glm::inverse(camera.projection(static_cast<float>(width) / static_cast<float>(height)) * camera.view())),
-        width_(width),
-        height_(height) {}
+  PixelRays(const shadow::Camera& camera, int width, int height) : eye_(camera.position), forward_(camera.forward()) {
+    // A ray's direction, up to a positive scale, is far.xyz - eye * far.w for the far plane's
+    // point `far` in homogeneous world coordinates: affine in the pixel's coordinates, so three
+    // corners of the grid give every pixel's without a matrix product each.
+    const glm::mat4 to_world = glm::inverse(camera.projection(static_cast<float>(width) / static_cast<float>(height)) * camera.view());
+    const auto at = [&](float x, float y) {
+      const glm::vec4 far = to_world * glm::vec4((2.0f * x + 1.0f) / static_cast<float>(width) - 1.0f,
+                                                 1.0f - (2.0f * y + 1.0f) / static_cast<float>(height), 1.0f, 1.0f);
+      return glm::vec3(far) - eye_ * far.w;
+    };
+    origin_ = at(0.0f, 0.0f);
+    across_ = at(1.0f, 0.0f) - origin_;
+    down_ = at(0.0f, 1.0f) - origin_;
+  }
 
   glm::vec3 eye() const { return eye_; }
-  glm::vec3 direction(int x, int y) const {
-    const glm::vec2 ndc((2.0f * static_cast<float>(x) + 1.0f) / static_cast<float>(width_) - 1.0f,
-                        1.0f - (2.0f * static_cast<float>(y) + 1.0f) / static_cast<float>(height_));
-    const glm::vec4 far_point = to_world_ * glm::vec4(ndc, 1.0f, 1.0f);
-    return glm::normalize(glm::vec3(far_point) / far_point.w - eye_);
-  }
+  glm::vec3 direction(int x, int y) const { return glm::normalize(unscaled(x, y)); }
   // Distance along `direction` to the point at linear view depth `depth`.
   float distance(const glm::vec3& direction, float depth) const { return depth / glm::dot(direction, forward_); }
   glm::vec3 point(int x, int y, float depth) const {
-    const glm::vec3 d = direction(x, y);
+    const glm::vec3 d = unscaled(x, y);
     return eye_ + d * distance(d, depth);
   }
 
  private:
+  glm::vec3 unscaled(int x, int y) const { return origin_ + static_cast<float>(x) * across_ + static_cast<float>(y) * down_; }
   glm::vec3 eye_, forward_;
-  glm::mat4 to_world_;
-  int width_, height_;
+  glm::vec3 origin_{0.0f}, across_{0.0f}, down_{0.0f};  // the unscaled direction of pixel (0, 0) and its steps
 };
 
 // Surface points of a frame (its linear view depth) on a grid of every `step`-th pixel, with
