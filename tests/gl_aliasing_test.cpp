@@ -39,6 +39,22 @@ TEST(AliasingFactor, IsTheUniformMapsTexelInPixelsOnAPlaneSeenFromAbove) {
   EXPECT_NEAR(alias_percentile(aliasing, renderer.frame().read_visibility(), shadow::p95_fraction), expected, 0.01 * expected);
 }
 
+// --method auto's prediction on the GPU, for the same case: the median over the frame's surfaces.
+TEST(PredictedAliasing, OnTheGpuIsTheUniformMapsTexelInPixelsOnAPlaneSeenFromAbove) {
+  const auto context = create_headless_context("egl");
+  const Scene scene = plane_seen_from_above();
+  Renderer renderer(scene, RenderSettings{width, height, map_size, ShadowMethod::uniform});
+  renderer.render(scene.camera, scene.lights[0]);
+  const double expected = 1.02 * width / map_size;
+  const std::vector<float> predicted = renderer.frame().predict_aliasing(scene.camera, scene.camera, scene.lights[0],
+                                                                         {renderer.shadow_setup()}, map_size, shadow::median_fraction);
+  ASSERT_EQ(predicted.size(), 1u);
+  EXPECT_NEAR(predicted[0], expected, 0.01 * expected);
+  // A map of twice the texels each way has texels half as large.
+  EXPECT_NEAR(renderer.frame().predict_aliasing(scene.camera, scene.camera, scene.lights[0], {renderer.shadow_setup()}, 2 * map_size,
+                                                shadow::median_fraction)[0], expected / 2, 0.01 * expected);
+}
+
 TEST(AliasingFactor, IsZeroWithoutAShadowMapAndNegativeWhereNothingIsDrawn) {
   const auto context = create_headless_context("egl");
   Scene scene = plane_seen_from_above();
@@ -53,8 +69,8 @@ TEST(AliasingFactor, IsZeroWithoutAShadowMapAndNegativeWhereNothingIsDrawn) {
   EXPECT_LT(renderer.frame().read_aliasing().at(width / 2, height / 2), 0.0f);
 }
 
-// The aliasing factor predicted on the CPU from a setup's matrices and the frame's surface against
-// the aliasing AOV the frame shader computed, on the deep field under a light across the view: its
+// The aliasing factor predicted from a setup's matrices and the frame's surface, on the CPU and on
+// the GPU, against the aliasing AOV the frame shader computed, on the deep field under a light across the view: its
 // median (what --method auto chooses by) and its 95th percentile (alias_p95).
 TEST(PredictedAliasing, MatchesTheFramesMedianAndAliasP95) {
   const auto context = create_headless_context("egl");
@@ -73,6 +89,9 @@ TEST(PredictedAliasing, MatchesTheFramesMedianAndAliasP95) {
       const float predicted = shadow::predicted_aliasing(renderer.shadow_setup(), light, 1024, frame, surface, fraction);
       const double measured = alias_percentile(renderer.frame().read_aliasing(), renderer.frame().read_visibility(), fraction);
       EXPECT_NEAR(predicted, measured, 0.15 * measured) << shadow_method_name(method) << ", percentile " << fraction;
+      // On the GPU, from the frame's own normals rather than ones rebuilt from its depth.
+      const float on_gpu = renderer.frame().predict_aliasing(scene.camera, scene.camera, light, {renderer.shadow_setup()}, 1024, fraction)[0];
+      EXPECT_NEAR(on_gpu, predicted, 0.05 * predicted) << shadow_method_name(method) << ", percentile " << fraction << " on the GPU";
     }
   }
 }

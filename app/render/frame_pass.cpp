@@ -15,6 +15,27 @@ namespace {
 
 const glm::vec3 sky_color(0.62f, 0.74f, 0.86f);  // sRGB
 constexpr GLuint nearest_binding = 26;  // shaders/nearest_depth.comp
+// shaders/predicted_aliasing.comp: histograms of log2 of the aliasing factor, from 2^-10 (the
+// first bin taking all below) to 2^14 (the last taking all above: where the light grazes), fine
+// enough that methods a quarter of a percent apart get different bins; up to this many setups at once.
+constexpr GLuint histograms_binding = 27;
+constexpr int bins_per_octave = 256, lowest_octave = -10, histogram_bins = 24 * bins_per_octave, most_predicted_setups = 8;
+// predict_aliasing reads about this many of the frame's pixels, whatever its size: the median of n
+// samples stands within about sqrt(0.25 / n) of its rank (0.5 points of percentile at 10,000).
+constexpr float predicting_pixels = 10000.0f;
+
+// The value `fraction` of the way up the counts of a histogram, in rank (shadow::percentile's
+// rank), as its bin's centre; 0 for none.
+float percentile_of(const GLuint* bins, float fraction) {
+  std::uint64_t total = 0;
+  for (int b = 0; b < histogram_bins; ++b) total += bins[b];
+  if (total == 0) return 0.0f;
+  const auto rank = static_cast<std::uint64_t>(static_cast<double>(fraction) * static_cast<double>(total - 1));
+  std::uint64_t below = 0;
+  int b = 0;
+  while (below + bins[b] <= rank) below += bins[b++];
+  return std::exp2((static_cast<float>(b) + 0.5f) / static_cast<float>(bins_per_octave) + static_cast<float>(lowest_octave));
+}
 
 // Attaches `targets` as colour attachments 0, 1, ... and draws into all of them.
 void attach(const gl::Framebuffer& framebuffer, std::initializer_list<const gl::Texture*> targets) {
@@ -40,6 +61,7 @@ FramePass::FramePass(int width, int height, bool aliasing)
       point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})),
       nearest_program_(gl::build_program({"nearest_depth.comp"})) {
   glNamedBufferStorage(nearest_.name(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(histograms_.name(), most_predicted_setups * histogram_bins * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glTextureStorage2D(normals_.name(), 1, GL_RGBA32F, width, height);
   glTextureStorage2D(albedos_.name(), 1, GL_RGBA32F, width, height);
   glTextureStorage2D(depth_.name(), 1, GL_R32F, width, height);
@@ -108,14 +130,66 @@ FramePass::ShadeVariant FramePass::shade_variant(const std::optional<ShadowLooku
   return variant;
 }
 
+std::string FramePass::defines(const ShadeVariant& variant) {
+  const auto boolean = [](bool b) { return b ? std::string("true") : std::string("false"); };
+  return "#define SHADOWS " + boolean(variant.shadows) + "\n#define SHADOW_SELECTION " + std::to_string(variant.selection) +
+         "\n#define PARABOLOID_VIEWS " + boolean(variant.paraboloid) + "\n#define ALIASING " + boolean(variant.aliasing) + "\n";
+}
+
 const gl::Program& FramePass::shade_program(const ShadeVariant& variant) const {
   auto found = shade_programs_.find(variant);
   if (found != shade_programs_.end()) return found->second;
-  const auto boolean = [](bool b) { return b ? std::string("true") : std::string("false"); };
-  const std::string defines = "#define SHADOWS " + boolean(variant.shadows) + "\n#define SHADOW_SELECTION " +
-                              std::to_string(variant.selection) + "\n#define PARABOLOID_VIEWS " +
-                              boolean(variant.paraboloid) + "\n#define ALIASING " + boolean(variant.aliasing) + "\n";
-  return shade_programs_.emplace(variant, gl::build_program({"fullscreen.vert", "shade.frag"}, defines)).first->second;
+  return shade_programs_.emplace(variant, gl::build_program({"fullscreen.vert", "shade.frag"}, defines(variant))).first->second;
+}
+
+const gl::Program& FramePass::prediction_program(const ShadeVariant& variant) const {
+  auto found = prediction_programs_.find(variant);
+  if (found != prediction_programs_.end()) return found->second;
+  return prediction_programs_.emplace(variant, gl::build_program({"predicted_aliasing.comp"}, defines(variant))).first->second;
+}
+
+void FramePass::set_lighting(const gl::Program& program, const shadow::Camera& surface_camera, const shadow::Camera& camera,
+                             const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const {
+  const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+  set_camera(program, surface_camera);
+  gl::set_uniform(program, "view_projection", camera.projection(aspect) * camera.view());
+  gl::set_uniform(program, "camera_forward", surface_camera.forward());
+  gl::set_uniform(program, "pixel_to_world", glm::inverse(surface_camera.projection(aspect) * surface_camera.view()));
+  set_light(program, light, shadow_map);
+}
+
+std::vector<float> FramePass::predict_aliasing(const shadow::Camera& surface_camera, const shadow::Camera& camera,
+                                               const shadow::Light& light, const std::vector<shadow::ShadowSetup>& setups,
+                                               int map_size, float fraction) const {
+  if (setups.size() > static_cast<std::size_t>(most_predicted_setups)) throw RuntimeFailure("predict_aliasing takes at most 8 setups");
+  // Zeros uploaded, not cleared: on llvmpipe a clear could land after the pass behind it.
+  std::vector<GLuint> bins(setups.size() * histogram_bins, 0u);
+  if (bins.empty()) return {};
+  glNamedBufferSubData(histograms_.name(), 0, static_cast<GLsizeiptr>(bins.size() * sizeof(GLuint)), bins.data());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, histograms_binding, histograms_.name());
+  glBindTextureUnit(2, normals_.name());
+  glBindTextureUnit(4, depth_.name());
+  const int step = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<float>(width_ * height_) / predicting_pixels))));
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  for (std::size_t i = 0; i < setups.size(); ++i) {
+    const ShadowLookup lookup{0, setups[i], map_size};
+    ShadeVariant variant = shade_variant(lookup);
+    variant.aliasing = true;
+    const gl::Program& program = prediction_program(variant);
+    glUseProgram(program.name());
+    set_lighting(program, surface_camera, camera, light, lookup);
+    gl::set_uniform(program, "pixel_step", step);
+    gl::set_uniform(program, "first_bin", static_cast<unsigned>(i * histogram_bins));
+    gl::set_uniform(program, "bin_count", static_cast<unsigned>(histogram_bins));
+    gl::set_uniform(program, "bins_per_octave", static_cast<float>(bins_per_octave));
+    gl::set_uniform(program, "lowest_octave", static_cast<float>(lowest_octave));
+    glDispatchCompute(static_cast<GLuint>((width_ / step + 8) / 8), static_cast<GLuint>((height_ / step + 8) / 8), 1);
+  }
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(histograms_.name(), 0, static_cast<GLsizeiptr>(bins.size() * sizeof(GLuint)), bins.data());
+  std::vector<float> predicted;
+  for (std::size_t i = 0; i < setups.size(); ++i) predicted.push_back(percentile_of(&bins[i * histogram_bins], fraction));
+  return predicted;
 }
 
 void FramePass::set_light(const gl::Program& program, const shadow::Light& light,
@@ -154,11 +228,7 @@ void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,
 
   const gl::Program& program = shade_program(shade_variant(shadow_map));
   glUseProgram(program.name());
-  set_camera(program, camera);
-  const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
-  gl::set_uniform(program, "camera_forward", camera.forward());
-  gl::set_uniform(program, "pixel_to_world", glm::inverse(camera.projection(aspect) * camera.view()));
-  set_light(program, light, shadow_map);
+  set_lighting(program, camera, camera, light, shadow_map);
   glBindTextureUnit(2, normals_.name());
   glBindTextureUnit(3, albedos_.name());
   glBindTextureUnit(4, depth_.name());

@@ -10,6 +10,8 @@
 
 #include <map>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace ecoview {
 
@@ -40,6 +42,14 @@ class FramePass {
   };
   // Lights the surfaces drawn.
   void shade(const shadow::Camera& camera, const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;
+
+  // --method auto's prediction: for each setup (its maps of `map_size` texels), the percentile
+  // `fraction` of its aliasing factor for `camera` over the surfaces this frame holds that face the
+  // light, on a grid of about 10,000 of its pixels; `surface_camera` is the camera they were drawn
+  // with. On the GPU (shaders/predicted_aliasing.comp), read back as one histogram a setup of 256
+  // bins an octave: within 0.3 % of the value.
+  std::vector<float> predict_aliasing(const shadow::Camera& surface_camera, const shadow::Camera& camera, const shadow::Light& light,
+                                      const std::vector<shadow::ShadowSetup>& setups, int map_size, float fraction) const;
 
   Image8 read_color() const;
   Image8 read_visibility() const;
@@ -72,8 +82,14 @@ class FramePass {
     auto operator<=>(const ShadeVariant&) const = default;
   };
   ShadeVariant shade_variant(const std::optional<ShadowLookup>& shadow_map) const;
+  static std::string defines(const ShadeVariant& variant);
   // Built when a frame first needs it, then kept.
   const gl::Program& shade_program(const ShadeVariant& variant) const;
+  const gl::Program& prediction_program(const ShadeVariant& variant) const;
+  // The uniforms of lighting.glsl and surface_position.glsl: `surface_camera` reconstructs the
+  // surfaces' positions, `camera` is the one they are seen and shaded for.
+  void set_lighting(const gl::Program& program, const shadow::Camera& surface_camera, const shadow::Camera& camera,
+                    const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;
   void set_camera(const gl::Program& program, const shadow::Camera& camera) const;
   // Binds the surfaces' targets and program for polygons.
   void start_surfaces(const shadow::Camera& camera) const;
@@ -95,7 +111,8 @@ class FramePass {
   gl::Framebuffer lit_;
   gl::Program surface_program_;
   gl::Program point_program_;
-  mutable std::map<ShadeVariant, gl::Program> shade_programs_;
+  mutable std::map<ShadeVariant, gl::Program> shade_programs_, prediction_programs_;
+  gl::Buffer histograms_;  // predict_aliasing's
   gl::VertexArray empty_vertex_array_;
   gl::Program nearest_program_;
   gl::Buffer nearest_;  // for the fullscreen triangle, which has no attributes

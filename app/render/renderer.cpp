@@ -243,23 +243,16 @@ shadow::ShadowSetup Renderer::best_predicted_setup(const shadow::Camera& camera,
       light.type == shadow::LightType::directional
           ? std::vector<ShadowMethod>{ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::lispsm, ShadowMethod::cascades}
           : std::vector<ShadowMethod>{ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::dpsm, ShadowMethod::ipsm};
-  const shadow::FrameView frame{camera.projection(aspect()) * camera.view(), glm::vec2(settings_.width, settings_.height)};
-  shadow::ShadowSetup best;
-  float least = INFINITY;
-  ShadowMethod chosen = candidates.front();
-  for (ShadowMethod method : candidates) {
-    shadow::ShadowSetup setup = make_shadow_setup(method, camera, light);
-    const float predicted = shadow::predicted_aliasing(setup, light, settings_.shadow_size, frame, last_surface_, shadow::median_fraction);
-    if (predicted < least) {
-      least = predicted;
-      best = std::move(setup);
-      chosen = method;
-    }
-  }
+  std::vector<shadow::ShadowSetup> setups;
+  for (ShadowMethod method : candidates) setups.push_back(make_shadow_setup(method, camera, light));
+  const std::vector<float> predicted =
+      frame_pass_.predict_aliasing(last_camera_, camera, light, setups, settings_.shadow_size, shadow::median_fraction);
+  const auto best = static_cast<std::size_t>(std::min_element(predicted.begin(), predicted.end()) - predicted.begin());
   char figure[32];
-  std::snprintf(figure, sizeof figure, "%.2f", least);
-  best.description = "auto: " + shadow_method_name(chosen) + ", predicted median aliasing " + figure + " (" + best.description + ")";
-  return best;
+  std::snprintf(figure, sizeof figure, "%.2f", predicted[best]);
+  setups[best].description =
+      "auto: " + shadow_method_name(candidates[best]) + ", predicted median aliasing " + figure + " (" + setups[best].description + ")";
+  return std::move(setups[best]);
 }
 
 // The shadow map for this frame; with points on, far instances of point meshes are splatted into
@@ -428,20 +421,12 @@ bool Renderer::culls_casters() const {
 // and 5 ms at 1920×1080 here); the surface and the receivers read back and sampled on the CPU.
 void Renderer::remember_last_frame() {
   nearest_visible_ = frame_pass_.nearest_depth();
+  last_camera_ = camera_;
   has_last_frame_ = true;
-  if (settings_.method != ShadowMethod::automatic && !culls_casters()) return;
+  if (!culls_casters()) return;
   const Image<float> depth = frame_pass_.read_depth();
-  const PixelRays rays(camera_, depth.width, depth.height);
-  if (settings_.method == ShadowMethod::automatic) {
-    // auto predicts the median aliasing from about this many of the frame's pixels, whatever its
-    // size: the median of n samples stands within about sqrt(0.25 / n) of its rank (0.5 points of
-    // percentile at n = 10,000).
-    constexpr float predicting_pixels = 10000.0f;
-    const int step = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<float>(depth.width * depth.height) / predicting_pixels))));
-    last_surface_ = surface_points(depth, rays, step);
-  }
   // Every 4th pixel each way: far denser than the mask's tiles (docs/point_density.md, "Receivers").
-  if (culls_casters()) last_receivers_ = surface_positions(depth, rays, 4);
+  last_receivers_ = surface_positions(depth, PixelRays(camera_, depth.width, depth.height), 4);
 }
 
 void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows) {

@@ -119,8 +119,8 @@ class Renderer {
   bool culls_casters() const;
   // Whether the next frame takes anything from the last one (near plane, surface, receivers).
   bool needs_last_frame() const;
-  // Keeps what the next frame needs of this one: its nearest depth (PSM), its surface (auto) and
-  // its receivers (culls_casters).
+  // Keeps what the next frame needs of this one: its nearest depth (PSM), its camera (auto predicts
+  // from its surfaces, which the frame pass keeps) and its receivers (culls_casters).
   void remember_last_frame();
   void render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
   // Shadow volumes in place of a map: the lit-pixel mask of this frame.
@@ -172,12 +172,12 @@ class Renderer {
   std::unique_ptr<ExactVisibility> exact_;          // made when first asked for
   std::unique_ptr<gl::Texture> reference_mask_;     // --method reference: R8, frame-sized, its lit pixels
   shadow::Camera camera_;                            // of the last frame
+  shadow::Camera last_camera_;  // of the frame before this one, whose surfaces auto predicts from
   shadow::Light light_;                              // of the last frame
   shadow::ShadowSetup setup_;  // of the last frame
   // PSM: the nearest depth the camera saw in the last frame, pushing the near plane of the next
   // (seed 000, Sect. 6); 0 until a frame was drawn.
   float nearest_visible_ = 0.0f;
-  std::vector<shadow::SurfacePoint> last_surface_;  // auto: sampled from the last frame
   std::vector<glm::vec3> last_receivers_;           // culls_casters: sampled from the last frame
   bool has_last_frame_ = false;
   glm::mat4 view_projection_{1.0f};  // of the last frame
