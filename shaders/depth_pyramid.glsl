@@ -15,14 +15,15 @@ float pyramid_at(int level, ivec2 texel) {
 }
 
 // The farthest depth drawn over the pixels from `lo` to `hi` (inclusive, level 0's): read at the
-// lowest level where they span at most 4 × 4 texels. (At most 2 × 2, a level up, the texels reach
-// further past the rectangle: on the ecosystem's default view 30 % more points and 13 % more
-// triangles; 8 × 8 saves 8 % of the points for 12 % more frame time on llvmpipe.)
+// lowest level where they span at most 16 × 16 texels. A coarser level's texels reach further past
+// the rectangle, into gaps that show the sky: at most 4 × 4 drew 1.8 times the triangles on a dense
+// stand of 10^5 plants and 1.15 times on the ecosystem's default view, and its frames took longer
+// on llvmpipe (docs/benchmarks.md); 32 × 32 saves a few percent more.
 float farthest_over(ivec2 lo, ivec2 hi) {
   lo = clamp(lo, ivec2(0), pyramid_size[0] - 1);
   hi = clamp(hi, ivec2(0), pyramid_size[0] - 1);
   int level = 0;
-  while (level + 1 < pyramid_levels && any(greaterThan((hi >> level) - (lo >> level), ivec2(3)))) ++level;
+  while (level + 1 < pyramid_levels && any(greaterThan((hi >> level) - (lo >> level), ivec2(15)))) ++level;
   ivec2 a = lo >> level, b = hi >> level;
   float farthest = 0.0;
   for (int y = a.y; y <= b.y; ++y) {

@@ -190,7 +190,7 @@ class ShadowBench {
     run.figures.update({{"err", e.err}, {"err_near", e.err_near}, {"acne", e.acne}, {"leak", e.leak},
                         {"alias_p95", alias_percentile(renderer.frame().read_aliasing(), visibility, shadow::p95_fraction)},
                         {"points", renderer.stats().points}, {"triangles", renderer.stats().triangles},
-                        {"shadow_points", renderer.stats().shadow_points}});
+                        {"shadow_points", renderer.stats().shadow_points}, {"shadow_triangles", renderer.stats().shadow_triangles}});
     run.params["shadow_setup"] = renderer.shadow_setup().description;
     return run;
   }

@@ -64,7 +64,8 @@ nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOp
           {"shadow_setup", options.method == "none" ? "none" : renderer.shadow_setup().description}, {"render_ms", render_ms},
           {"alias_p95", alias_percentile(renderer.frame().read_aliasing(), renderer.frame().read_visibility(), shadow::p95_fraction)},
           {"sample_ms", s.sample_ms}, {"host_ms", s.host_ms}, {"shadow_pass_ms", s.shadow_pass_ms}, {"frame_pass_ms", s.frame_pass_ms},
-          {"points", s.points}, {"triangles", s.triangles}, {"shadow_points", s.shadow_points}};
+          {"points", s.points}, {"triangles", s.triangles}, {"shadow_points", s.shadow_points},
+          {"shadow_triangles", s.shadow_triangles}};
 }
 
 }  // namespace

@@ -312,8 +312,12 @@ GpuSampler::Totals GpuSampler::read_totals() const {
   const std::size_t tables = triangles_of_command_.size();
   std::vector<GLuint> commands(command_uints * tables * static_cast<std::size_t>(std::max(bands_used_, 1)));
   glGetNamedBufferSubData(commands_.name(), 0, static_cast<GLsizeiptr>(commands.size() * sizeof(GLuint)), commands.data());
-  Totals out{totals.total_points, totals.polygon_count, 0};
-  for (std::size_t c = 0; c < commands.size() / command_uints; ++c) out.triangles += commands[c * command_uints + 1] * triangles_of_command_[c % tables];
+  Totals out{totals.total_points, totals.polygon_count, 0, casters_band_ ? totals.band_first_point : totals.total_points, 0};
+  for (std::size_t c = 0; c < commands.size() / command_uints; ++c) {
+    const std::size_t triangles = commands[c * command_uints + 1] * triangles_of_command_[c % tables];
+    out.triangles += triangles;
+    if (!casters_band_ || c / tables < static_cast<std::size_t>(*casters_band_)) out.frame_triangles += triangles;
+  }
   return out;
 }
 

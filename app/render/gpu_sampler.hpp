@@ -76,12 +76,14 @@ class GpuSampler {
   std::uint32_t first_plant(std::size_t table) const { return first_plant_[table]; }
 
   // Read back, for tests and figures: per plant (points, polygons: 1 when drawn so), the draws
-  // (first point, count, first sample, plant), and the totals (points, polygon plants, triangles
-  // of the polygon plants).
+  // (first point, count, first sample, plant), and the totals: points, polygon plants and their
+  // triangles of every band, and the points and triangles of the bands the frame shows (all but
+  // the casters').
   std::vector<glm::uvec2> read_counts() const;
   std::vector<glm::uvec4> read_draws() const;
   struct Totals {
     std::size_t points = 0, polygon_plants = 0, triangles = 0;
+    std::size_t frame_points = 0, frame_triangles = 0;
   };
   Totals read_totals() const;
 

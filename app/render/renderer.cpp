@@ -282,7 +282,10 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
   shadow_timer_.start();
   for (std::size_t layer = 0; layer < setup_.views.size(); ++layer) {
     const shadow::ShadowView& v = setup_.views[layer];
-    upload_polygons(settings_.points ? selections[layer] : polygons_in(pointgen::ViewFrusta(culling_frusta(v))));
+    const pointgen::SampledFrame polygons = settings_.points ? pointgen::SampledFrame{} : polygons_in(pointgen::ViewFrusta(culling_frusta(v)));
+    const pointgen::SampledFrame& drawn = settings_.points ? selections[layer] : polygons;
+    upload_polygons(drawn);
+    stats_.shadow_triangles += fixed_triangles() + drawn.triangle_count;
     shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer));
     if (!settings_.points) continue;
     shadow_points_->upload(selections[layer].points, tables_, samples_);
@@ -439,16 +442,21 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   pointgen::SampledFrame selection =
       gpu_sampler_ && maps ? draw_sampled_on_gpu(camera, light) : draw_sampled_on_cpu(camera, light, shadows);
   stats_.points = selection.point_count;
-  for (const pointgen::InstanceTable& table : tables_) {
-    if (!scene_.point_meshes[table.mesh]) stats_.triangles += scene_.meshes[table.mesh].triangle_count() * table.size();
-  }
-  stats_.triangles += selection.triangle_count;
+  stats_.triangles = fixed_triangles() + selection.triangle_count;
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
     char code[16];
     std::snprintf(code, sizeof code, "0x%04x", error);
     throw RuntimeFailure(std::string("OpenGL error ") + code + " while rendering; try a smaller --size or --shadow-size, "
                          "or another --backend");
   }
+}
+
+std::size_t Renderer::fixed_triangles() const {
+  std::size_t triangles = 0;
+  for (const pointgen::InstanceTable& table : tables_) {
+    if (!scene_.point_meshes[table.mesh]) triangles += scene_.meshes[table.mesh].triangle_count() * table.size();
+  }
+  return triangles;
 }
 
 pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camera, const shadow::Light& light, bool shadows) {
@@ -525,16 +533,18 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
   frame_timer_.start();
   finish_frame(camera, light, FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size()});
   stats_.frame_pass_ms += frame_timer_.stop_ms();
-  add_gpu_choice(selection);
-  stats_.shadow_points = selection.point_count;
+  const GpuSampler::Totals chosen = add_gpu_choice(selection);
+  stats_.shadow_points = chosen.points;
+  stats_.shadow_triangles = setup_.views.size() * (fixed_triangles() + chosen.triangles);
   return selection;
 }
 
 // Read back for the figures after the frame's commands, where nothing waits on them.
-void Renderer::add_gpu_choice(pointgen::SampledFrame& selection) const {
+GpuSampler::Totals Renderer::add_gpu_choice(pointgen::SampledFrame& selection) const {
   const GpuSampler::Totals chosen = gpu_sampler_->read_totals();
-  selection.point_count = chosen.points;
-  selection.triangle_count = chosen.triangles;
+  selection.point_count = chosen.frame_points;
+  selection.triangle_count = chosen.frame_triangles;
+  return chosen;
 }
 
 }  // namespace ecoview

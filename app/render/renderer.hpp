@@ -58,6 +58,7 @@ struct FrameStats {
   std::size_t points = 0;     // in the frame pass
   std::size_t triangles = 0;  // in the frame pass
   std::size_t shadow_points = 0;  // in the shadow pass
+  std::size_t shadow_triangles = 0;  // in the shadow pass, every view's
   double sample_ms = 0.0;     // CPU: choosing points or polygons, for both passes
   // CPU time of the program's own threads outside GL calls (DESIGN.md), for the whole frame:
   // posing, sampling, setups, uploads' preparation, read-backs' scans.
@@ -135,8 +136,10 @@ class Renderer {
   // surfaces first, then the map from the same plants (and the casters out of view), then the
   // frame's lighting.
   pointgen::SampledFrame draw_sampled_on_gpu(const shadow::Camera& camera, const shadow::Light& light);
-  // The GPU sampler's points and triangles, read back.
-  void add_gpu_choice(pointgen::SampledFrame& selection) const;
+  // The triangles of the meshes never drawn as points (ground, buildings), all of them.
+  std::size_t fixed_triangles() const;
+  // The GPU sampler's points and triangles in the frame, read back; returns all its totals.
+  GpuSampler::Totals add_gpu_choice(pointgen::SampledFrame& selection) const;
   // The frame's plants chosen on the GPU band by band, nearest first: each band's polygons and
   // points drawn into the frame before the next band is culled against them; then the plants in
   // the casters' body (planes, normals out) that the frame does not show, for the shadow map.
