@@ -421,7 +421,8 @@ bool Renderer::culls_casters() const {
 }
 
 // The nearest depth reduced on the GPU (host_ms: a CPU scan of the read-back took 1 ms at 640×360
-// and 5 ms at 1920×1080 here); the surface and the receivers read back and sampled on the CPU.
+// and 5 ms at 1920×1080 here); the receivers read back and sampled on the CPU. auto predicts from
+// the surfaces the frame pass still holds when the next frame begins.
 void Renderer::remember_last_frame() {
   nearest_visible_ = frame_pass_.nearest_depth();
   last_camera_ = camera_;
