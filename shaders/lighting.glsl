@@ -51,7 +51,7 @@ struct Shading {
 
 // `n` faces the viewer (thin surfaces are lit from either side).
 Shading shade(vec3 position, vec3 n, vec3 albedo) {
-  vec3 to_light = light_type == DIRECTIONAL ? -light_direction : normalize(light_position - position);
+  vec3 to_light = direction_to_light(position);
   float n_dot_l = dot(n, to_light);
 
   float cone = 1.0;

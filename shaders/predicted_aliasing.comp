@@ -24,7 +24,7 @@ void main() {
   if (!(depth > 0.0)) return;
   vec3 position = surface_position(vec2(pixel) + 0.5, depth);
   vec3 n = texelFetch(surface_normals, pixel, 0).xyz;
-  vec3 to_light = light_type == DIRECTIONAL ? -light_direction : normalize(light_position - position);
+  vec3 to_light = direction_to_light(position);
   if (!(dot(n, to_light) > 0.0)) return;
   float octaves = log2(max(aliasing_factor(position, n), 1e-30)) - lowest_octave;
   uint bin = uint(clamp(floor(octaves * bins_per_octave), 0.0, float(bin_count - 1u)));

@@ -7,6 +7,9 @@ uniform vec3 light_direction;  // the way the light travels
 uniform float spot_cos_cone;
 uniform vec3 camera_position;
 
+// The unit direction from p towards the light.
+vec3 direction_to_light(vec3 p) { return light_type == DIRECTIONAL ? -light_direction : normalize(light_position - p); }
+
 // What the frame's shadows need is fixed when the program is built (FramePass::ShadeVariant,
 // from the defines SHADOWS, SHADOW_SELECTION, PARABOLOID_VIEWS and ALIASING): llvmpipe runs both
 // sides of a branch, so code no pixel takes would cost every pixel.
