@@ -1,9 +1,13 @@
 #version 450 core
 // The GPU sampler's second pass per band, one work group: the band's groups' sums turned into
-// their exclusive prefix sums after the lists of the bands before, and the lists' new totals.
+// their exclusive prefix sums after the lists of the bands before, the lists' new totals, and
+// what the band drew.
 #include "sample_common.glsl"
 layout(local_size_x = 256) in;
 
+// Per band, its point draws and polygon plants: none where it drew nothing, so that nothing
+// after it needs the depth pyramid built again.
+layout(std430, binding = 28) writeonly buffer BandDrawn { uint band_drawn[]; };
 uniform uint point_capacity;  // the points the splat's buffers hold: those past it are not drawn
 
 shared uvec4 sums[256];
@@ -29,6 +33,7 @@ void main() {
   }
   barrier();
   if (t == 0u) {
+    band_drawn[band_number - 1u] = carried.y - draw_count + carried.z - polygon_count;
     band_first_point = min(all_points, point_capacity);
     all_points = carried.x;
     total_points = min(carried.x, point_capacity);

@@ -2,6 +2,7 @@
 // the same counts, the same choice of points or polygons, and a draw list a point splat can read.
 #include "app/gl/context.hpp"
 #include "depth_coverage.hpp"
+#include "app/render/depth_pyramid.hpp"
 #include "app/render/gpu_sampler.hpp"
 #include "app/render/renderer.hpp"
 #include "app/scene/scene_file.hpp"
@@ -81,7 +82,7 @@ TEST_F(GpuSampling, ChoosesAsTheCpuSamplerDoesWithoutOcclusion) {
 
   GpuSampler gpu(scene.groups, samples, GpuScene(scene).point_mesh_places());
   gpu.sample(view());
-  const std::vector<glm::uvec2> counts = gpu.read_counts();
+  const std::vector<GpuSampler::Count> counts = gpu.read_counts();
   ASSERT_EQ(counts.size(), scene.groups[0].size() + scene.groups[1].size());
   // Float rounding may put a count one point over or under its rounding threshold, and a plant
   // at a band edge on its other side: at most one plant in a thousand.
@@ -89,13 +90,13 @@ TEST_F(GpuSampling, ChoosesAsTheCpuSamplerDoesWithoutOcclusion) {
   std::uint64_t gpu_points = 0;
   for (std::uint32_t t = 0; t < scene.groups.size(); ++t) {
     for (std::uint32_t i = 0; i < scene.groups[t].size(); ++i) {
-      const glm::uvec2 c = counts[gpu.first_plant(t) + i];
+      const GpuSampler::Count c = counts[gpu.first_plant(t) + i];
       const auto found = oracle.find({t, i});
       const Choice expected = found == oracle.end() ? Choice{} : found->second;
       ++plants;
-      gpu_points += c.x;
-      other_choice += (c.y != 0) != expected.polygons;
-      other_count += c.x + 1 < expected.points || c.x > expected.points + 1;
+      gpu_points += c.points;
+      other_choice += c.polygons != expected.polygons;
+      other_count += c.points + 1 < expected.points || c.points > expected.points + 1;
     }
   }
   EXPECT_LE(other_choice, plants / 1000) << other_choice << " of " << plants;
@@ -106,23 +107,68 @@ TEST_F(GpuSampling, ChoosesAsTheCpuSamplerDoesWithoutOcclusion) {
 TEST_F(GpuSampling, WritesTheDrawsInPlantOrderWithoutGaps) {
   GpuSampler gpu(scene.groups, samples, GpuScene(scene).point_mesh_places());
   gpu.sample(view());
-  const std::vector<glm::uvec2> counts = gpu.read_counts();
+  const std::vector<GpuSampler::Count> counts = gpu.read_counts();
   const std::vector<glm::uvec4> draws = gpu.read_draws();
   ASSERT_FALSE(draws.empty());
   std::size_t next = 0;
   std::uint32_t first_point = 0;
   for (std::uint32_t plant = 0; plant < counts.size(); ++plant) {
-    if (counts[plant].x == 0) continue;
+    if (counts[plant].points == 0) continue;
     ASSERT_LT(next, draws.size());
     const glm::uvec4 d = draws[next++];
     EXPECT_EQ(d.x, first_point);
-    EXPECT_EQ(d.y, counts[plant].x);
+    EXPECT_EQ(d.y, counts[plant].points);
     EXPECT_EQ(d.w, plant);
     const std::size_t table = plant < gpu.first_plant(1) ? 0 : 1;
     EXPECT_EQ(d.z, samples.first_sample(scene.groups[table].mesh));
     first_point += d.y;
   }
   EXPECT_EQ(next, draws.size());
+}
+
+// A band that drew nothing leaves the depth pyramid as it was (DepthPyramid::build_if): the
+// sampler says which did, as the plants' own counts in each band tell.
+TEST_F(GpuSampling, TellsWhichBandsDrewSomething) {
+  GpuSampler gpu(scene.groups, samples, GpuScene(scene).point_mesh_places());
+  const std::vector<glm::vec2> bands = GpuSampler::bands(scene.camera.far);
+  gpu.begin(view(), bands);
+  for (int b = 0; b < gpu.band_count(); ++b) gpu.add_band(b, nullptr);
+  std::vector<bool> drew(bands.size(), false);
+  for (const GpuSampler::Count& c : gpu.read_counts()) {
+    if (c.band && (c.points > 0 || c.polygons)) drew[static_cast<std::size_t>(*c.band)] = true;
+  }
+  std::vector<GLuint> said(bands.size());
+  glGetNamedBufferSubData(gpu.band_drawn(), 0, static_cast<GLsizeiptr>(said.size() * sizeof(GLuint)), said.data());
+  ASSERT_TRUE(drew.front()) << "plants stand within the first band";
+  ASSERT_FALSE(drew.back()) << "none beyond the plantation, 450 m away";
+  for (std::size_t b = 0; b < bands.size(); ++b) EXPECT_EQ(said[b] != 0, drew[b]) << "band " << b;
+}
+
+// Over a depth texture that changes between builds, build_if keeps the pyramid where its flag is
+// zero and builds it again where it is not.
+TEST(DepthPyramidBuild, IsKeptWhereNothingWasDrawnAndBuiltAgainWhereSomethingWas) {
+  const std::unique_ptr<GlContext> context = create_headless_context("egl");
+  const glm::ivec2 size(40, 24);
+  const gl::Texture depth(GL_TEXTURE_2D);
+  glTextureStorage2D(depth.name(), 1, GL_DEPTH_COMPONENT32F, size.x, size.y);
+  const auto fill = [&](float d) { glClearTexImage(depth.name(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &d); };
+  gl::Buffer no_points, flags;
+  gl::store(no_points, std::vector<GLuint>(static_cast<std::size_t>(size.x * size.y), 0xFFFFFFFFu));
+  gl::store(flags, std::vector<GLuint>{0u, 3u});
+  const DepthPyramid pyramid(size);
+  const auto all_at = [&](float d) {
+    const std::vector<float> texels = pyramid.read(0);
+    return std::all_of(texels.begin(), texels.end(), [d](float t) { return t == d; });
+  };
+  fill(0.75f);
+  pyramid.build(depth.name(), no_points.name());
+  EXPECT_TRUE(all_at(0.75f));
+  fill(0.25f);
+  pyramid.build_if(flags.name(), 0, depth.name(), no_points.name());
+  EXPECT_TRUE(all_at(0.75f)) << "kept";
+  pyramid.build_if(flags.name(), 1, depth.name(), no_points.name());
+  EXPECT_TRUE(all_at(0.25f)) << "built again";
+  EXPECT_EQ(pyramid.read(pyramid.levels() - 1), std::vector<float>{0.25f}) << "to its top";
 }
 
 TEST_F(GpuSampling, ItsFrameCoversWhatThePolygonsCover) {

@@ -20,6 +20,9 @@ class DepthPyramid {
   // and the points' nearest depths (the float bits of window depths, one uint per pixel, all ones
   // where none).
   void build(GLuint polygon_depth, GLuint point_depths) const;
+  // Or keeps it as it is where the uint at `flag` in the GL buffer `flags` is zero (nothing drawn
+  // since it was built), decided on the GPU without a read-back.
+  void build_if(GLuint flags, std::size_t flag, GLuint polygon_depth, GLuint point_depths) const;
   // Or, over a shadow view's image, as a receiver mask: level 0 is 1 where `frame` (the frame's
   // pyramid, last built) shows a surface through `map_view_projection`, 0 elsewhere, and each
   // level above the most of the 2 × 2 below; a caster whose rectangle there holds no 1 shadows
@@ -27,15 +30,24 @@ class DepthPyramid {
   void build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection, const glm::mat4& map_view_projection) const;
   // Binds it for a program that includes depth_pyramid.glsl.
   void bind_for(const gl::Program& program) const;
+  // Its levels, the last one texel; a level's texels, rows from the bottom (for tests).
+  std::size_t levels() const { return sizes_.size(); }
+  std::vector<float> read(std::size_t level) const;
 
  private:
   void set_levels(const gl::Program& program) const;
-  void reduce(std::size_t first_level) const;  // the levels from first_level up
+  void build_base(GLuint polygon_depth, GLuint point_depths) const;  // the levels from 0 up
+  void reduce(std::size_t first_level) const;                         // the levels from first_level up
+  void dispatch(std::size_t pass) const;                              // a pass's work groups, from commands_
   glm::ivec2 size_;
   std::vector<glm::ivec2> sizes_;      // per level
   std::vector<GLuint> offsets_;        // per level, in floats
   gl::Buffer depths_;
-  gl::Program base_program_, reduce_program_;
+  // The build's passes as indirect dispatches, a uvec4 each: [0] the base's, [l] level l's from
+  // the one below. The whole build in whole_; what the next build runs in commands_ (build_if may
+  // empty them).
+  gl::Buffer whole_, commands_;
+  gl::Program base_program_, reduce_program_, dispatch_program_;
   // Made with the pyramid, not with the first frame that marks receivers, so that frame times
   // hold no shader compilation.
   gl::Program clear_marks_program_, marks_program_;

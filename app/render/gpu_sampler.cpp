@@ -35,7 +35,8 @@ constexpr std::size_t command_uints = GpuSampler::command_bytes / sizeof(GLuint)
 constexpr GLuint draws_binding = 1, instances_binding = 2, block_draws_binding = 8, plant_meshes_binding = 10,
                  meshes_binding = 11, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
                  polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19, band_list_binding = 20,
-                 band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24;
+                 band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24,
+                 band_drawn_binding = 28;
 constexpr std::size_t plants_per_group = 1024, threads_per_group = 256;  // shaders/sample_count.comp
 constexpr std::size_t points_per_block = 16;                              // shaders/point_common.glsl
 constexpr std::size_t max_planes = 96;                                    // planes[96]
@@ -144,6 +145,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<GLuint>(band_list_, plant_count_);
   storage<glm::uvec2>(band_ranges_, max_bands);
   storage<glm::uvec4>(band_dispatch_, 2 * max_bands);
+  gl::store(band_drawn_, std::vector<GLuint>(max_bands, 1u));  // as if each drew: a pyramid built over them stays right
 }
 
 void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed) {
@@ -173,6 +175,7 @@ void GpuSampler::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_keys_binding, band_keys_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, group_bands_binding, group_bands_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_dispatch_binding, band_dispatch_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_drawn_binding, band_drawn_.name());
 }
 
 void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands,
@@ -289,12 +292,14 @@ PointDrawList GpuSampler::draw_list() const {
 }
 
 
-std::vector<glm::uvec2> GpuSampler::read_counts() const {
+std::vector<GpuSampler::Count> GpuSampler::read_counts() const {
   std::vector<glm::uvec4> counts(plant_count_);
   if (!counts.empty()) glGetNamedBufferSubData(counts_.name(), 0, static_cast<GLsizeiptr>(counts.size() * sizeof(glm::uvec4)), counts.data());
-  std::vector<glm::uvec2> out;
+  std::vector<Count> out;
   out.reserve(counts.size());
-  for (const glm::uvec4& c : counts) out.emplace_back(c.x, c.z);
+  for (const glm::uvec4& c : counts) {
+    out.push_back({c.x, c.z != 0, c.y > 0 ? std::optional<int>(static_cast<int>(c.y) - 1) : std::nullopt});
+  }
   return out;
 }
 

@@ -71,15 +71,23 @@ class GpuSampler {
   std::size_t commands_offset(int band) const { return static_cast<std::size_t>(band) * triangles_of_command_.size() * command_bytes; }
   static constexpr std::size_t command_bytes = 5 * sizeof(GLuint);  // DrawElementsIndirectCommand
 
+  // A GL buffer of a uint per band, written by add_band: zero where the band drew nothing.
+  GLuint band_drawn() const { return band_drawn_.name(); }
+
   std::size_t plant_count() const { return plant_count_; }
   // The plant index of a table's first instance.
   std::uint32_t first_plant(std::size_t table) const { return first_plant_[table]; }
 
-  // Read back, for tests and figures: per plant (points, polygons: 1 when drawn so), the draws
-  // (first point, count, first sample, plant), and the totals: points, polygon plants and their
-  // triangles of every band, and the points and triangles of the bands the frame shows (all but
-  // the casters').
-  std::vector<glm::uvec2> read_counts() const;
+  // Read back, for tests and figures: per plant its points, whether drawn as polygons and its band
+  // this frame (none: not in view), the draws (first point, count, first sample, plant), and the
+  // totals: points, polygon plants and their triangles of every band, and the points and triangles
+  // of the bands the frame shows (all but the casters').
+  struct Count {
+    std::uint32_t points = 0;
+    bool polygons = false;
+    std::optional<int> band;
+  };
+  std::vector<Count> read_counts() const;
   std::vector<glm::uvec4> read_draws() const;
   struct Totals {
     std::size_t points = 0, polygon_plants = 0, triangles = 0;
@@ -99,7 +107,7 @@ class GpuSampler {
   std::vector<std::size_t> triangles_of_command_;  // per place, the mesh's triangles
   gl::Buffer instances_, plant_meshes_, meshes_, counts_, offsets_, group_sums_, draws_, block_draws_, totals_;
   gl::Buffer polygon_instances_, tables_, commands_;
-  gl::Buffer band_keys_, group_bands_, band_list_, band_ranges_, band_dispatch_;
+  gl::Buffer band_keys_, group_bands_, band_list_, band_ranges_, band_dispatch_, band_drawn_;
   gl::Program keys_program_, bin_count_program_, bands_program_, place_program_;
   gl::Program count_program_, groups_program_, draws_program_, commands_program_;
 };

@@ -364,8 +364,10 @@ void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<sha
   gpu_sampler_->begin(sampler_view(camera, settings_, {view_projection_}), bands, casters);
   frame_points_.use(gpu_sampler_->draw_list(), samples_);
   frame_points_.begin();
+  // The first band is hidden by the ground alone; each next one by what the bands before drew.
+  occluders_->build(frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
   for (std::size_t b = 0; b < bands.size(); ++b) {
-    occluders_->build(frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
+    if (b > 0) occluders_->build_if(gpu_sampler_->band_drawn(), b - 1, frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
     gpu_sampler_->add_band(static_cast<int>(b), occluders_.get());
     frame_pass_.add_chosen_surfaces(gpu_scene_, *gpu_sampler_, static_cast<int>(b), camera);
     frame_points_.add(view_projection_, settings_.splat_size, 0.0f, true);
@@ -373,7 +375,7 @@ void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<sha
   // Casters out of view: for the shadow map alone; their points fall outside the frame.
   if (!casters.empty()) {
     const glm::mat4 map_view = culling_frusta(setup_.views.front()).front();
-    occluders_->build(frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
+    occluders_->build_if(gpu_sampler_->band_drawn(), bands.size() - 1, frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
     receivers_->build_receivers(*occluders_, view_projection_, map_view);
     gpu_sampler_->add_casters(map_view, static_cast<float>(settings_.shadow_size) * static_cast<float>(settings_.shadow_size), *receivers_);
   }
