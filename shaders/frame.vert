@@ -2,9 +2,7 @@
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 vertex_color;
-layout(location = 3) in mat4 model;
-layout(location = 7) in mat3 normal_matrix;
-layout(location = 10) in vec3 instance_color;
+#include "instance.glsl"
 
 uniform mat4 view;
 uniform mat4 view_projection;
@@ -14,9 +12,9 @@ out vec3 albedo;
 out float view_depth;
 
 void main() {
-  vec4 world = model * vec4(position, 1.0);
-  world_normal = normal_matrix * normal;
-  albedo = vertex_color * instance_color;
+  vec4 world = instance_model() * vec4(position, 1.0);
+  world_normal = instance_normal_matrix() * normal;
+  albedo = vertex_color * instance_color();
   view_depth = -(view * world).z;
   gl_Position = view_projection * world;
 }

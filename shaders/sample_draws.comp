@@ -2,18 +2,13 @@
 // The GPU sampler's third pass, per band: each of the band's plants with points writes its draw,
 // in plant order after the bands before, as the point splat reads them (first point, count, first sample,
 // instance), and the draw of each block of points that starts in its run; each plant drawn as
-// polygons its instance for the polygon draws (GpuScene's instance layout).
+// polygons its index for the polygon draws (instance.glsl, PLANT_INDEX).
 #include "sample_common.glsl"
 layout(local_size_x = 256) in;
 
-struct PolygonInstance {
-  mat4 model;
-  vec4 normal_matrix[3];  // columns of mat3(transpose(inverse(model)))
-  vec4 color;
-};
 layout(std430, binding = 1) writeonly buffer Draws { uvec4 draws[]; };
 layout(std430, binding = 8) writeonly buffer BlockDraws { uint block_draws[]; };
-layout(std430, binding = 16) writeonly buffer PolygonInstances { PolygonInstance polygon_instances[]; };
+layout(std430, binding = 16) writeonly buffer PolygonInstances { uint polygon_instances[]; };
 const uint points_per_block = 16u;  // point_common.glsl
 uniform uint block_capacity;        // beyond it the frame's points are not drawn
 
@@ -24,7 +19,6 @@ void main() {
   uint i = band_list[band.x + place];
   uvec4 c = counts[i];
   if (c.x == 0u && c.z == 0u) return;
-  mat4 model = instances[i].model;
   uvec4 at = offsets[band.x + place] + group_sums[place / plants_per_group];
   if (c.x > 0u) {
     draws[at.y] = uvec4(at.x, c.x, meshes[plant_meshes[i].x].sizes.z, i);
@@ -32,8 +26,5 @@ void main() {
       block_draws[b] = at.y;
     }
   }
-  if (c.z > 0u) {
-    mat3 n = transpose(inverse(mat3(model)));
-    polygon_instances[at.z] = PolygonInstance(model, vec4[3](vec4(n[0], 0.0), vec4(n[1], 0.0), vec4(n[2], 0.0)), instances[i].tint);
-  }
+  if (c.z > 0u) polygon_instances[at.z] = i;
 }

@@ -63,7 +63,7 @@ GLenum stage_of(const std::string& file) {
 
 }  // namespace
 
-Program build_program(std::initializer_list<std::string> files, const std::string& defines) {
+Program build_program(const std::vector<std::string>& files, const std::string& defines) {
   std::vector<Shader> shaders;
   std::string names;
   for (const std::string& file : files) {

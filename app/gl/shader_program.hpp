@@ -3,7 +3,7 @@
 
 #include <glm/glm.hpp>
 
-#include <initializer_list>
+#include <vector>
 #include <string>
 
 namespace ecoview::gl {
@@ -11,7 +11,7 @@ namespace ecoview::gl {
 // Compiles and links the embedded shaders at shaders/<file>, each for the stage its extension
 // names: .vert, .tesc, .tese, .geom, .frag, or .comp alone. `defines` (lines of `#define NAME
 // VALUE`) go into each file after its `#version` line.
-Program build_program(std::initializer_list<std::string> files, const std::string& defines = {});
+Program build_program(const std::vector<std::string>& files, const std::string& defines = {});
 
 // Uniform setters by name; a name the linker dropped is ignored, as GL does.
 void set_uniform(const Program& program, const char* name, const glm::mat4& value);

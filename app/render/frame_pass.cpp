@@ -58,6 +58,7 @@ FramePass::FramePass(int width, int height, bool aliasing)
       height_(height),
       aliasing_wanted_(aliasing),
       surface_program_(gl::build_program({"frame.vert", "surface.frag"})),
+      plant_surface_program_(gl::build_program({"frame.vert", "surface.frag"}, "#define PLANT_INDEX\n")),
       point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})),
       nearest_program_(gl::build_program({"nearest_depth.comp"})) {
   glNamedBufferStorage(nearest_.name(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -90,23 +91,23 @@ void FramePass::draw_surfaces(const GpuScene& scene, const shadow::Camera& camer
   const float far_depth = 1.0f;
   glClearNamedFramebufferfv(fb, GL_COLOR, 2, no_surface);
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
-  start_surfaces(camera);
+  start_surfaces(surface_program_, camera);
   scene.draw();
 }
 
 void FramePass::add_chosen_surfaces(const GpuScene& scene, const GpuSampler& sampler, int band, const shadow::Camera& camera) const {
-  start_surfaces(camera);
+  start_surfaces(plant_surface_program_, camera);
   scene.draw_chosen(sampler, band, band + 1);
 }
 
-void FramePass::start_surfaces(const shadow::Camera& camera) const {
+void FramePass::start_surfaces(const gl::Program& program, const shadow::Camera& camera) const {
   glBindFramebuffer(GL_FRAMEBUFFER, surfaces_.name());
   glViewport(0, 0, width_, height_);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
-  glUseProgram(surface_program_.name());
-  set_camera(surface_program_, camera);
+  glUseProgram(program.name());
+  set_camera(program, camera);
 }
 
 void FramePass::add_points(const PointSplat& points, const shadow::Camera& camera) const {

@@ -91,8 +91,8 @@ class FramePass {
   void set_lighting(const gl::Program& program, const shadow::Camera& surface_camera, const shadow::Camera& camera,
                     const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;
   void set_camera(const gl::Program& program, const shadow::Camera& camera) const;
-  // Binds the surfaces' targets and program for polygons.
-  void start_surfaces(const shadow::Camera& camera) const;
+  // Binds the surfaces' targets and a program for polygons.
+  void start_surfaces(const gl::Program& program, const shadow::Camera& camera) const;
   void set_light(const gl::Program& program, const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;
   void draw_fullscreen() const;  // one triangle over the viewport
 
@@ -110,6 +110,7 @@ class FramePass {
   gl::Texture aliasing_{GL_TEXTURE_2D};
   gl::Framebuffer lit_;
   gl::Program surface_program_;
+  gl::Program plant_surface_program_;  // for the GPU sampler's polygon plants (shaders/instance.glsl)
   gl::Program point_program_;
   mutable std::map<ShadeVariant, gl::Program> shade_programs_, prediction_programs_;
   gl::Buffer histograms_;  // predict_aliasing's

@@ -22,11 +22,6 @@ struct GpuMesh {
   glm::vec4 moments[3];
   glm::uvec4 sizes;
 };
-struct PolygonInstance {
-  glm::mat4 model;
-  glm::vec4 normal_matrix[3];
-  glm::vec4 color;
-};
 struct GpuTotals {
   GLuint total_points, draw_count, band_first_point, all_points, polygon_count;
 };
@@ -124,9 +119,9 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   // Room for as many points as every plant's whole list, or as a splat's buffers address (one
   // uvec2 per point where the frame's splat puts it).
   point_capacity_ = std::min(most_points, gl::max_storage_block_bytes() / sizeof(glm::uvec2));
-  if (plant_count_ * sizeof(PolygonInstance) > gl::max_storage_block_bytes()) {
-    throw RuntimeFailure("the scene's " + std::to_string(plant_count_) + " plants are more than this driver's shaders address "
-                         "as polygon instances; use fewer plants");
+  if (plant_count_ * sizeof(GpuInstance) > gl::max_storage_block_bytes()) {
+    throw RuntimeFailure("the scene's " + std::to_string(plant_count_) + " plants are more than this driver's shaders address; "
+                         "use fewer plants");
   }
   gl::store(instances_, instances, GL_DYNAMIC_STORAGE_BIT);  // moving plants are posed each frame
   gl::store(plant_meshes_, plant_meshes);
@@ -138,7 +133,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<glm::uvec4>(draws_, plant_count_);
   storage<GLuint>(block_draws_, (point_capacity_ + points_per_block - 1) / points_per_block);
   gl::store(totals_, std::vector<GpuTotals>(1, GpuTotals{}));  // stays so in a scene without plants
-  storage<PolygonInstance>(polygon_instances_, plant_count_);
+  storage<GLuint>(polygon_instances_, plant_count_);
   storage<GLuint>(commands_, command_uints * max_bands * std::max<std::size_t>(triangles_of_command_.size(), 1));
   storage<GLuint>(band_keys_, plant_count_);
   storage<GLuint>(group_bands_, group_count_ * max_bands);

@@ -63,8 +63,10 @@ class GpuSampler {
 
   // The point draws so far, for PointSplat::use.
   PointDrawList draw_list() const;
-  // The polygon plants (GpuScene's instance layout) and the indirect draws of a band's, one
+  // The plants resident on the GPU (a mat4 transform and a tint each, shaders/instance.glsl), the
+  // plant indices of those drawn as polygons, and the indirect draws of a band's, one
   // DrawElementsIndirectCommand per table of point meshes.
+  GLuint plants() const { return instances_.name(); }
   GLuint polygon_instances() const { return polygon_instances_.name(); }
   GLuint polygon_commands() const { return commands_.name(); }
   // The byte offset of a band's commands, one per table of plants, band after band.

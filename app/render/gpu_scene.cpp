@@ -29,6 +29,8 @@ std::vector<Instance> instances_of(const pointgen::InstanceTable& table) {
   return instances;
 }
 
+constexpr GLuint resident_plants_binding = 2;  // shaders/instance.glsl
+
 void attribute(GLuint vao, GLuint location, GLuint binding, GLint size, GLuint offset) {
   glEnableVertexArrayAttrib(vao, location);
   glVertexArrayAttribFormat(vao, location, size, GL_FLOAT, GL_FALSE, offset);
@@ -76,14 +78,18 @@ GpuScene::GpuScene(const Scene& scene) {
   }
 }
 
-void GpuScene::set_attributes(GLuint vao, GLuint vertices, GLuint indices, GLuint instances) {
+void GpuScene::set_vertex_attributes(GLuint vao, GLuint vertices, GLuint indices) {
   glVertexArrayVertexBuffer(vao, 0, vertices, 0, sizeof(Vertex));
-  glVertexArrayVertexBuffer(vao, 1, instances, 0, sizeof(Instance));
-  glVertexArrayBindingDivisor(vao, 1, 1);
   glVertexArrayElementBuffer(vao, indices);
   attribute(vao, 0, 0, 3, offsetof(Vertex, position));
   attribute(vao, 1, 0, 3, offsetof(Vertex, normal));
   attribute(vao, 2, 0, 3, offsetof(Vertex, color));
+}
+
+void GpuScene::set_attributes(GLuint vao, GLuint vertices, GLuint indices, GLuint instances) {
+  set_vertex_attributes(vao, vertices, indices);
+  glVertexArrayVertexBuffer(vao, 1, instances, 0, sizeof(Instance));
+  glVertexArrayBindingDivisor(vao, 1, 1);
   for (GLuint c = 0; c < 4; ++c) attribute(vao, 3 + c, 1, 4, offsetof(Instance, model) + c * sizeof(glm::vec4));
   for (GLuint c = 0; c < 3; ++c) attribute(vao, 7 + c, 1, 3, offsetof(Instance, normal_matrix) + c * sizeof(glm::vec4));
   attribute(vao, 10, 1, 3, offsetof(Instance, color));
@@ -102,12 +108,20 @@ void GpuScene::attach(const GpuSampler& sampler) {
                              static_cast<GLintptr>(places_[m].first_index) * static_cast<GLintptr>(sizeof(GLuint)),
                              static_cast<GLsizeiptr>(meshes_[m].index_count) * static_cast<GLsizeiptr>(sizeof(GLuint)));
   }
-  set_attributes(chosen_->vertex_array.name(), chosen_->vertices.name(), chosen_->indices.name(), sampler.polygon_instances());
+  // An instance is a plant index (shaders/instance.glsl, PLANT_INDEX).
+  const GLuint vao = chosen_->vertex_array.name();
+  set_vertex_attributes(vao, chosen_->vertices.name(), chosen_->indices.name());
+  glVertexArrayVertexBuffer(vao, 1, sampler.polygon_instances(), 0, sizeof(GLuint));
+  glVertexArrayBindingDivisor(vao, 1, 1);
+  glEnableVertexArrayAttrib(vao, 3);
+  glVertexArrayAttribIFormat(vao, 3, 1, GL_UNSIGNED_INT, 0);
+  glVertexArrayAttribBinding(vao, 3, 1);
 }
 
 void GpuScene::draw_chosen(const GpuSampler& sampler, int first, int end, GLenum mode) const {
   if (!chosen_ || end <= first) return;
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, sampler.polygon_commands());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, resident_plants_binding, sampler.plants());
   glBindVertexArray(chosen_->vertex_array.name());
   glMultiDrawElementsIndirect(mode, GL_UNSIGNED_INT, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(sampler.commands_offset(first))),
                               static_cast<GLsizei>(sampler.commands_offset(end) - sampler.commands_offset(first)) /

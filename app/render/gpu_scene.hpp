@@ -32,7 +32,8 @@ class GpuScene {
   };
   const std::vector<DrawPlace>& point_mesh_places() const { return places_; }
   // Draws, from the next frame on, the plants of point meshes a GpuSampler chooses as polygons
-  // with draw_chosen (its instances, in GpuScene's layout, and its indirect draws).
+  // with draw_chosen (its plant indices and indirect draws), for programs built with PLANT_INDEX
+  // (shaders/instance.glsl).
   void attach(const GpuSampler& sampler);
   // The plants bands `first` to `end` - 1 of the attached sampler chose as polygons, in one
   // indirect multi-draw; `mode` as for draw().
@@ -61,6 +62,7 @@ class GpuScene {
     std::vector<Range> part_instances;
     std::size_t capacity = 0;
   };
+  static void set_vertex_attributes(GLuint vertex_array, GLuint vertices, GLuint indices);
   static void set_attributes(GLuint vertex_array, GLuint vertices, GLuint indices, GLuint instances);
   void reserve(Group& group, std::size_t instances);
   std::vector<Mesh> meshes_;

@@ -11,17 +11,17 @@ namespace {
 constexpr float offset_factor = 2.0f;
 constexpr float offset_units = 4.0f;
 
-void draw_chosen(const GpuScene& scene, const GpuSampler* chosen, GLenum mode) {
-  if (chosen) scene.draw_chosen(*chosen, 0, chosen->band_count(), mode);
-}
+const std::vector<std::string> paraboloid_stages{"world_position.vert", "shadow_paraboloid.tesc", "shadow_paraboloid.tese", "shadow_depth.frag"};
+const std::string plant_index = "#define PLANT_INDEX\n";
 
 }  // namespace
 
 ShadowPass::ShadowPass(int size)
     : size_(size),
       program_(gl::build_program({"shadow_depth.vert", "shadow_depth.frag"})),
-      paraboloid_program_(gl::build_program({"world_position.vert", "shadow_paraboloid.tesc", "shadow_paraboloid.tese",
-                                             "shadow_depth.frag"})) {
+      plant_program_(gl::build_program({"shadow_depth.vert", "shadow_depth.frag"}, plant_index)),
+      paraboloid_program_(gl::build_program(paraboloid_stages)),
+      plant_paraboloid_program_(gl::build_program(paraboloid_stages, plant_index)) {
   allocate(1);
 }
 
@@ -58,21 +58,28 @@ void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup,
   const float far_depth = 1.0f;
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
   const shadow::ShadowView& view = setup.views[static_cast<std::size_t>(layer)];
+  const gl::Program& scene_program = view.paraboloid ? paraboloid_program_ : program_;
+  const gl::Program& plant_program = view.paraboloid ? plant_paraboloid_program_ : plant_program_;
+  for (const gl::Program* p : {&scene_program, &plant_program}) {
+    if (view.paraboloid) {
+      gl::set_uniform(*p, "light_view", view.view);
+      gl::set_uniform(*p, "paraboloid", view.paraboloid_parameters());
+    } else {
+      gl::set_uniform(*p, "light_view_projection", view.view_projection());
+    }
+  }
+  const GLenum mode = view.paraboloid ? GL_PATCHES : GL_TRIANGLES;
   if (view.paraboloid) {
-    glUseProgram(paraboloid_program_.name());
-    gl::set_uniform(paraboloid_program_, "light_view", view.view);
-    gl::set_uniform(paraboloid_program_, "paraboloid", view.paraboloid_parameters());
     glPatchParameteri(GL_PATCH_VERTICES, 3);
     glEnable(GL_CLIP_DISTANCE0);
-    scene.draw(GL_PATCHES);
-    draw_chosen(scene, chosen, GL_PATCHES);
-    glDisable(GL_CLIP_DISTANCE0);
-  } else {
-    glUseProgram(program_.name());
-    gl::set_uniform(program_, "light_view_projection", view.view_projection());
-    scene.draw();
-    draw_chosen(scene, chosen, GL_TRIANGLES);
   }
+  glUseProgram(scene_program.name());
+  scene.draw(mode);
+  if (chosen) {
+    glUseProgram(plant_program.name());
+    scene.draw_chosen(*chosen, 0, chosen->band_count(), mode);
+  }
+  glDisable(GL_CLIP_DISTANCE0);
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 

@@ -29,8 +29,9 @@ class ShadowPass {
   int layers_ = 0;
   gl::Texture depth_{GL_TEXTURE_2D_ARRAY};
   gl::Framebuffer framebuffer_;
-  gl::Program program_;
-  gl::Program paraboloid_program_;
+  // Each for GpuScene's groups, and for the GPU sampler's polygon plants (shaders/instance.glsl).
+  gl::Program program_, plant_program_;
+  gl::Program paraboloid_program_, plant_paraboloid_program_;
 };
 
 }  // namespace ecoview
