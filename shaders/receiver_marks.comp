@@ -2,6 +2,8 @@
 // Marks, in level 0 of a max pyramid over a shadow view's image (depth_pyramid.glsl), the texels
 // where the frame shows a surface: 1 there, 0 elsewhere; with CLEAR the zeros alone. The frame's
 // surfaces are its nearest window depths, level 0 of the frame's own depth pyramid (binding 25).
+// Of a cascade, only the surfaces that look it up: none inside an earlier cascade's square
+// (shadow_views.glsl, FIRST_CONTAINING).
 #define PYRAMID_WRITTEN
 #include "depth_pyramid.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -17,6 +19,17 @@ uniform ivec2 frame_size;
 uniform int pixel_step;         // every this many pixels each way
 uniform mat4 frame_to_world;    // inverse of the frame's view-projection
 uniform mat4 map_view_projection;
+uniform mat4 earlier_views[8];  // world → clip of the cascades before this one
+uniform int earlier_count;
+uniform float inside;  // how far into an earlier cascade's square a surface looks that one up, NDC
+
+bool in_earlier_view(vec3 p) {
+  for (int i = 0; i < earlier_count; ++i) {
+    vec4 clip = earlier_views[i] * vec4(p, 1.0);
+    if (all(lessThanEqual(abs(clip.xy), vec2(inside * clip.w))) && abs(clip.z) <= clip.w) return true;
+  }
+  return false;
+}
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pixel_step;
@@ -25,7 +38,9 @@ void main() {
   if (!(depth < 1.0)) return;  // nothing drawn there
   vec2 ndc = (vec2(pixel) + 0.5) / vec2(frame_size) * 2.0 - 1.0;
   vec4 world = frame_to_world * vec4(ndc, depth * 2.0 - 1.0, 1.0);
-  vec4 clip = map_view_projection * vec4(world.xyz / world.w, 1.0);
+  vec3 position = world.xyz / world.w;
+  if (in_earlier_view(position)) return;
+  vec4 clip = map_view_projection * vec4(position, 1.0);
   if (!(clip.w > 0.0)) return;
   vec2 map = clip.xy / clip.w;
   if (any(greaterThan(abs(map), vec2(1.0)))) return;

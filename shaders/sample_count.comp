@@ -5,6 +5,7 @@
 // chooses them. Then the prefix sums of the counts within each work group.
 #include "sample_common.glsl"
 #include "depth_pyramid.glsl"
+#include "plant_boxes.glsl"
 layout(local_size_x = 256) in;
 
 uniform mat4 view_projection;  // the first view's, for occlusion
@@ -27,42 +28,6 @@ uniform float points_per_triangle;
 // The band around break-even (pointgen/sampling/view_sampler.cpp).
 const float band_low = 0.8, band_high = 1.25;
 
-// The NDC rectangle of the plant's bounds box through `m`, and its nearest NDC depth; false where
-// the box reaches behind the eye.
-bool box_rect(mat4 m, mat4 model, SampledMesh mesh, out vec3 lo, out vec3 hi) {
-  lo = vec3(1e30);
-  hi = vec3(-1e30);
-  for (int c = 0; c < 8; ++c) {
-    vec3 corner = mesh.center_radius.xyz + mesh.half_size_area.xyz * vec3((c & 1) != 0 ? 1.0 : -1.0, (c & 2) != 0 ? 1.0 : -1.0,
-                                                                          (c & 4) != 0 ? 1.0 : -1.0);
-    vec4 clip = m * (model * vec4(corner, 1.0));
-    if (!(clip.w > 0.0)) return false;
-    vec3 ndc = clip.xyz / clip.w;
-    lo = min(lo, ndc);
-    hi = max(hi, ndc);
-  }
-  return true;
-}
-
-// The pyramid texels over an NDC rectangle.
-void texels_of(vec3 lo, vec3 hi, out ivec2 first, out ivec2 last) {
-  vec2 size = vec2(pyramid_size[0]);
-  first = ivec2(floor((lo.xy * 0.5 + 0.5) * size));
-  last = ivec2(floor((hi.xy * 0.5 + 0.5) * size));
-}
-
-bool off_image(vec3 lo, vec3 hi) { return any(lessThan(hi.xy, vec2(-1.0))) || any(greaterThan(lo.xy, vec2(1.0))); }
-
-// Whether a caster's box covers no receiver in the mask; false where it reaches behind the light.
-bool shadows_nothing(mat4 model, SampledMesh mesh) {
-  vec3 lo, hi;
-  if (!box_rect(map_view_projection, model, mesh, lo, hi)) return false;
-  if (off_image(lo, hi)) return true;
-  ivec2 first, last;
-  texels_of(lo, hi, first, last);
-  return farthest_over(first, last) < 0.5;
-}
-
 // Whether the plant's bounds box is off screen or behind what nearer bands drew over all of its
 // screen rectangle. Not where the box reaches behind the eye.
 bool hidden(mat4 model, SampledMesh mesh) {
@@ -84,7 +49,7 @@ float facing(SampledMesh mesh, vec3 v) {
 uvec2 count_plant(uint i) {
   mat4 model = instances[i].model;
   SampledMesh mesh = meshes[plant_meshes[i].x];
-  if ((occlusion && hidden(model, mesh)) || (receivers_only && shadows_nothing(model, mesh))) return uvec2(0u);
+  if ((occlusion && hidden(model, mesh)) || (receivers_only && shadows_nothing(map_view_projection, model, mesh))) return uvec2(0u);
   vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
   float scale = pow(abs(determinant(mat3(model))), 1.0 / 3.0);
   float radius = mesh.center_radius.w * scale;

@@ -7,6 +7,7 @@
 #include "app/render/renderer.hpp"
 #include "app/scene/scene_file.hpp"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -169,6 +170,40 @@ TEST(DepthPyramidBuild, IsKeptWhereNothingWasDrawnAndBuiltAgainWhereSomethingWas
   pyramid.build_if(flags.name(), 1, depth.name(), no_points.name());
   EXPECT_TRUE(all_at(0.25f)) << "built again";
   EXPECT_EQ(pyramid.read(pyramid.levels() - 1), std::vector<float>{0.25f}) << "to its top";
+}
+
+// A cascade draws the polygon plants that shadow the surfaces looking it up: a near beech under a
+// high sun shadows the first cascade alone, and goes into that cascade's map alone; under a low
+// sun behind the camera its shadow stretches into the far cascades, and is as large as the
+// uniform map's of it.
+TEST_F(GpuSampling, ACascadeDrawsThePlantsWhoseShadowsFallInIt) {
+  settings.width = 480;
+  settings.height = 270;
+  settings.gpu_sampler = true;
+  struct Frame {
+    std::size_t shadowed = 0, triangles = 0, shadow_triangles = 0;
+  };
+  const auto render = [&](ShadowMethod method, const std::string& direction) {
+    settings.method = method;
+    const Scene s = load_scene({"beech.json", R"({"camera": {"position": [0, 2, 0], "target": [0, 0, -20], "fov_y_deg": 50, "near": 0.5, "far": 300},
+        "lights": [{"type": "directional", "direction": )" + direction + R"(}],
+        "objects": [{"type": "plane", "center": [0, 0, -100], "size": [300, 300]},
+                    {"type": "plant", "species": "beech", "positions": [[0, 0, -12]]}]})",
+                                [](const std::string&) { return std::nullopt; }});
+    Renderer renderer(s, settings);
+    renderer.render(s.camera, s.lights[0]);
+    const Image8 visibility = renderer.frame().read_visibility();
+    return Frame{static_cast<std::size_t>(std::count_if(visibility.samples.begin(), visibility.samples.end(), [](std::uint8_t v) { return v < 128; })),
+                 renderer.stats().triangles, renderer.stats().shadow_triangles};
+  };
+  const Frame high = render(ShadowMethod::cascades, "[0.2, -1, 0.1]");
+  ASSERT_GT(high.triangles, 1000u) << "the beech is drawn as polygons";
+  EXPECT_GT(high.shadowed, 200u);
+  EXPECT_EQ(high.shadow_triangles, 4 * 2 + (high.triangles - 2)) << "the plane in each cascade, the beech in the first alone";
+  const Frame low = render(ShadowMethod::cascades, "[0.7, -0.3, -0.65]"), uniform = render(ShadowMethod::uniform, "[0.7, -0.3, -0.65]");
+  EXPECT_GT(low.shadow_triangles, 4 * 2 + (low.triangles - 2)) << "the beech in more cascades than the first";
+  EXPECT_GT(uniform.shadowed, 1000u);
+  EXPECT_NEAR(static_cast<double>(low.shadowed), static_cast<double>(uniform.shadowed), 0.15 * static_cast<double>(uniform.shadowed));
 }
 
 TEST_F(GpuSampling, ItsFrameCoversWhatThePolygonsCover) {

@@ -1,5 +1,6 @@
 #include "app/render/depth_pyramid.hpp"
 
+#include "app/errors.hpp"
 #include "app/gl/shader_program.hpp"
 
 #include <algorithm>
@@ -88,7 +89,8 @@ void DepthPyramid::build_base(GLuint polygon_depth, GLuint point_depths) const {
 }
 
 void DepthPyramid::build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection,
-                                   const glm::mat4& map_view_projection) const {
+                                   const glm::mat4& map_view_projection, const std::vector<glm::mat4>& earlier, float inside) const {
+  if (earlier.size() > 8) throw RuntimeFailure("a receiver mask leaves out at most 8 earlier cascades");
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, pyramid_binding, depths_.name());
   glBindBufferRange(GL_SHADER_STORAGE_BUFFER, frame_depths_binding, frame.depths_.name(), 0,
                     static_cast<GLsizeiptr>(frame.size_.x) * frame.size_.y * static_cast<GLsizeiptr>(sizeof(float)));
@@ -102,6 +104,12 @@ void DepthPyramid::build_receivers(const DepthPyramid& frame, const glm::mat4& f
   gl::set_uniform(marks_program_, "pixel_step", receiver_pixel_step);
   gl::set_uniform(marks_program_, "frame_to_world", glm::inverse(frame_view_projection));
   gl::set_uniform(marks_program_, "map_view_projection", map_view_projection);
+  gl::set_uniform(marks_program_, "earlier_count", static_cast<int>(earlier.size()));
+  gl::set_uniform(marks_program_, "inside", inside);
+  if (!earlier.empty()) {
+    const GLuint p = marks_program_.name();
+    glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "earlier_views"), static_cast<GLsizei>(earlier.size()), GL_FALSE, &earlier.front()[0][0]);
+  }
   glUseProgram(marks_program_.name());
   glDispatchCompute(groups((frame.size_.x + receiver_pixel_step - 1) / receiver_pixel_step),
                     groups((frame.size_.y + receiver_pixel_step - 1) / receiver_pixel_step), 1);

@@ -26,8 +26,10 @@ class DepthPyramid {
   // Or, over a shadow view's image, as a receiver mask: level 0 is 1 where `frame` (the frame's
   // pyramid, last built) shows a surface through `map_view_projection`, 0 elsewhere, and each
   // level above the most of the 2 × 2 below; a caster whose rectangle there holds no 1 shadows
-  // nothing the frame shows.
-  void build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection, const glm::mat4& map_view_projection) const;
+  // nothing the frame shows. Of a cascade, `earlier` are the cascades before it (at most 8) and
+  // `inside` how far into their squares a surface looks them up (NDC): it marks no such surface.
+  void build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection, const glm::mat4& map_view_projection,
+                       const std::vector<glm::mat4>& earlier = {}, float inside = 1.0f) const;
   // Binds it for a program that includes depth_pyramid.glsl.
   void bind_for(const gl::Program& program) const;
   // Its levels, the last one texel; a level's texels, rows from the bottom (for tests).

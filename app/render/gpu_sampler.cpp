@@ -25,13 +25,14 @@ struct GpuMesh {
 struct GpuTotals {
   GLuint total_points, draw_count, band_first_point, all_points, polygon_count;
 };
-constexpr std::size_t command_uints = GpuSampler::command_bytes / sizeof(GLuint);
+constexpr std::size_t command_uints = GpuScene::command_bytes / sizeof(GLuint);
 
 constexpr GLuint draws_binding = 1, instances_binding = 2, block_draws_binding = 8, plant_meshes_binding = 10,
                  meshes_binding = 11, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
                  polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19, band_list_binding = 20,
                  band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24,
-                 band_drawn_binding = 28;
+                 band_drawn_binding = 28, layer_counts_binding = 31, layer_plants_binding = 32, layer_commands_binding = 33,
+                 layer_dispatch_binding = 34;
 constexpr std::size_t plants_per_group = 1024, threads_per_group = 256;  // shaders/sample_count.comp
 constexpr std::size_t points_per_block = 16;                              // shaders/point_common.glsl
 constexpr std::size_t max_planes = 96;                                    // planes[96]
@@ -83,7 +84,10 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
       count_program_(gl::build_program({"sample_count.comp"})),
       groups_program_(gl::build_program({"sample_groups.comp"})),
       draws_program_(gl::build_program({"sample_draws.comp"})),
-      commands_program_(gl::build_program({"sample_commands.comp"})) {
+      commands_program_(gl::build_program({"sample_commands.comp"})),
+      layer_start_program_(gl::build_program({"layer_casters.comp"}, "#define START\n")),
+      layer_plants_program_(gl::build_program({"layer_casters.comp"})),
+      layer_place_program_(gl::build_program({"layer_casters.comp"}, "#define PLACE\n")) {
   const std::vector<pointgen::SampledMesh>& meshes = samples.meshes();
   std::vector<GpuInstance> instances;
   std::vector<glm::uvec2> plant_meshes;
@@ -120,8 +124,8 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   // uvec2 per point where the frame's splat puts it).
   point_capacity_ = std::min(most_points, gl::max_storage_block_bytes() / sizeof(glm::uvec2));
   if (plant_count_ * sizeof(GpuInstance) > gl::max_storage_block_bytes()) {
-    throw RuntimeFailure("the scene's " + std::to_string(plant_count_) + " plants are more than this driver's shaders address; "
-                         "use fewer plants");
+    throw RuntimeFailure("the scene's " + std::to_string(plant_count_) + " plants need more than the " +
+                         std::to_string(gl::max_storage_block_bytes() >> 20) + " MiB a shader of this driver addresses; use fewer plants");
   }
   gl::store(instances_, instances, GL_DYNAMIC_STORAGE_BIT);  // moving plants are posed each frame
   gl::store(plant_meshes_, plant_meshes);
@@ -140,7 +144,11 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<GLuint>(band_list_, plant_count_);
   storage<glm::uvec2>(band_ranges_, max_bands);
   storage<glm::uvec4>(band_dispatch_, 2 * max_bands);
-  gl::store(band_drawn_, std::vector<GLuint>(max_bands, 1u));  // as if each drew: a pyramid built over them stays right
+  gl::store(band_drawn_, std::vector<GLuint>(max_bands, 1u));
+  storage<glm::uvec2>(layer_counts_, triangles_of_command_.size());
+  storage<GLuint>(layer_plants_, plant_count_);
+  storage<GLuint>(layer_commands_, command_uints * max_layers * std::max<std::size_t>(triangles_of_command_.size(), 1));
+  storage<glm::uvec4>(layer_dispatch_, 1);  // as if each drew: a pyramid built over them stays right
 }
 
 void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed) {
@@ -171,6 +179,10 @@ void GpuSampler::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, group_bands_binding, group_bands_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_dispatch_binding, band_dispatch_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_drawn_binding, band_drawn_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_counts_binding, layer_counts_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_plants_binding, layer_plants_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_commands_binding, layer_commands_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_dispatch_binding, layer_dispatch_.name());
 }
 
 void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands,
@@ -178,6 +190,7 @@ void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm:
   if (6 * view.views.size() + casters.size() > max_planes) throw RuntimeFailure("the GPU sampler takes at most 96 planes at once");
   if (bands.empty() || bands.size() + 1 > max_bands) throw RuntimeFailure("the GPU sampler takes 1 to 31 bands a frame");
   bands_used_ = static_cast<int>(bands.size() + (casters.empty() ? 0 : 1));
+  layers_selected_ = 0;
   casters_band_ = casters.empty() ? std::nullopt : std::optional<int>(static_cast<int>(bands.size()));
   // The lists are reset by the sort's passes, not by buffer clears: on llvmpipe a clear of the
   // counts at times landed after the count pass that followed it (counts of the first plants lost,
@@ -282,6 +295,46 @@ void GpuSampler::sample(const pointgen::SamplerView& view) {
   add_band(0, nullptr);
 }
 
+GpuScene::PlantDraws GpuSampler::polygon_draws(int first, int end) const {
+  const std::size_t tables = triangles_of_command_.size();
+  return {instances_.name(), polygon_instances_.name(), commands_.name(), static_cast<std::size_t>(first) * tables,
+          static_cast<std::size_t>(std::max(end - first, 0)) * tables};
+}
+
+GpuScene::PlantDraws GpuSampler::select_casters(int layer, const glm::mat4& map_view, const DepthPyramid& receivers) {
+  if (layer < 0 || layer >= max_layers) throw RuntimeFailure("the GPU sampler selects casters for at most 8 shadow views");
+  const std::size_t tables = triangles_of_command_.size();
+  if (plant_count_ == 0 || tables == 0) return polygon_draws(0, 0);
+  layers_selected_ = std::max(layers_selected_, layer + 1);
+  bind();
+  const auto table_count = static_cast<unsigned>(tables);
+  for (const gl::Program* program : {&layer_start_program_, &layer_plants_program_, &layer_place_program_}) {
+    gl::set_uniform(*program, "table_count", table_count);
+  }
+  gl::set_uniform(layer_place_program_, "first_command", static_cast<unsigned>(static_cast<std::size_t>(layer) * tables));
+  const GLuint p = layer_plants_program_.name();
+  gl::set_uniform(layer_plants_program_, "map_view_projection", map_view);
+  receivers.bind_for(layer_plants_program_);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glUseProgram(layer_start_program_.name());
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, layer_dispatch_.name());
+  glUseProgram(p);
+  gl::set_uniform(layer_plants_program_, "writing", 0);
+  glDispatchComputeIndirect(0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glUseProgram(layer_place_program_.name());
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glUseProgram(p);
+  gl::set_uniform(layer_plants_program_, "writing", 1);
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+  return {instances_.name(), layer_plants_.name(), layer_commands_.name(), static_cast<std::size_t>(layer) * tables, tables};
+}
+
 PointDrawList GpuSampler::draw_list() const {
   return {draws_.name(), instances_.name(), block_draws_.name(), totals_.name(), point_capacity_};
 }
@@ -312,11 +365,17 @@ GpuSampler::Totals GpuSampler::read_totals() const {
   const std::size_t tables = triangles_of_command_.size();
   std::vector<GLuint> commands(command_uints * tables * static_cast<std::size_t>(std::max(bands_used_, 1)));
   glGetNamedBufferSubData(commands_.name(), 0, static_cast<GLsizeiptr>(commands.size() * sizeof(GLuint)), commands.data());
-  Totals out{totals.total_points, totals.polygon_count, 0, casters_band_ ? totals.band_first_point : totals.total_points, 0};
+  Totals out{totals.total_points, totals.polygon_count, 0, casters_band_ ? totals.band_first_point : totals.total_points, 0, {}};
   for (std::size_t c = 0; c < commands.size() / command_uints; ++c) {
     const std::size_t triangles = commands[c * command_uints + 1] * triangles_of_command_[c % tables];
     out.triangles += triangles;
     if (!casters_band_ || c / tables < static_cast<std::size_t>(*casters_band_)) out.frame_triangles += triangles;
+  }
+  std::vector<GLuint> layers(command_uints * tables * static_cast<std::size_t>(layers_selected_));
+  if (!layers.empty()) glGetNamedBufferSubData(layer_commands_.name(), 0, static_cast<GLsizeiptr>(layers.size() * sizeof(GLuint)), layers.data());
+  out.layer_triangles.assign(static_cast<std::size_t>(layers_selected_), 0);
+  for (std::size_t c = 0; c < layers.size() / command_uints; ++c) {
+    out.layer_triangles[c / tables] += layers[c * command_uints + 1] * triangles_of_command_[c % tables];
   }
   return out;
 }

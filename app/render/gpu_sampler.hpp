@@ -63,15 +63,15 @@ class GpuSampler {
 
   // The point draws so far, for PointSplat::use.
   PointDrawList draw_list() const;
-  // The plants resident on the GPU (a mat4 transform and a tint each, shaders/instance.glsl), the
-  // plant indices of those drawn as polygons, and the indirect draws of a band's, one
-  // DrawElementsIndirectCommand per table of point meshes.
-  GLuint plants() const { return instances_.name(); }
-  GLuint polygon_instances() const { return polygon_instances_.name(); }
-  GLuint polygon_commands() const { return commands_.name(); }
-  // The byte offset of a band's commands, one per table of plants, band after band.
-  std::size_t commands_offset(int band) const { return static_cast<std::size_t>(band) * triangles_of_command_.size() * command_bytes; }
-  static constexpr std::size_t command_bytes = 5 * sizeof(GLuint);  // DrawElementsIndirectCommand
+  // The plants chosen as polygons in bands `first` to `end` - 1, one command per table of point
+  // meshes and band.
+  GpuScene::PlantDraws polygon_draws(int first, int end) const;
+  // Those of every band this frame (the casters' too) that shadow what shadow view `layer` (below
+  // max_layers) serves: whose bounds box through `map_view` (its world → clip matrix) covers a
+  // receiver in `receivers` (a mask over its image, DepthPyramid::build_receivers). Valid until
+  // the next call; the list is made on the GPU.
+  GpuScene::PlantDraws select_casters(int layer, const glm::mat4& map_view, const DepthPyramid& receivers);
+  static constexpr int max_layers = 8;
 
   // A GL buffer of a uint per band, written by add_band: zero where the band drew nothing.
   GLuint band_drawn() const { return band_drawn_.name(); }
@@ -82,8 +82,9 @@ class GpuSampler {
 
   // Read back, for tests and figures: per plant its points, whether drawn as polygons and its band
   // this frame (none: not in view), the draws (first point, count, first sample, plant), and the
-  // totals: points, polygon plants and their triangles of every band, and the points and triangles
-  // of the bands the frame shows (all but the casters').
+  // totals: points, polygon plants and their triangles of every band, the points and triangles of
+  // the bands the frame shows (all but the casters'), and the triangles of the plants selected for
+  // each shadow view this frame (select_casters; none where its views drew them all).
   struct Count {
     std::uint32_t points = 0;
     bool polygons = false;
@@ -94,6 +95,7 @@ class GpuSampler {
   struct Totals {
     std::size_t points = 0, polygon_plants = 0, triangles = 0;
     std::size_t frame_points = 0, frame_triangles = 0;
+    std::vector<std::size_t> layer_triangles;
   };
   Totals read_totals() const;
 
@@ -103,6 +105,7 @@ class GpuSampler {
   std::size_t group_count_ = 0;
   std::size_t point_capacity_ = 0;  // points the draw list has room for
   int bands_used_ = 0;
+  int layers_selected_ = 0;  // select_casters' this frame: layers 0 to this - 1
   std::optional<int> casters_band_;
   std::vector<std::uint32_t> first_plant_;
   std::vector<bool> holds_plants_;  // per table
@@ -112,6 +115,9 @@ class GpuSampler {
   gl::Buffer band_keys_, group_bands_, band_list_, band_ranges_, band_dispatch_, band_drawn_;
   gl::Program keys_program_, bin_count_program_, bands_program_, place_program_;
   gl::Program count_program_, groups_program_, draws_program_, commands_program_;
+  // select_casters' (shaders/layer_casters.comp).
+  gl::Buffer layer_counts_, layer_plants_, layer_commands_, layer_dispatch_;
+  gl::Program layer_start_program_, layer_plants_program_, layer_place_program_;
 };
 
 }  // namespace ecoview

@@ -1,6 +1,5 @@
 #include "app/render/gpu_scene.hpp"
 
-#include "app/render/gpu_sampler.hpp"
 #include "pointgen/sampling/mesh_parts.hpp"
 
 #include <algorithm>
@@ -95,7 +94,7 @@ void GpuScene::set_attributes(GLuint vao, GLuint vertices, GLuint indices, GLuin
   attribute(vao, 10, 1, 3, offsetof(Instance, color));
 }
 
-void GpuScene::attach(const GpuSampler& sampler) {
+void GpuScene::gather_point_meshes() {
   chosen_ = std::make_unique<Chosen>();
   glNamedBufferStorage(chosen_->vertices.name(), static_cast<GLsizeiptr>(std::max(point_mesh_vertices_, 1)) * sizeof(Vertex), nullptr, 0);
   glNamedBufferStorage(chosen_->indices.name(), static_cast<GLsizeiptr>(std::max(point_mesh_indices_, 1)) * sizeof(GLuint), nullptr, 0);
@@ -108,25 +107,23 @@ void GpuScene::attach(const GpuSampler& sampler) {
                              static_cast<GLintptr>(places_[m].first_index) * static_cast<GLintptr>(sizeof(GLuint)),
                              static_cast<GLsizeiptr>(meshes_[m].index_count) * static_cast<GLsizeiptr>(sizeof(GLuint)));
   }
-  // An instance is a plant index (shaders/instance.glsl, PLANT_INDEX).
+  // An instance is a plant index (shaders/instance.glsl, PLANT_INDEX), from the list a draw names.
   const GLuint vao = chosen_->vertex_array.name();
   set_vertex_attributes(vao, chosen_->vertices.name(), chosen_->indices.name());
-  glVertexArrayVertexBuffer(vao, 1, sampler.polygon_instances(), 0, sizeof(GLuint));
   glVertexArrayBindingDivisor(vao, 1, 1);
   glEnableVertexArrayAttrib(vao, 3);
   glVertexArrayAttribIFormat(vao, 3, 1, GL_UNSIGNED_INT, 0);
   glVertexArrayAttribBinding(vao, 3, 1);
 }
 
-void GpuScene::draw_chosen(const GpuSampler& sampler, int first, int end, GLenum mode) const {
-  if (!chosen_ || end <= first) return;
-  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, sampler.polygon_commands());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, resident_plants_binding, sampler.plants());
+void GpuScene::draw_chosen(const PlantDraws& draws, GLenum mode) const {
+  if (!chosen_ || draws.command_count == 0) return;
+  glVertexArrayVertexBuffer(chosen_->vertex_array.name(), 1, draws.plant_indices, 0, sizeof(GLuint));
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws.commands);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, resident_plants_binding, draws.plants);
   glBindVertexArray(chosen_->vertex_array.name());
-  glMultiDrawElementsIndirect(mode, GL_UNSIGNED_INT, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(sampler.commands_offset(first))),
-                              static_cast<GLsizei>(sampler.commands_offset(end) - sampler.commands_offset(first)) /
-                                  static_cast<GLsizei>(GpuSampler::command_bytes),
-                              0);
+  glMultiDrawElementsIndirect(mode, GL_UNSIGNED_INT, reinterpret_cast<const void*>(draws.first_command * GpuScene::command_bytes),
+                              static_cast<GLsizei>(draws.command_count), 0);
   glBindVertexArray(0);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }

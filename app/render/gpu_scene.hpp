@@ -7,7 +7,6 @@
 
 namespace ecoview {
 
-class GpuSampler;
 
 // The scene's meshes and instance tables in GL buffers: each mesh once, drawn with one instanced
 // call per group, or per polygon part of a point mesh (pointgen::split_triangles) when the sampler
@@ -15,6 +14,15 @@ class GpuSampler;
 // 7–9 normal matrix, 10 colour.
 class GpuScene {
  public:
+  // Plants drawn as polygons (a GpuSampler's): the plants resident on the GPU (a mat4 transform
+  // and a tint each, shaders/instance.glsl), a list of plant indices, and indirect draws over it
+  // (DrawElementsIndirectCommand, base instance: a place in the list).
+  struct PlantDraws {
+    GLuint plants = 0, plant_indices = 0, commands = 0;
+    std::size_t first_command = 0, command_count = 0;
+  };
+  static constexpr std::size_t command_bytes = 5 * sizeof(GLuint);  // DrawElementsIndirectCommand
+
   explicit GpuScene(const Scene& scene);
   enum class Parts { chosen, all };
   // `mode` GL_PATCHES (of 3 vertices) for programs that tessellate. `all`: every instance whole,
@@ -31,13 +39,13 @@ class GpuScene {
     GLint base_vertex = 0;
   };
   const std::vector<DrawPlace>& point_mesh_places() const { return places_; }
-  // Draws, from the next frame on, the plants of point meshes a GpuSampler chooses as polygons
-  // with draw_chosen (its plant indices and indirect draws), for programs built with PLANT_INDEX
-  // (shaders/instance.glsl).
-  void attach(const GpuSampler& sampler);
-  // The plants bands `first` to `end` - 1 of the attached sampler chose as polygons, in one
-  // indirect multi-draw; `mode` as for draw().
-  void draw_chosen(const GpuSampler& sampler, int first, int end, GLenum mode = GL_TRIANGLES) const;
+  // Puts the point meshes into the one vertex and index buffer (point_mesh_places) that
+  // draw_chosen draws from: once, before the first draw_chosen.
+  void gather_point_meshes();
+  // Plants a GpuSampler chose as polygons (GpuSampler::polygon_draws, select_casters), in one
+  // indirect multi-draw, for programs built with PLANT_INDEX (shaders/instance.glsl); `mode` as
+  // for draw().
+  void draw_chosen(const PlantDraws& draws, GLenum mode = GL_TRIANGLES) const;
 
  private:
   struct Range {
@@ -69,7 +77,7 @@ class GpuScene {
   std::vector<Group> groups_;
   std::vector<DrawPlace> places_;
   GLsizei point_mesh_vertices_ = 0, point_mesh_indices_ = 0;  // in all point meshes
-  // The point meshes in one buffer each, over the attached sampler's polygon plants (attach).
+  // The point meshes in one buffer each, for draw_chosen (gather_point_meshes).
   struct Chosen {
     gl::Buffer vertices, indices;
     gl::VertexArray vertex_array;

@@ -133,7 +133,7 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
     gpu_sampler_ = std::make_unique<GpuSampler>(tables_, samples_, gpu_scene_.point_mesh_places());
     occluders_ = std::make_unique<DepthPyramid>(glm::ivec2(settings.width, settings.height));
     receivers_ = std::make_unique<DepthPyramid>(glm::ivec2(receiver_mask_size));
-    gpu_scene_.attach(*gpu_sampler_);
+    gpu_scene_.gather_point_meshes();
   }
 }
 
@@ -525,9 +525,15 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
   if (!shadow_points_) shadow_points_ = std::make_unique<PointSplat>(glm::ivec2(settings_.shadow_size));
   shadow_points_->use(gpu_sampler_->draw_list(), samples_);
   shadow_timer_.start();
+  const GpuScene::PlantDraws every_band = gpu_sampler_->polygon_draws(0, gpu_sampler_->band_count());
+  std::vector<glm::mat4> earlier;  // the cascades before this one
   for (std::size_t layer = 0; layer < setup_.views.size(); ++layer) {
     const shadow::ShadowView& v = setup_.views[layer];
-    shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer), gpu_sampler_.get());
+    const GpuScene::PlantDraws plants = setup_.selection == shadow::ViewSelection::first_containing
+                                            ? cascade_casters(static_cast<int>(layer), v.view_projection(), earlier)
+                                            : every_band;
+    earlier.push_back(v.view_projection());
+    shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer), &plants);
     shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
                                settings_.shadow_splat_size, shadow_point_bias, v.paraboloid_parameters());
   }
@@ -538,8 +544,20 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
   stats_.frame_pass_ms += frame_timer_.stop_ms();
   const GpuSampler::Totals chosen = add_gpu_choice(selection);
   stats_.shadow_points = chosen.points;
-  stats_.shadow_triangles = setup_.views.size() * (fixed_triangles() + chosen.triangles);
+  stats_.shadow_triangles = setup_.views.size() * fixed_triangles();
+  for (std::size_t layer = 0; layer < setup_.views.size(); ++layer) {
+    stats_.shadow_triangles += layer < chosen.layer_triangles.size() ? chosen.layer_triangles[layer] : chosen.triangles;
+  }
   return selection;
+}
+
+// A cascade draws the polygon plants that shadow the surfaces that look it up, those in no
+// earlier cascade's square: near plants, whose shadows fall in the first cascade, stay out of the
+// others (on the ecosystem's default view each cascade otherwise drew every polygon plant).
+GpuScene::PlantDraws Renderer::cascade_casters(int layer, const glm::mat4& map_view, const std::vector<glm::mat4>& earlier) {
+  const float inside = 1.0f - 2.0f * shadow::cascade_margin_texels / static_cast<float>(settings_.shadow_size);
+  receivers_->build_receivers(*occluders_, view_projection_, map_view, earlier, inside);
+  return gpu_sampler_->select_casters(layer, map_view, *receivers_);
 }
 
 // Read back for the figures after the frame's commands, where nothing waits on them.

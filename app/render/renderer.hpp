@@ -138,6 +138,9 @@ class Renderer {
   pointgen::SampledFrame draw_sampled_on_gpu(const shadow::Camera& camera, const shadow::Light& light);
   // The triangles of the meshes never drawn as points (ground, buildings), all of them.
   std::size_t fixed_triangles() const;
+  // The GPU sampler's polygon plants that cascade `layer` draws (map_view: its world → clip
+  // matrix; earlier: the cascades' before it).
+  GpuScene::PlantDraws cascade_casters(int layer, const glm::mat4& map_view, const std::vector<glm::mat4>& earlier);
   // The GPU sampler's points and triangles in the frame, read back; returns all its totals.
   GpuSampler::Totals add_gpu_choice(pointgen::SampledFrame& selection) const;
   // The frame's plants chosen on the GPU band by band, nearest first: each band's polygons and

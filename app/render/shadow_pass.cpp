@@ -1,7 +1,6 @@
 #include "app/render/shadow_pass.hpp"
 
 #include "app/gl/shader_program.hpp"
-#include "app/render/gpu_sampler.hpp"
 
 namespace ecoview {
 namespace {
@@ -44,7 +43,7 @@ void ShadowPass::allocate(int layers) {
   glNamedFramebufferReadBuffer(framebuffer_.name(), GL_NONE);
 }
 
-void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const GpuSampler* chosen) {
+void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const GpuScene::PlantDraws* plants) {
   if (static_cast<int>(setup.views.size()) > layers_) allocate(static_cast<int>(setup.views.size()));
   const GLuint fb = framebuffer_.name();
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
@@ -75,9 +74,9 @@ void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup,
   }
   glUseProgram(scene_program.name());
   scene.draw(mode);
-  if (chosen) {
+  if (plants) {
     glUseProgram(plant_program.name());
-    scene.draw_chosen(*chosen, 0, chosen->band_count(), mode);
+    scene.draw_chosen(*plants, mode);
   }
   glDisable(GL_CLIP_DISTANCE0);
   glDisable(GL_POLYGON_OFFSET_FILL);

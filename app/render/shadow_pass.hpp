@@ -6,8 +6,6 @@
 
 namespace ecoview {
 
-class GpuSampler;
-
 // Renders the scene's depth as the light sees it, one layer of a square depth-texture array per
 // view of the shadow setup, set up for hardware depth comparison (sampler2DArrayShadow, bilinear
 // PCF), with slope-scaled polygon offset against acne. Paraboloid views tessellate the scene.
@@ -15,8 +13,8 @@ class ShadowPass {
  public:
   explicit ShadowPass(int size);
   // Draws one view of the setup into its layer.
-  // With `chosen`, also the plants every band of that sampler chose as polygons this frame.
-  void render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const GpuSampler* chosen = nullptr);
+  // With `plants`, also those polygon plants of a GPU sampler.
+  void render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const GpuScene::PlantDraws* plants = nullptr);
   GLuint depth_texture() const { return depth_.name(); }
   // One layer's depths, window depth 0 (near) to 1 (far), rows from the top.
   Image<float> read_layer(int layer) const;

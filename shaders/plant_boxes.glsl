@@ -1,0 +1,39 @@
+// A plant's bounds box (sample_common.glsl's SampledMesh, placed by its model matrix) against an
+// image and a pyramid over it (depth_pyramid.glsl).
+
+// The NDC rectangle of the plant's bounds box through `m`, and its nearest NDC depth; false where
+// the box reaches behind the eye.
+bool box_rect(mat4 m, mat4 model, SampledMesh mesh, out vec3 lo, out vec3 hi) {
+  lo = vec3(1e30);
+  hi = vec3(-1e30);
+  for (int c = 0; c < 8; ++c) {
+    vec3 corner = mesh.center_radius.xyz + mesh.half_size_area.xyz * vec3((c & 1) != 0 ? 1.0 : -1.0, (c & 2) != 0 ? 1.0 : -1.0,
+                                                                          (c & 4) != 0 ? 1.0 : -1.0);
+    vec4 clip = m * (model * vec4(corner, 1.0));
+    if (!(clip.w > 0.0)) return false;
+    vec3 ndc = clip.xyz / clip.w;
+    lo = min(lo, ndc);
+    hi = max(hi, ndc);
+  }
+  return true;
+}
+
+// The pyramid texels over an NDC rectangle.
+void texels_of(vec3 lo, vec3 hi, out ivec2 first, out ivec2 last) {
+  vec2 size = vec2(pyramid_size[0]);
+  first = ivec2(floor((lo.xy * 0.5 + 0.5) * size));
+  last = ivec2(floor((hi.xy * 0.5 + 0.5) * size));
+}
+
+bool off_image(vec3 lo, vec3 hi) { return any(lessThan(hi.xy, vec2(-1.0))) || any(greaterThan(lo.xy, vec2(1.0))); }
+
+// Whether a caster's box covers no receiver in the mask the pyramid holds over the image of a
+// shadow view (`map`: its world → clip matrix); false where it reaches behind the light.
+bool shadows_nothing(mat4 map, mat4 model, SampledMesh mesh) {
+  vec3 lo, hi;
+  if (!box_rect(map, model, mesh, lo, hi)) return false;
+  if (off_image(lo, hi)) return true;
+  ivec2 first, last;
+  texels_of(lo, hi, first, last);
+  return farthest_over(first, last) < 0.5;
+}
