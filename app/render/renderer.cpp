@@ -292,7 +292,8 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
     shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
                                settings_.shadow_splat_size, shadow_point_bias, v.paraboloid_parameters());
   }
-  stats_.shadow_pass_ms = shadow_timer_.stop_ms();
+  shadow_timer_.stop();
+  pending_.shadow_timer = true;
 }
 
 // The frame drawn without shadows leaves the depth the volumes are counted against; timed as the
@@ -302,7 +303,8 @@ FramePass::ShadowLookup Renderer::render_shadow_volumes(const shadow::Camera& ca
   shadow_timer_.start();
   draw_frame(camera, light, std::nullopt);
   volume_pass_->render(gpu_scene_, view_projection_, light);
-  stats_.shadow_pass_ms = shadow_timer_.stop_ms();
+  shadow_timer_.stop();
+  pending_.shadow_timer = true;
   return {volume_pass_->light_mask(), setup_, 0};
 }
 
@@ -438,6 +440,7 @@ void Renderer::remember_last_frame() {
 void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows) {
   pose(t);
   stats_ = {};
+  pending_ = {};
   view_projection_ = camera.projection(aspect()) * camera.view();
   camera_ = camera;
   light_ = light;
@@ -504,8 +507,9 @@ pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camer
   if (shadows && reference) lookup.emplace(render_reference_mask(camera, light));
   frame_timer_.start();
   draw_frame(camera, light, lookup);
-  stats_.frame_pass_ms = frame_timer_.stop_ms();
-  if (gpu_sampler_) add_gpu_choice(selection);
+  frame_timer_.stop();
+  pending_.frame_timers = 1;
+  pending_.gpu_choice = gpu_sampler_ != nullptr;
   return selection;
 }
 
@@ -516,7 +520,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
   setup_ = make_shadow_setup(settings_.method, camera, light);
   frame_timer_.start();
   draw_surfaces(camera, shadow::focus_bodies(view_projection_, light, scene_bounds_).casters.face_planes());
-  stats_.frame_pass_ms = frame_timer_.stop_ms();
+  frame_timer_.stop();
 
   // The shadow map draws the frame's own plants, the casters' band with them (Stamminger and
   // Drettakis 2002, Sect. 5): the camera's points, whose density the perspective map keeps
@@ -537,17 +541,12 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
     shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
                                settings_.shadow_splat_size, shadow_point_bias, v.paraboloid_parameters());
   }
-  stats_.shadow_pass_ms = shadow_timer_.stop_ms();
+  shadow_timer_.stop();
 
-  frame_timer_.start();
+  finish_timer_.start();
   finish_frame(camera, light, FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size()});
-  stats_.frame_pass_ms += frame_timer_.stop_ms();
-  const GpuSampler::Totals chosen = add_gpu_choice(selection);
-  stats_.shadow_points = chosen.points;
-  stats_.shadow_triangles = setup_.views.size() * fixed_triangles();
-  for (std::size_t layer = 0; layer < setup_.views.size(); ++layer) {
-    stats_.shadow_triangles += layer < chosen.layer_triangles.size() ? chosen.layer_triangles[layer] : chosen.triangles;
-  }
+  finish_timer_.stop();
+  pending_ = {2, true, true, setup_.views.size()};
   return selection;
 }
 
@@ -560,12 +559,25 @@ GpuScene::PlantDraws Renderer::cascade_casters(int layer, const glm::mat4& map_v
   return gpu_sampler_->select_casters(layer, map_view, *receivers_);
 }
 
-// Read back for the figures after the frame's commands, where nothing waits on them.
-GpuSampler::Totals Renderer::add_gpu_choice(pointgen::SampledFrame& selection) const {
-  const GpuSampler::Totals chosen = gpu_sampler_->read_totals();
-  selection.point_count = chosen.frame_points;
-  selection.triangle_count = chosen.frame_triangles;
-  return chosen;
+// The GPU's figures of the last frame drawn, read back when asked: nothing in a frame waits for
+// them, and a caller that asks after the next frame's commands waits for no more than this one.
+const FrameStats& Renderer::stats() const {
+  if (pending_.frame_timers > 0) stats_.frame_pass_ms = frame_timer_.ms() + (pending_.frame_timers > 1 ? finish_timer_.ms() : 0.0);
+  if (pending_.shadow_timer) stats_.shadow_pass_ms = shadow_timer_.ms();
+  if (pending_.gpu_choice) {
+    const GpuSampler::Totals chosen = gpu_sampler_->read_totals();
+    stats_.points = chosen.frame_points;
+    stats_.triangles = fixed_triangles() + chosen.frame_triangles;
+    if (pending_.shadow_views > 0) {
+      stats_.shadow_points = chosen.points;
+      stats_.shadow_triangles = pending_.shadow_views * fixed_triangles();
+      for (std::size_t layer = 0; layer < pending_.shadow_views; ++layer) {
+        stats_.shadow_triangles += layer < chosen.layer_triangles.size() ? chosen.layer_triangles[layer] : chosen.triangles;
+      }
+    }
+  }
+  pending_ = {};
+  return stats_;
 }
 
 }  // namespace ecoview

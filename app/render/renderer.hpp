@@ -91,7 +91,8 @@ class Renderer {
   const ShadowPass& shadow_map() const { return shadow_pass_; }
   // The shadow setup of the last frame drawn with shadows.
   const shadow::ShadowSetup& shadow_setup() const { return setup_; }
-  const FrameStats& stats() const { return stats_; }
+  // The last frame's figures; those the GPU measures or counts are read back when first asked.
+  const FrameStats& stats() const;
   // The instance tables as the last frame posed them.
   const std::vector<pointgen::InstanceTable>& tables() const { return tables_; }
   // Fill the aliasing target (RenderSettings::aliasing) from the next frame on, or stop.
@@ -141,8 +142,6 @@ class Renderer {
   // The GPU sampler's polygon plants that cascade `layer` draws (map_view: its world → clip
   // matrix; earlier: the cascades' before it).
   GpuScene::PlantDraws cascade_casters(int layer, const glm::mat4& map_view, const std::vector<glm::mat4>& earlier);
-  // The GPU sampler's points and triangles in the frame, read back; returns all its totals.
-  GpuSampler::Totals add_gpu_choice(pointgen::SampledFrame& selection) const;
   // The frame's plants chosen on the GPU band by band, nearest first: each band's polygons and
   // points drawn into the frame before the next band is culled against them; then the plants in
   // the casters' body (planes, normals out) that the frame does not show, for the shadow map.
@@ -187,8 +186,18 @@ class Renderer {
   std::vector<glm::vec3> last_receivers_;           // culls_casters: sampled from the last frame
   bool has_last_frame_ = false;
   glm::mat4 view_projection_{1.0f};  // of the last frame
-  FrameStats stats_;
-  gl::GpuTimer shadow_timer_, frame_timer_;
+  mutable FrameStats stats_;
+  // The frame pass is timed in one piece (frame_timer_) or, around the GPU sampler's shadow
+  // pass, two (finish_timer_ after it).
+  gl::GpuTimer shadow_timer_, frame_timer_, finish_timer_;
+  // What stats() still reads back from the GPU for the last frame.
+  struct PendingStats {
+    int frame_timers = 0;
+    bool shadow_timer = false;
+    bool gpu_choice = false;         // the GPU sampler's totals
+    std::size_t shadow_views = 0;    // of its shadow map, in those totals
+  };
+  mutable PendingStats pending_;
 };
 
 }  // namespace ecoview
