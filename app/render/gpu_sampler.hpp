@@ -18,8 +18,9 @@ namespace ecoview {
 // are culled against a depth pyramid of what the bands before drew (occluders drawn first in the
 // same frame, so a frame depends on its own view alone), counted with the density formula, given
 // points or polygons with the band around break-even, and appended to the point draws (as
-// PointSplat reads them) and the polygon instances, with an indirect draw per table and band and
-// no read-back. A last band may hold the casters out of view that shadow what the frame shows.
+// PointSplat reads them) and the list of polygon plants (their indices), with an indirect draw per
+// table and band and no read-back. A last band may hold the casters out of view that shadow what
+// the frame shows; a cascade draws the polygon plants that shadow its own surfaces.
 // Without occlusion it chooses as pointgen::sample_view does, by whole plants and without cells'
 // aggregates: the CPU sampler is its test oracle. docs/point_density.md, "On the GPU".
 class GpuSampler {
