@@ -14,7 +14,8 @@
 // Per table of plants: (first plant, end, 0, 0), then (index count, first index, base vertex, 0).
 layout(std430, binding = 18) readonly buffer Tables { uvec4 tables[]; };
 layout(std430, binding = 16) readonly buffer PolygonInstances { uint polygon_instances[]; };
-layout(std430, binding = 31) buffer LayerCounts { uvec2 layer_counts[]; };  // per table: plants, next place
+// Per table two: its plants, then the next place in its run (a uint each, as atomics take them).
+layout(std430, binding = 31) buffer LayerCounts { uint layer_counts[]; };
 layout(std430, binding = 32) writeonly buffer LayerPlants { uint layer_plants[]; };
 layout(std430, binding = 33) writeonly buffer LayerCommands { uint layer_commands[]; };
 layout(std430, binding = 34) writeonly buffer LayerDispatch { uvec4 layer_dispatch; };
@@ -23,7 +24,7 @@ uniform uint table_count;
 #if defined(START)
 layout(local_size_x = 1) in;
 void main() {
-  for (uint t = 0u; t < table_count; ++t) layer_counts[t] = uvec2(0u);
+  for (uint t = 0u; t < 2u * table_count; ++t) layer_counts[t] = 0u;
   layer_dispatch = uvec4((polygon_count + 255u) / 256u, 1u, 1u, 0u);
 }
 #elif defined(PLACE)
@@ -33,14 +34,14 @@ void main() {
   uint first = 0u;
   for (uint t = 0u; t < table_count; ++t) {
     uvec4 mesh = tables[2u * t + 1u];
-    uint plants = layer_counts[t].x;
+    uint plants = layer_counts[2u * t];
     uint at = 5u * (first_command + t);
     layer_commands[at] = mesh.x;
     layer_commands[at + 1u] = plants;
     layer_commands[at + 2u] = mesh.y;
     layer_commands[at + 3u] = mesh.z;
     layer_commands[at + 4u] = first;
-    layer_counts[t].y = first;
+    layer_counts[2u * t + 1u] = first;
     first += plants;
   }
 }
@@ -66,9 +67,9 @@ void main() {
   if (shadows_nothing(map_view_projection, instances[plant].model, meshes[plant_meshes[plant].x])) return;
   uint t = table_of(plant);
   if (writing) {
-    layer_plants[atomicAdd(layer_counts[t].y, 1u)] = plant;
+    layer_plants[atomicAdd(layer_counts[2u * t + 1u], 1u)] = plant;
   } else {
-    atomicAdd(layer_counts[t].x, 1u);
+    atomicAdd(layer_counts[2u * t], 1u);
   }
 }
 #endif

@@ -145,7 +145,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<glm::uvec2>(band_ranges_, max_bands);
   storage<glm::uvec4>(band_dispatch_, 2 * max_bands);
   gl::store(band_drawn_, std::vector<GLuint>(max_bands, 1u));
-  storage<glm::uvec2>(layer_counts_, triangles_of_command_.size());
+  storage<GLuint>(layer_counts_, 2 * triangles_of_command_.size());
   storage<GLuint>(layer_plants_, plant_count_);
   storage<GLuint>(layer_commands_, command_uints * max_layers * std::max<std::size_t>(triangles_of_command_.size(), 1));
   storage<glm::uvec4>(layer_dispatch_, 1);  // as if each drew: a pyramid built over them stays right
