@@ -1,6 +1,7 @@
 // A polygon instance's transform and colour: from per-instance attributes (GpuScene's groups), or
 // with PLANT_INDEX from the plants resident on the GPU (the GPU sampler's, sample_common.glsl), by
-// the plant index that is the instance's one attribute: 4 bytes a polygon plant, not 112.
+// the plant index that is the instance's one attribute: 4 bytes a polygon plant, where a copy of its
+// transform, normal matrix and colour would take 112.
 #ifdef PLANT_INDEX
 layout(location = 3) in uint plant;
 struct ResidentPlant {
