@@ -21,12 +21,13 @@ uniform mat4 frame_to_world;    // inverse of the frame's view-projection
 uniform mat4 map_view_projection;
 uniform mat4 earlier_views[8];  // world → clip of the cascades before this one
 uniform int earlier_count;
-uniform float inside;  // how far into an earlier cascade's square a surface looks that one up, NDC
+uniform float map_texels;  // texels per side of the cascades' maps
+
+#include "cascade_square.glsl"
 
 bool in_earlier_view(vec3 p) {
   for (int i = 0; i < earlier_count; ++i) {
-    vec4 clip = earlier_views[i] * vec4(p, 1.0);
-    if (all(lessThanEqual(abs(clip.xy), vec2(inside * clip.w))) && abs(clip.z) <= clip.w) return true;
+    if (in_cascade_square(earlier_views[i], p, map_texels)) return true;
   }
   return false;
 }

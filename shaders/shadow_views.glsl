@@ -18,7 +18,6 @@ const bool shadows_enabled = SHADOWS;
 // its view: one map, cube faces by the major axis of (point - light), the first cascade that
 // holds it, or the paraboloid whose hemisphere holds it.
 const int SINGLE = 0, CUBE_FACES = 1, FIRST_CONTAINING = 2, HEMISPHERES = 3, SCREEN_MASK = 4;
-const float CASCADE_MARGIN_TEXELS = 2.0;  // shadow::cascade_margin_texels
 const int shadow_selection = SHADOW_SELECTION;
 const bool paraboloid_views = PARABOLOID_VIEWS;  // whether any view is a paraboloid's
 uniform int shadow_view_count;
@@ -30,6 +29,7 @@ uniform float shadow_size;  // texels per side
 uniform vec2 frame_size;    // pixels
 uniform mat4 view_projection;
 
+#include "cascade_square.glsl"
 #include "paraboloid.glsl"
 
 vec4 shadow_clip(int layer, vec3 p) {
@@ -65,10 +65,8 @@ float texel_world_size(int layer, vec3 p) {
 int shadow_view(vec3 p) {
   if (shadow_selection == SINGLE) return 0;
   if (shadow_selection == FIRST_CONTAINING) {
-    float inside = 1.0 - 2.0 * CASCADE_MARGIN_TEXELS / shadow_size;
     for (int i = 0; i < shadow_view_count - 1; ++i) {
-      vec4 clip = shadow_matrices[i] * vec4(p, 1.0);
-      if (all(lessThanEqual(abs(clip.xy), vec2(inside * clip.w))) && abs(clip.z) <= clip.w) return i;
+      if (in_cascade_square(shadow_matrices[i], p, shadow_size)) return i;
     }
     return shadow_view_count - 1;
   }

@@ -40,11 +40,11 @@ DepthPyramid::DepthPyramid(glm::ivec2 size)
   std::vector<glm::uvec4> whole{{groups((size.x + base_block - 1) / base_block), groups((size.y + base_block - 1) / base_block), 1, 0}};
   for (std::size_t level = 1; level < sizes_.size(); ++level) whole.emplace_back(groups(sizes_[level].x), groups(sizes_[level].y), 1, 0);
   gl::store(whole_, whole);
-  gl::store(commands_, whole);
+  glNamedBufferStorage(commands_.name(), static_cast<GLsizeiptr>(whole.size() * sizeof(glm::uvec4)), nullptr, 0);
 }
 
-void DepthPyramid::dispatch(std::size_t pass) const {
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, commands_.name());
+void DepthPyramid::dispatch(const gl::Buffer& passes, std::size_t pass) const {
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, passes.name());
   glDispatchComputeIndirect(static_cast<GLintptr>(pass * sizeof(glm::uvec4)));
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
@@ -57,8 +57,7 @@ void DepthPyramid::set_levels(const gl::Program& program) const {
 }
 
 void DepthPyramid::build(GLuint polygon_depth, GLuint point_depths) const {
-  glCopyNamedBufferSubData(whole_.name(), commands_.name(), 0, 0, static_cast<GLsizeiptr>(sizes_.size() * sizeof(glm::uvec4)));
-  build_base(polygon_depth, point_depths);
+  build_base(whole_, polygon_depth, point_depths);
 }
 
 // Past a band that drew nothing the pyramid is the same: on llvmpipe each build of a 960 × 540 one
@@ -73,10 +72,10 @@ void DepthPyramid::build_if(GLuint flags, std::size_t flag, GLuint polygon_depth
   glUseProgram(dispatch_program_.name());
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT);
-  build_base(polygon_depth, point_depths);
+  build_base(commands_, polygon_depth, point_depths);
 }
 
-void DepthPyramid::build_base(GLuint polygon_depth, GLuint point_depths) const {
+void DepthPyramid::build_base(const gl::Buffer& passes, GLuint polygon_depth, GLuint point_depths) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, pyramid_binding, depths_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, point_depths_binding, point_depths);
   glBindTextureUnit(0, polygon_depth);
@@ -84,12 +83,12 @@ void DepthPyramid::build_base(GLuint polygon_depth, GLuint point_depths) const {
   gl::set_uniform(base_program_, "polygon_depth", 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   glUseProgram(base_program_.name());
-  dispatch(0);
-  reduce(base_levels);
+  dispatch(passes, 0);
+  reduce(passes, base_levels);
 }
 
 void DepthPyramid::build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection,
-                                   const glm::mat4& map_view_projection, const std::vector<glm::mat4>& earlier, float inside) const {
+                                   const glm::mat4& map_view_projection, const std::vector<glm::mat4>& earlier, float map_texels) const {
   if (earlier.size() > 8) throw RuntimeFailure("a receiver mask leaves out at most 8 earlier cascades");
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, pyramid_binding, depths_.name());
   glBindBufferRange(GL_SHADER_STORAGE_BUFFER, frame_depths_binding, frame.depths_.name(), 0,
@@ -105,7 +104,7 @@ void DepthPyramid::build_receivers(const DepthPyramid& frame, const glm::mat4& f
   gl::set_uniform(marks_program_, "frame_to_world", glm::inverse(frame_view_projection));
   gl::set_uniform(marks_program_, "map_view_projection", map_view_projection);
   gl::set_uniform(marks_program_, "earlier_count", static_cast<int>(earlier.size()));
-  gl::set_uniform(marks_program_, "inside", inside);
+  gl::set_uniform(marks_program_, "map_texels", map_texels);
   if (!earlier.empty()) {
     const GLuint p = marks_program_.name();
     glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "earlier_views"), static_cast<GLsizei>(earlier.size()), GL_FALSE, &earlier.front()[0][0]);
@@ -113,18 +112,17 @@ void DepthPyramid::build_receivers(const DepthPyramid& frame, const glm::mat4& f
   glUseProgram(marks_program_.name());
   glDispatchCompute(groups((frame.size_.x + receiver_pixel_step - 1) / receiver_pixel_step),
                     groups((frame.size_.y + receiver_pixel_step - 1) / receiver_pixel_step), 1);
-  glCopyNamedBufferSubData(whole_.name(), commands_.name(), 0, 0, static_cast<GLsizeiptr>(sizes_.size() * sizeof(glm::uvec4)));
-  reduce(1);
+  reduce(whole_, 1);
 }
 
-void DepthPyramid::reduce(std::size_t first_level) const {
+void DepthPyramid::reduce(const gl::Buffer& passes, std::size_t first_level) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, pyramid_binding, depths_.name());
   set_levels(reduce_program_);
   glUseProgram(reduce_program_.name());
   for (std::size_t level = first_level; level < sizes_.size(); ++level) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     gl::set_uniform(reduce_program_, "level", static_cast<int>(level));
-    dispatch(level);
+    dispatch(passes, level);
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }

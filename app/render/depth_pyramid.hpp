@@ -26,10 +26,10 @@ class DepthPyramid {
   // Or, over a shadow view's image, as a receiver mask: level 0 is 1 where `frame` (the frame's
   // pyramid, last built) shows a surface through `map_view_projection`, 0 elsewhere, and each
   // level above the most of the 2 × 2 below; a caster whose rectangle there holds no 1 shadows
-  // nothing the frame shows. Of a cascade, `earlier` are the cascades before it (at most 8) and
-  // `inside` how far into their squares a surface looks them up (NDC): it marks no such surface.
+  // nothing the frame shows. Of a cascade, `earlier` are the cascades before it (at most 8), of
+  // maps `map_texels` wide: it marks no surface that looks one of them up.
   void build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection, const glm::mat4& map_view_projection,
-                       const std::vector<glm::mat4>& earlier = {}, float inside = 1.0f) const;
+                       const std::vector<glm::mat4>& earlier = {}, float map_texels = 1.0f) const;
   // Binds it for a program that includes depth_pyramid.glsl.
   void bind_for(const gl::Program& program) const;
   // Its levels, the last one texel; a level's texels, rows from the bottom (for tests).
@@ -38,16 +38,17 @@ class DepthPyramid {
 
  private:
   void set_levels(const gl::Program& program) const;
-  void build_base(GLuint polygon_depth, GLuint point_depths) const;  // the levels from 0 up
-  void reduce(std::size_t first_level) const;                         // the levels from first_level up
-  void dispatch(std::size_t pass) const;                              // a pass's work groups, from commands_
+  // The levels from 0 up, or from first_level up, each pass's work groups as `passes` holds them
+  // (whole_ or commands_); dispatch runs one pass.
+  void build_base(const gl::Buffer& passes, GLuint polygon_depth, GLuint point_depths) const;
+  void reduce(const gl::Buffer& passes, std::size_t first_level) const;
+  void dispatch(const gl::Buffer& passes, std::size_t pass) const;
   glm::ivec2 size_;
   std::vector<glm::ivec2> sizes_;      // per level
   std::vector<GLuint> offsets_;        // per level, in floats
   gl::Buffer depths_;
   // The build's passes as indirect dispatches, a uvec4 each: [0] the base's, [l] level l's from
-  // the one below. The whole build in whole_; what the next build runs in commands_ (build_if may
-  // empty them).
+  // the one below. The whole build in whole_; build_if's in commands_, the whole or none.
   gl::Buffer whole_, commands_;
   gl::Program base_program_, reduce_program_, dispatch_program_;
   // Made with the pyramid, not with the first frame that marks receivers, so that frame times

@@ -144,11 +144,11 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<GLuint>(band_list_, plant_count_);
   storage<glm::uvec2>(band_ranges_, max_bands);
   storage<glm::uvec4>(band_dispatch_, 2 * max_bands);
-  gl::store(band_drawn_, std::vector<GLuint>(max_bands, 1u));
+  gl::store(band_drawn_, std::vector<GLuint>(max_bands, 1u));  // as if each drew: a pyramid built over them stays right
   storage<GLuint>(layer_counts_, 2 * triangles_of_command_.size());
   storage<GLuint>(layer_plants_, plant_count_);
   storage<GLuint>(layer_commands_, command_uints * max_layers * std::max<std::size_t>(triangles_of_command_.size(), 1));
-  storage<glm::uvec4>(layer_dispatch_, 1);  // as if each drew: a pyramid built over them stays right
+  storage<glm::uvec4>(layer_dispatch_, 1);
 }
 
 void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed) {

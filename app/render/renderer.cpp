@@ -554,8 +554,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
 // earlier cascade's square: near plants, whose shadows fall in the first cascade, stay out of the
 // others (on the ecosystem's default view each cascade otherwise drew every polygon plant).
 GpuScene::PlantDraws Renderer::cascade_casters(int layer, const glm::mat4& map_view, const std::vector<glm::mat4>& earlier) {
-  const float inside = 1.0f - 2.0f * shadow::cascade_margin_texels / static_cast<float>(settings_.shadow_size);
-  receivers_->build_receivers(*occluders_, view_projection_, map_view, earlier, inside);
+  receivers_->build_receivers(*occluders_, view_projection_, map_view, earlier, static_cast<float>(settings_.shadow_size));
   return gpu_sampler_->select_casters(layer, map_view, *receivers_);
 }
 
