@@ -27,13 +27,14 @@ void texels_of(vec3 lo, vec3 hi, out ivec2 first, out ivec2 last) {
 
 bool off_image(vec3 lo, vec3 hi) { return any(lessThan(hi.xy, vec2(-1.0))) || any(greaterThan(lo.xy, vec2(1.0))); }
 
-// Whether a caster's box covers no receiver in the mask the pyramid holds over the image of a
-// shadow view (`map`: its world → clip matrix); false where it reaches behind the light.
+// Whether a caster's box covers no receiver farther from the light than its nearest point, in the
+// mask the pyramid holds over the image of a shadow view (`map`: its world → clip matrix; the
+// receivers' farthest window depths, receiver_marks.comp); false where it reaches behind the light.
 bool shadows_nothing(mat4 map, mat4 model, SampledMesh mesh) {
   vec3 lo, hi;
   if (!box_rect(map, model, mesh, lo, hi)) return false;
   if (off_image(lo, hi)) return true;
   ivec2 first, last;
   texels_of(lo, hi, first, last);
-  return farthest_over(first, last) < 0.5;
+  return farthest_over(first, last) <= max(lo.z * 0.5 + 0.5, 0.0);
 }

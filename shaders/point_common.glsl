@@ -20,9 +20,10 @@ const uint points_per_block = 16u;  // app/render/point_splat.cpp
 // the depth where it fell outside the target.
 layout(std430, binding = 9) buffer Projected { uvec2 projected[]; };
 
-// The list's size, in a buffer so that a list made on the GPU needs no read-back, and where the
-// points of the distance band last added begin (app/render/gpu_sampler.hpp).
-layout(std430, binding = 15) readonly buffer Totals { uint total_points; uint draw_count; uint band_first_point; };
+// The list's size, in a buffer so that a list made on the GPU needs no read-back, where the points
+// of the distance band last added begin, and how many of them the frame shows (the rest are for
+// shadow maps alone: app/render/gpu_sampler.hpp).
+layout(std430, binding = 15) readonly buffer Totals { uint total_points; uint draw_count; uint band_first_point; uint frame_points; };
 
 const uint no_point = 0xFFFFFFFFu;
 uniform ivec2 target_size;

@@ -5,6 +5,7 @@ layout(local_size_x = 64) in;
 
 uniform int splat_size;
 uniform bool band_only;  // only the points of the band last added, not the whole list
+uniform bool map_points;  // also the points for shadow maps alone, which the frame does not show
 
 const uint points_per_thread = 16u;
 
@@ -12,7 +13,7 @@ const uint points_per_thread = 16u;
 uvec2 thread_points() {
   uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
   uint first = (band_only ? band_first_point : 0u) + (group * gl_WorkGroupSize.x + gl_LocalInvocationID.x) * points_per_thread;
-  return uvec2(first, min(first + points_per_thread, total_points));
+  return uvec2(first, min(first + points_per_thread, map_points ? total_points : frame_points));
 }
 
 // The index of pixel (x, y) of a splat whose lower-left pixel is `corner`; no_point off the target.

@@ -1,11 +1,16 @@
 #version 450 core
 // Marks, in level 0 of a max pyramid over a shadow view's image (depth_pyramid.glsl), the texels
-// where the frame shows a surface: 1 there, 0 elsewhere; with CLEAR the zeros alone. The frame's
-// surfaces are its nearest window depths, level 0 of the frame's own depth pyramid (binding 25).
+// where the frame shows a surface: the farthest of their window depths in that view there (above
+// 0: depth grows along the light's rays in every map, shadow/light_projection.hpp), 0 elsewhere;
+// with CLEAR the zeros alone. The frame's surfaces are its nearest window depths, level 0 of the
+// frame's own depth pyramid (binding 25).
 // Of a cascade, only the surfaces that look it up: none inside an earlier cascade's square
 // (shadow_views.glsl, FIRST_CONTAINING).
 #define PYRAMID_WRITTEN
 #include "depth_pyramid.glsl"
+// The same level 0 as float bits, which order as the floats do where those are not negative: the
+// farthest mark is kept whichever thread writes last.
+layout(std430, binding = 17) buffer PyramidBits { uint pyramid_bits[]; };
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #ifdef CLEAR
@@ -46,6 +51,7 @@ void main() {
   vec2 map = clip.xy / clip.w;
   if (any(greaterThan(abs(map), vec2(1.0)))) return;
   ivec2 texel = min(ivec2((map * 0.5 + 0.5) * vec2(pyramid_size[0])), pyramid_size[0] - 1);
-  pyramid[pyramid_offset[0] + uint(texel.y * pyramid_size[0].x + texel.x)] = 1.0;
+  float map_depth = max(clip.z / clip.w * 0.5 + 0.5, 1e-6);  // a mark is above 0
+  atomicMax(pyramid_bits[pyramid_offset[0] + uint(texel.y * pyramid_size[0].x + texel.x)], floatBitsToUint(map_depth));
 }
 #endif

@@ -12,19 +12,25 @@ layout(std430, binding = 23) buffer GroupBands { uint group_bands[]; };
 layout(std430, binding = 24) writeonly buffer BandDispatch { uvec4 band_dispatch[]; };
 uniform uint group_count;
 uniform uint band_count;
+// Where the sorted plants' places begin in the band list, and the first band's number there from
+// 0: both 0 for the frame's sort, which also starts the lists; after it, the sort of the plants
+// hidden in the frame into a band of their own.
+uniform uint list_start;
+uniform uint first_band;
 
 shared uint sums[256];
 
 void main() {
   uint t = gl_LocalInvocationID.x;
-  if (t == 0u) {
+  if (t == 0u && list_start == 0u) {
     total_points = 0u;
     draw_count = 0u;
     band_first_point = 0u;
+    frame_points = 0u;
     all_points = 0u;
     polygon_count = 0u;
   }
-  uint carried = 0u;
+  uint carried = list_start;
   uint cells = group_count * band_count;
   for (uint first = 0u; first < cells; first += 256u) {
     uint own = first + t < cells ? group_bands[first + t] : 0u;
@@ -46,8 +52,8 @@ void main() {
   for (uint b = t; b < band_count; b += 256u) {
     uint start = group_bands[b * group_count];
     uint end = b + 1u < band_count ? group_bands[(b + 1u) * group_count] : carried;
-    band_ranges[b] = uvec2(start, end - start);
-    band_dispatch[2u * b] = uvec4((end - start + plants_per_group - 1u) / plants_per_group, 1u, 1u, 0u);
-    band_dispatch[2u * b + 1u] = uvec4((end - start + 255u) / 256u, 1u, 1u, 0u);
+    band_ranges[first_band + b] = uvec2(start, end - start);
+    band_dispatch[2u * (first_band + b)] = uvec4((end - start + plants_per_group - 1u) / plants_per_group, 1u, 1u, 0u);
+    band_dispatch[2u * (first_band + b) + 1u] = uvec4((end - start + 255u) / 256u, 1u, 1u, 0u);
   }
 }

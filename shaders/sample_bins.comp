@@ -2,9 +2,10 @@
 // The GPU sampler's first passes, once a frame: the plants in view sorted into distance bands,
 // each band's in plant order (a stable counting sort). With KEYS each plant culled against the
 // view's frusta and given its band by its distance from the eye; a plant in none of them but in the
-// body of the casters (what may shadow the view) goes to the last band, the casters'; with PLACES each work group of plants counts (COUNT) or places
-// its plants band by band, one thread walking the group's plants in order. The keys pass also
-// clears the plants' counts.
+// body of the casters (what may shadow the view) goes to the last band, the casters'; with
+// HIDDEN_KEYS, once the frame's bands are counted, the plants the nearest of them left out as
+// hidden go to a band of their own. Then each work group of plants counts (COUNT) or places its plants band by band,
+// one thread walking the group's plants in order. The keys pass also clears the plants' counts.
 #include "sample_common.glsl"
 
 layout(std430, binding = 22) buffer BandKeys { uint band_keys[]; };  // per plant: its band from 0, or no_band
@@ -14,7 +15,16 @@ layout(std430, binding = 23) buffer GroupBands { uint group_bands[]; };
 uniform uint group_count;
 uniform uint band_count;
 
-#ifdef KEYS
+#ifdef HIDDEN_KEYS
+layout(local_size_x = 256) in;
+uniform uint hidden_bands;  // of the frame's bands, the first this many
+// The plants in view that those bands left out as hidden (sample_count.comp), into one band.
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= plant_count) return;
+  band_keys[i] = counts[i].w == hidden_in_frame && counts[i].y <= hidden_bands ? 0u : no_band;
+}
+#elif defined(KEYS)
 layout(local_size_x = 256) in;
 uniform vec4 planes[96];  // inside where dot >= 0: six per view, then the casters' body's
 uniform uint view_count;

@@ -14,20 +14,22 @@ struct SampledMesh {
 layout(std430, binding = 2) readonly buffer Instances { Instance instances[]; };
 layout(std430, binding = 10) readonly buffer PlantMeshes { uvec2 plant_meshes[]; };  // mesh, rounding's float bits
 layout(std430, binding = 11) readonly buffer SampledMeshes { SampledMesh meshes[]; };
-// Per plant, once counted: (points, the number of its band from 1, 1 when drawn as polygons, 0);
-// zero before.
+// Per plant, once counted: (points, the number of its band from 1, 1 when drawn as polygons,
+// hidden_in_frame where its box is behind what nearer bands drew, else 0); zero before.
 layout(std430, binding = 12) buffer Counts { uvec4 counts[]; };
-// Per place in the band list: the exclusive prefix sums of (points, plants with points, plants as
-// polygons) within its work group of its band, until the groups' sums (after the bands before)
-// are added.
+// Per place in the band being added: the exclusive prefix sums of (points, plants with points,
+// plants as polygons) within its work group, until the groups' sums (after the bands before) are
+// added.
 layout(std430, binding = 13) buffer Offsets { uvec4 offsets[]; };
 layout(std430, binding = 14) buffer GroupSums { uvec4 group_sums[]; };
 // The lists' sizes: the points a splat draws (no more than its buffers hold), the point draws,
-// where this band's points begin, all points, the polygon plants.
+// where this band's points begin, the points of the bands the frame shows (the others are for
+// shadow maps alone), all points, the polygon plants.
 layout(std430, binding = 15) buffer Totals {
   uint total_points;
   uint draw_count;
   uint band_first_point;
+  uint frame_points;
   uint all_points;
   uint polygon_count;
 };
@@ -41,6 +43,7 @@ uniform uint band_number;  // the band being counted, from 1
 
 const uint plants_per_group = 1024u;  // 256 threads of 4 plants (app/render/gpu_sampler.cpp)
 const uint no_band = 0xFFFFFFFFu;
+const uint hidden_in_frame = 1u;  // counts[].w of a plant in view that its band left out as hidden
 
 // The band's first place in the band list, and its plants.
 uvec2 this_band() { return band_ranges[band_number - 1u]; }

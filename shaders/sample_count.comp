@@ -1,6 +1,7 @@
 #version 450 core
 // The GPU sampler's count pass, per band: each of the band's plants (in view, sample_bins.comp)
-// culled, with occlusion, against the depth pyramid of what nearer bands drew; counted with the
+// culled, with occlusion, against the depth pyramid of what nearer bands drew (and marked so, for
+// the band of hidden plants the shadow maps draw: sample_bins.comp); counted with the
 // density formula (docs/point_density.md); points or polygons chosen as pointgen::sample_view
 // chooses them. Then the prefix sums of the counts within each work group.
 #include "sample_common.glsl"
@@ -10,13 +11,14 @@ layout(local_size_x = 256) in;
 
 uniform mat4 view_projection;  // the first view's, for occlusion
 uniform bool occlusion;
-// For casters out of view: no more than k points per texel of the surface a shadow view projects
-// (half the area: taken as facing every way), whatever the camera's density asks.
+// For the shadow maps' own bands (casters out of view, plants the frame hides): no more than k
+// points per texel of the surface a shadow view projects (half the area: taken as facing every
+// way), whatever the camera's density asks.
 uniform bool cap_to_map;
 uniform mat4 map_view_projection;
 uniform float map_texels;
-// For casters out of view: only those whose box covers a receiver the frame shows, as marked in
-// the pyramid bound (then a receiver mask over the shadow view's image, DepthPyramid).
+// For those bands: only plants whose box covers a receiver the frame shows farther from the light,
+// as marked in the pyramid bound (then a receiver mask over the shadow view's image, DepthPyramid).
 uniform bool receivers_only;
 uniform vec3 eye;
 uniform vec3 forward;
@@ -45,11 +47,12 @@ float facing(SampledMesh mesh, vec3 v) {
   return sqrt(max(dot(v, moments * v), 0.0));
 }
 
-// (points, 1 when drawn as polygons) of plant i.
-uvec2 count_plant(uint i) {
+// (points, 1 when drawn as polygons, hidden_in_frame when hidden) of plant i.
+uvec3 count_plant(uint i) {
   mat4 model = instances[i].model;
   SampledMesh mesh = meshes[plant_meshes[i].x];
-  if ((occlusion && hidden(model, mesh)) || (receivers_only && shadows_nothing(map_view_projection, model, mesh))) return uvec2(0u);
+  if (occlusion && hidden(model, mesh)) return uvec3(0u, 0u, hidden_in_frame);
+  if (receivers_only && shadows_nothing(map_view_projection, model, mesh)) return uvec3(0u);
   vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
   float scale = pow(abs(determinant(mat3(model))), 1.0 / 3.0);
   float radius = mesh.center_radius.w * scale;
@@ -73,7 +76,7 @@ uvec2 count_plant(uint i) {
   float drawn = (as_polygons ? clamp((band_high - ratio) / (band_high - band_low), 0.0, 1.0) : 1.0) * needed;
   uint points = uint(min(floor(drawn + uintBitsToFloat(plant_meshes[i].y)), samples));
   bool as_points = ratio < band_high && mesh.sizes.y > 0u;
-  return uvec2(as_points ? points : 0u, as_polygons ? 1u : 0u);
+  return uvec3(as_points ? points : 0u, as_polygons ? 1u : 0u, 0u);
 }
 
 shared uvec4 sums[256];
@@ -87,9 +90,9 @@ void main() {
     own[j] = total;
     if (first + j >= band.y) continue;
     uint plant = band_list[band.x + first + j];
-    uvec2 c = count_plant(plant);
+    uvec3 c = count_plant(plant);
     total += uvec4(c.x, c.x > 0u ? 1u : 0u, c.y, 0u);
-    counts[plant] = uvec4(c.x, band_number, c.y, 0u);
+    counts[plant] = uvec4(c.x, band_number, c.y, c.z);
   }
   // Inclusive scan of the threads' totals (Hillis-Steele), then each plant's exclusive offset.
   uint t = gl_LocalInvocationID.x;
@@ -103,7 +106,7 @@ void main() {
   }
   uvec4 thread_offset = sums[t] - total;
   for (uint j = 0u; j < 4u; ++j) {
-    if (first + j < band.y) offsets[band.x + first + j] = thread_offset + own[j];
+    if (first + j < band.y) offsets[first + j] = thread_offset + own[j];
   }
   if (t == 255u) group_sums[gl_WorkGroupID.x] = sums[t];
 }

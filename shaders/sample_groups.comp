@@ -9,6 +9,7 @@ layout(local_size_x = 256) in;
 // after it needs the depth pyramid built again.
 layout(std430, binding = 28) writeonly buffer BandDrawn { uint band_drawn[]; };
 uniform uint point_capacity;  // the points the splat's buffers hold: those past it are not drawn
+uniform bool in_frame;         // the band is one the frame shows
 
 shared uvec4 sums[256];
 
@@ -37,6 +38,7 @@ void main() {
     band_first_point = min(all_points, point_capacity);
     all_points = carried.x;
     total_points = min(carried.x, point_capacity);
+    if (in_frame) frame_points = total_points;
     draw_count = carried.y;
     polygon_count = carried.z;
   }

@@ -60,6 +60,20 @@ class GpuSampling : public testing::Test {
   }();
   PointSamples samples{scene, settings.points_per_triangle, true};
 
+  // A frame of the scene `json` with `settings`: its pixels in shadow and its figures.
+  struct Shadowed {
+    std::size_t shadowed = 0;
+    FrameStats stats;
+  };
+  Shadowed render_shadows(const std::string& json) const {
+    const Scene s = load_scene({"scene.json", json, [](const std::string&) { return std::nullopt; }});
+    Renderer renderer(s, settings);
+    renderer.render(s.camera, s.lights[0]);
+    const Image8 visibility = renderer.frame().read_visibility();
+    return {static_cast<std::size_t>(std::count_if(visibility.samples.begin(), visibility.samples.end(), [](std::uint8_t v) { return v < 128; })),
+            renderer.stats()};
+  }
+
   pointgen::SamplerView view() const {
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
     pointgen::SamplerView v = sampler_view(scene.camera, settings, {scene.camera.projection(aspect) * scene.camera.view()});
@@ -180,28 +194,19 @@ TEST_F(GpuSampling, ACascadeDrawsThePlantsWhoseShadowsFallInIt) {
   settings.width = 480;
   settings.height = 270;
   settings.gpu_sampler = true;
-  struct Frame {
-    std::size_t shadowed = 0, triangles = 0, shadow_triangles = 0;
-  };
   const auto render = [&](ShadowMethod method, const std::string& direction) {
     settings.method = method;
-    const Scene s = load_scene({"beech.json", R"({"camera": {"position": [0, 2, 0], "target": [0, 0, -20], "fov_y_deg": 50, "near": 0.5, "far": 300},
+    return render_shadows(R"({"camera": {"position": [0, 2, 0], "target": [0, 0, -20], "fov_y_deg": 50, "near": 0.5, "far": 300},
         "lights": [{"type": "directional", "direction": )" + direction + R"(}],
         "objects": [{"type": "plane", "center": [0, 0, -100], "size": [300, 300]},
-                    {"type": "plant", "species": "beech", "positions": [[0, 0, -12]]}]})",
-                                [](const std::string&) { return std::nullopt; }});
-    Renderer renderer(s, settings);
-    renderer.render(s.camera, s.lights[0]);
-    const Image8 visibility = renderer.frame().read_visibility();
-    return Frame{static_cast<std::size_t>(std::count_if(visibility.samples.begin(), visibility.samples.end(), [](std::uint8_t v) { return v < 128; })),
-                 renderer.stats().triangles, renderer.stats().shadow_triangles};
+                    {"type": "plant", "species": "beech", "positions": [[0, 0, -12]]}]})");
   };
-  const Frame high = render(ShadowMethod::cascades, "[0.2, -1, 0.1]");
-  ASSERT_GT(high.triangles, 1000u) << "the beech is drawn as polygons";
+  const Shadowed high = render(ShadowMethod::cascades, "[0.2, -1, 0.1]");
+  ASSERT_GT(high.stats.triangles, 1000u) << "the beech is drawn as polygons";
   EXPECT_GT(high.shadowed, 200u);
-  EXPECT_EQ(high.shadow_triangles, 4 * 2 + (high.triangles - 2)) << "the plane in each cascade, the beech in the first alone";
-  const Frame low = render(ShadowMethod::cascades, "[0.7, -0.3, -0.65]"), uniform = render(ShadowMethod::uniform, "[0.7, -0.3, -0.65]");
-  EXPECT_GT(low.shadow_triangles, 4 * 2 + (low.triangles - 2)) << "the beech in more cascades than the first";
+  EXPECT_EQ(high.stats.shadow_triangles, 4 * 2 + (high.stats.triangles - 2)) << "the plane in each cascade, the beech in the first alone";
+  const Shadowed low = render(ShadowMethod::cascades, "[0.7, -0.3, -0.65]"), uniform = render(ShadowMethod::uniform, "[0.7, -0.3, -0.65]");
+  EXPECT_GT(low.stats.shadow_triangles, 4 * 2 + (low.stats.triangles - 2)) << "the beech in more cascades than the first";
   EXPECT_GT(uniform.shadowed, 1000u);
   EXPECT_NEAR(static_cast<double>(low.shadowed), static_cast<double>(uniform.shadowed), 0.15 * static_cast<double>(uniform.shadowed));
 }
@@ -287,25 +292,55 @@ TEST_F(GpuSampling, TheShadowMapTakesTheCastersOutOfViewThatShadowTheView) {
   settings.height = 180;
   settings.method = ShadowMethod::psm;
   settings.gpu_sampler = true;
-  struct Frame {
-    std::size_t shadowed = 0, triangles = 0, shadow_triangles = 0;
-  };
-  const auto render = [&](const std::string& objects) {
-    const Scene s = load_scene({"beech.json", start + objects + "]}", [](const std::string&) { return std::nullopt; }});
-    Renderer renderer(s, settings);
-    renderer.render(s.camera, s.lights[0]);
-    const Image8 visibility = renderer.frame().read_visibility();
-    return Frame{static_cast<std::size_t>(std::count_if(visibility.samples.begin(), visibility.samples.end(), [](std::uint8_t v) { return v < 128; })),
-                 renderer.stats().triangles, renderer.stats().shadow_triangles};
-  };
-  const Frame ground = render(""), seen = render(beside);
+  const auto render = [&](const std::string& objects) { return render_shadows(start + objects + "]}"); };
+  const Shadowed ground = render(""), seen = render(beside);
   EXPECT_GT(seen.shadowed, 500u) << "its shadow should lie across the view";
-  EXPECT_GT(seen.shadow_triangles, ground.shadow_triangles) << "drawn into the map (near: as polygons)";
-  EXPECT_EQ(seen.triangles, ground.triangles) << "but not into the frame, which does not show it";
-  EXPECT_EQ(render(behind).shadow_triangles, ground.shadow_triangles) << "its shadow falls behind the camera";
-  const Frame walled = render(wall), hidden = render(wall + beside);
-  EXPECT_EQ(hidden.shadow_triangles, walled.shadow_triangles) << "its shadow falls on ground the wall hides";
+  EXPECT_GT(seen.stats.shadow_triangles, ground.stats.shadow_triangles) << "drawn into the map (near: as polygons)";
+  EXPECT_EQ(seen.stats.triangles, ground.stats.triangles) << "but not into the frame, which does not show it";
+  EXPECT_EQ(render(behind).stats.shadow_triangles, ground.stats.shadow_triangles) << "its shadow falls behind the camera";
+  const Shadowed walled = render(wall), hidden = render(wall + beside);
+  EXPECT_EQ(hidden.stats.shadow_triangles, walled.stats.shadow_triangles) << "its shadow falls on ground the wall hides";
   EXPECT_EQ(hidden.shadowed, walled.shadowed);
+}
+
+// A plant the frame hides still shadows what it shows: a beech behind a pillar casts its shadow
+// towards the camera onto ground beside the pillar, as when every plant is drawn as polygons.
+TEST_F(GpuSampling, APlantTheFrameHidesCastsItsShadowOnWhatTheFrameShows) {
+  const std::string start = R"({"camera": {"position": [0, 2, 0], "target": [0, 0, -20], "fov_y_deg": 40, "near": 0.5, "far": 200},
+      "lights": [{"type": "directional", "direction": [0.3, -0.5, 0.9]}],
+      "objects": [{"type": "plane", "center": [0, 0, -20], "size": [200, 200]},
+                  {"type": "box", "min": [-4, 0, -10.5], "max": [4, 40, -10]})";
+  const std::string beech = R"(, {"type": "plant", "species": "beech", "positions": [[0, 0, -40]]})";
+  settings.width = 320;
+  settings.height = 180;
+  settings.method = ShadowMethod::psm;
+  const auto render = [&](const std::string& objects, bool points) {
+    settings.points = settings.gpu_sampler = points;
+    return render_shadows(start + objects + "]}");
+  };
+  const Shadowed bare = render("", true), hidden = render(beech, true), polygons = render(beech, false);
+  EXPECT_EQ(hidden.stats.points, 0u) << "the frame does not draw the beech";
+  EXPECT_EQ(hidden.stats.triangles, bare.stats.triangles);
+  ASSERT_GT(polygons.shadowed, bare.shadowed + 300) << "its shadow should lie beside the pillar";
+  const auto gain = [&](const Shadowed& f) { return static_cast<double>(f.shadowed) - static_cast<double>(bare.shadowed); };
+  EXPECT_NEAR(gain(hidden), gain(polygons), 0.25 * gain(polygons));
+}
+
+// A caster shadows only receivers farther from the light than itself: a beech beyond a wall from
+// a low light has the wall's lit face before it in each cascade, and no cascade draws it.
+TEST_F(GpuSampling, ACasterBeyondEveryReceiverFromTheLightIsLeftOut) {
+  const std::string start = R"({"camera": {"position": [0, 2, 0], "target": [0, 0, -20], "fov_y_deg": 40, "near": 0.5, "far": 200},
+      "lights": [{"type": "directional", "direction": [1, -0.2, 0]}],
+      "objects": [{"type": "plane", "center": [0, 0, -20], "size": [200, 200]},
+                  {"type": "box", "min": [5, 0, -30], "max": [6, 30, -10]})";
+  const std::string beech = R"(, {"type": "plant", "species": "beech", "positions": [[30, 0, -20]]})";
+  settings.width = 320;
+  settings.height = 180;
+  settings.method = ShadowMethod::cascades;
+  settings.gpu_sampler = true;
+  const Shadowed bare = render_shadows(start + "]}"), beyond = render_shadows(start + beech + "]}");
+  EXPECT_EQ(beyond.shadowed, bare.shadowed) << "nothing the frame shows lies beyond the beech from the light";
+  EXPECT_EQ(beyond.stats.shadow_triangles, bare.stats.shadow_triangles);
 }
 
 TEST_F(GpuSampling, AFrameWithoutPlantsDrawsNone) {

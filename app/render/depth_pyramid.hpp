@@ -23,9 +23,10 @@ class DepthPyramid {
   // Or keeps it as it is where the uint at `flag` in the GL buffer `flags` is zero (nothing drawn
   // since it was built), decided on the GPU without a read-back.
   void build_if(GLuint flags, std::size_t flag, GLuint polygon_depth, GLuint point_depths) const;
-  // Or, over a shadow view's image, as a receiver mask: level 0 is 1 where `frame` (the frame's
-  // pyramid, last built) shows a surface through `map_view_projection`, 0 elsewhere, and each
-  // level above the most of the 2 × 2 below; a caster whose rectangle there holds no 1 shadows
+  // Or, over a shadow view's image, as a receiver mask: level 0 holds where `frame` (the frame's
+  // pyramid, last built) shows a surface through `map_view_projection` the farthest window depth
+  // of those surfaces in that view (above 0), 0 elsewhere, and each level above the most of the
+  // 2 × 2 below; a caster whose rectangle there holds no depth beyond its own nearest shadows
   // nothing the frame shows. Of a cascade, `earlier` are the cascades before it (at most 8), of
   // maps `map_texels` wide: it marks no surface that looks one of them up.
   void build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection, const glm::mat4& map_view_projection,

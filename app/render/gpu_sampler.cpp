@@ -23,7 +23,7 @@ struct GpuMesh {
   glm::uvec4 sizes;
 };
 struct GpuTotals {
-  GLuint total_points, draw_count, band_first_point, all_points, polygon_count;
+  GLuint total_points, draw_count, band_first_point, frame_points, all_points, polygon_count;
 };
 constexpr std::size_t command_uints = GpuScene::command_bytes / sizeof(GLuint);
 
@@ -40,6 +40,10 @@ constexpr std::size_t max_planes = 96;                                    // pla
 // Bands: the first ends this far from the eye (metres), each next one this many times as far.
 // Finer bands hide more of what lies behind a near one, at a pyramid and a few passes each.
 constexpr float first_band_end = 12.0f, band_ratio = 1.5f;
+// The plants the frame hides go into the shadow maps from the bands within this distance (the
+// first four). On the ecosystem's default view with PSM 2048² those beyond change `err` by 0.01
+// points; on a dense stand of 10^5 plants they added 0.8 M map triangles (docs/benchmarks.md).
+constexpr float hidden_casters_reach = 41.0f;
 
 std::vector<GpuInstance> instances_of(const pointgen::InstanceTable& table) {
   std::vector<GpuInstance> instances;
@@ -65,7 +69,7 @@ GLuint groups_for(std::size_t threads, std::size_t per_group) {
 }  // namespace
 
 std::vector<glm::vec2> GpuSampler::bands(float far) {
-  constexpr int most = 24;  // and the casters' after them
+  constexpr int most = 24;  // and the casters' and the hidden plants' after them
   std::vector<glm::vec2> bands;
   for (float near = 0.0f, end = first_band_end; static_cast<int>(bands.size()) + 1 < most; near = end, end *= band_ratio) {
     if (near >= far) break;
@@ -78,6 +82,7 @@ std::vector<glm::vec2> GpuSampler::bands(float far) {
 GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const PointSamples& samples,
                        const std::vector<GpuScene::DrawPlace>& places)
     : keys_program_(gl::build_program({"sample_bins.comp"}, "#define KEYS\n")),
+      hidden_keys_program_(gl::build_program({"sample_bins.comp"}, "#define HIDDEN_KEYS\n")),
       bin_count_program_(gl::build_program({"sample_bins.comp"}, "#define COUNT\n")),
       bands_program_(gl::build_program({"sample_bands.comp"})),
       place_program_(gl::build_program({"sample_bins.comp"})),
@@ -141,7 +146,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<GLuint>(commands_, command_uints * max_bands * std::max<std::size_t>(triangles_of_command_.size(), 1));
   storage<GLuint>(band_keys_, plant_count_);
   storage<GLuint>(group_bands_, group_count_ * max_bands);
-  storage<GLuint>(band_list_, plant_count_);
+  storage<GLuint>(band_list_, 2 * plant_count_);  // the frame's bands, then the band of those hidden in it
   storage<glm::uvec2>(band_ranges_, max_bands);
   storage<glm::uvec4>(band_dispatch_, 2 * max_bands);
   gl::store(band_drawn_, std::vector<GLuint>(max_bands, 1u));  // as if each drew: a pyramid built over them stays right
@@ -188,10 +193,11 @@ void GpuSampler::bind() const {
 void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands,
                        const std::vector<shadow::Plane>& casters) {
   if (6 * view.views.size() + casters.size() > max_planes) throw RuntimeFailure("the GPU sampler takes at most 96 planes at once");
-  if (bands.empty() || bands.size() + 1 > max_bands) throw RuntimeFailure("the GPU sampler takes 1 to 31 bands a frame");
-  bands_used_ = static_cast<int>(bands.size() + (casters.empty() ? 0 : 1));
+  if (bands.empty() || bands.size() + 2 > max_bands) throw RuntimeFailure("the GPU sampler takes 1 to 30 bands a frame");
+  bands_used_ = static_cast<int>(bands.size() + (casters.empty() ? 0 : 2));
   layers_selected_ = 0;
   casters_band_ = casters.empty() ? std::nullopt : std::optional<int>(static_cast<int>(bands.size()));
+  hidden_band_ = casters.empty() ? std::nullopt : std::optional<int>(static_cast<int>(bands.size() + 1));
   // The lists are reset by the sort's passes, not by buffer clears: on llvmpipe a clear of the
   // counts at times landed after the count pass that followed it (counts of the first plants lost,
   // differently from run to run).
@@ -218,17 +224,26 @@ void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm:
   gl::set_uniform(keys_program_, "caster_plane_count", static_cast<unsigned>(casters.size()));
   gl::set_uniform(keys_program_, "eye", view.eye);
 
-  // The stable counting sort of the plants in view into bands (shaders/sample_bins.comp).
+  const auto near_bands = std::count_if(bands.begin(), bands.end(), [](const glm::vec2& b) { return b.y <= hidden_casters_reach; });
+  gl::set_uniform(hidden_keys_program_, "hidden_bands", static_cast<unsigned>(near_bands));
+  sort(keys_program_, static_cast<int>(bands.size() + (casters.empty() ? 0 : 1)), 0);
+}
+
+// The stable counting sort of the plants that `keys` gives a band into `band_count` bands from
+// number `first_band` on (shaders/sample_bins.comp): from the start of the band list for the
+// frame's bands, after them for the hidden plants' band.
+void GpuSampler::sort(const gl::Program& keys, int band_count, int first_band) {
   bind();
-  const auto plants = static_cast<unsigned>(plant_count_), groups = static_cast<unsigned>(group_count_);
-  const auto band_count = static_cast<unsigned>(bands_used_);
-  for (const gl::Program* program : {&keys_program_, &bin_count_program_, &bands_program_, &place_program_}) {
-    gl::set_uniform(*program, "plant_count", plants);
-    gl::set_uniform(*program, "group_count", groups);
-    gl::set_uniform(*program, "band_count", band_count);
+  const auto bands = static_cast<unsigned>(band_count);
+  for (const gl::Program* program : std::initializer_list<const gl::Program*>{&keys, &bin_count_program_, &bands_program_, &place_program_}) {
+    gl::set_uniform(*program, "plant_count", static_cast<unsigned>(plant_count_));
+    gl::set_uniform(*program, "group_count", static_cast<unsigned>(group_count_));
+    gl::set_uniform(*program, "band_count", bands);
   }
+  gl::set_uniform(bands_program_, "list_start", static_cast<unsigned>(first_band == 0 ? 0 : plant_count_));
+  gl::set_uniform(bands_program_, "first_band", static_cast<unsigned>(first_band));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  glUseProgram(keys);
+  glUseProgram(keys.name());
   glDispatchCompute(groups_for(plant_count_, threads_per_group), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   glUseProgram(bin_count_program_.name());
@@ -250,6 +265,10 @@ void GpuSampler::add_casters(const glm::mat4& map_view, float texels, const Dept
   gl::set_uniform(count_program_, "map_texels", texels);
   receivers.bind_for(count_program_);
   add_band(*casters_band_, nullptr);
+  if (plant_count_ > 0) {
+    sort(hidden_keys_program_, 1, *hidden_band_);
+    add_band(*hidden_band_, nullptr);
+  }
   gl::set_uniform(count_program_, "cap_to_map", 0);
   gl::set_uniform(count_program_, "receivers_only", 0);
 }
@@ -274,6 +293,7 @@ void GpuSampler::add_band(int band, const DepthPyramid* occluders) {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   gl::set_uniform(groups_program_, "point_capacity", static_cast<unsigned>(point_capacity_));
+  gl::set_uniform(groups_program_, "in_frame", !casters_band_ || band < *casters_band_ ? 1 : 0);
   glUseProgram(groups_program_.name());
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -365,7 +385,7 @@ GpuSampler::Totals GpuSampler::read_totals() const {
   const std::size_t tables = triangles_of_command_.size();
   std::vector<GLuint> commands(command_uints * tables * static_cast<std::size_t>(std::max(bands_used_, 1)));
   glGetNamedBufferSubData(commands_.name(), 0, static_cast<GLsizeiptr>(commands.size() * sizeof(GLuint)), commands.data());
-  Totals out{totals.total_points, totals.polygon_count, 0, casters_band_ ? totals.band_first_point : totals.total_points, 0, {}};
+  Totals out{totals.total_points, totals.polygon_count, 0, totals.frame_points, 0, {}};
   for (std::size_t c = 0; c < commands.size() / command_uints; ++c) {
     const std::size_t triangles = commands[c * command_uints + 1] * triangles_of_command_[c % tables];
     out.triangles += triangles;

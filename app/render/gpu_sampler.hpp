@@ -19,8 +19,9 @@ namespace ecoview {
 // same frame, so a frame depends on its own view alone), counted with the density formula, given
 // points or polygons with the band around break-even, and appended to the point draws (as
 // PointSplat reads them) and the list of polygon plants (their indices), with an indirect draw per
-// table and band and no read-back. A last band may hold the casters out of view that shadow what
-// the frame shows; a cascade draws the polygon plants that shadow its own surfaces.
+// table and band and no read-back. Two last bands, for shadow maps alone, may hold the casters out
+// of view and the plants the frame hides that shadow what it shows; a cascade draws the polygon
+// plants that shadow its own surfaces.
 // Without occlusion it chooses as pointgen::sample_view does, by whole plants and without cells'
 // aggregates: the CPU sampler is its test oracle. docs/point_density.md, "On the GPU".
 class GpuSampler {
@@ -44,20 +45,23 @@ class GpuSampler {
   // receivers are not. With `casters` (the planes of a convex body, normals out: all that may
   // shadow what the view sees), the plants in it but outside the view's frusta are a band of their
   // own after the others, the casters', counted as the view's density asks (their shadows are seen
-  // in it).
+  // in it); the band of hidden plants follows it (add_casters).
   void begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands,
              const std::vector<shadow::Plane>& casters = {});
   // The bands of this frame, the casters' among them.
   int band_count() const { return bands_used_; }
   // The number of the casters' band in this frame; none without caster views.
   std::optional<int> casters_band() const { return casters_band_; }
+  // The number of the band of the plants hidden in the frame, after the casters'; none without.
+  std::optional<int> hidden_band() const { return hidden_band_; }
   // Adds the plants of a band (numbered from 0, nearest first); hidden ones are left out where
   // `occluders` is given (built over the first view's image).
   void add_band(int band, const DepthPyramid* occluders);
-  // The casters' band, counted for a shadow map of `texels` texels through `map_view` (its first
-  // view's world → clip matrix): only plants whose boxes cover a receiver in `receivers` (a mask
-  // over that view's image, DepthPyramid::build_receivers), none with more points than k per
-  // texel it covers there.
+  // The casters' band, then the plants within a few tens of metres that the frame's bands left out
+  // as hidden (their shadows may fall on what the frame shows), each counted for a shadow map of `texels` texels
+  // through `map_view` (its first view's world → clip matrix): only plants whose boxes cover a
+  // receiver in `receivers` (a mask over that view's image, DepthPyramid::build_receivers), none
+  // with more points than k per texel it covers there. Their points are for the maps alone.
   void add_casters(const glm::mat4& map_view, float texels, const DepthPyramid& receivers);
   // One band holding every plant, without occlusion.
   void sample(const pointgen::SamplerView& view);
@@ -102,19 +106,20 @@ class GpuSampler {
 
  private:
   void bind() const;
+  void sort(const gl::Program& keys, int band_count, int first_band);
   std::size_t plant_count_ = 0;
   std::size_t group_count_ = 0;
   std::size_t point_capacity_ = 0;  // points the draw list has room for
   int bands_used_ = 0;
   int layers_selected_ = 0;  // select_casters' this frame: layers 0 to this - 1
-  std::optional<int> casters_band_;
+  std::optional<int> casters_band_, hidden_band_;
   std::vector<std::uint32_t> first_plant_;
   std::vector<bool> holds_plants_;  // per table
   std::vector<std::size_t> triangles_of_command_;  // per place, the mesh's triangles
   gl::Buffer instances_, plant_meshes_, meshes_, counts_, offsets_, group_sums_, draws_, block_draws_, totals_;
   gl::Buffer polygon_instances_, tables_, commands_;
   gl::Buffer band_keys_, group_bands_, band_list_, band_ranges_, band_dispatch_, band_drawn_;
-  gl::Program keys_program_, bin_count_program_, bands_program_, place_program_;
+  gl::Program keys_program_, hidden_keys_program_, bin_count_program_, bands_program_, place_program_;
   gl::Program count_program_, groups_program_, draws_program_, commands_program_;
   // select_casters' (shaders/layer_casters.comp).
   gl::Buffer layer_counts_, layer_plants_, layer_commands_, layer_dispatch_;

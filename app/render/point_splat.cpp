@@ -65,7 +65,7 @@ PointSplat::PointSplat(glm::ivec2 size)
   const auto pixels = static_cast<GLsizeiptr>(size.x) * size.y * static_cast<GLsizeiptr>(sizeof(GLuint));
   glNamedBufferStorage(depths_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(winners_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
-  glNamedBufferStorage(totals_.name(), 3 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(totals_.name(), 4 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(dispatch_.name(), 3 * sizeof(GLuint), nullptr, 0);
 }
 
@@ -92,7 +92,7 @@ void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std
   fill(draws_, draws_capacity_, gpu_draws);
   fill(instances_, instances_capacity_, instances);
   fill(block_draws_, block_draws_capacity_, block_draws);
-  const GLuint totals[3] = {static_cast<GLuint>(first_point), static_cast<GLuint>(draws.size()), 0};
+  const GLuint totals[4] = {static_cast<GLuint>(first_point), static_cast<GLuint>(draws.size()), 0, static_cast<GLuint>(first_point)};
   glNamedBufferSubData(totals_.name(), 0, sizeof totals, totals);
   use({draws_.name(), instances_.name(), block_draws_.name(), totals_.name(), static_cast<std::size_t>(first_point)}, samples);
 }
@@ -114,19 +114,21 @@ void PointSplat::bind_for(const gl::Program& program) const {
   gl::set_uniform(program, "target_size", size_);
 }
 
-void PointSplat::count_groups(bool band_only) const {
+void PointSplat::count_groups(Points points) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, totals_binding, list_.totals);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, dispatch_binding, dispatch_.name());
-  gl::set_uniform(dispatch_program_, "band_only", band_only ? 1 : 0);
+  gl::set_uniform(dispatch_program_, "band_only", points == Points::last_band ? 1 : 0);
+  gl::set_uniform(dispatch_program_, "map_points", points == Points::all ? 1 : 0);
   glUseProgram(dispatch_program_.name());
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT);
 }
 
 void PointSplat::dispatch(const gl::Program& program, const glm::mat4& view_projection, int splat_size,
-                          float depth_bias, glm::vec2 paraboloid, bool band_only) const {
+                          float depth_bias, glm::vec2 paraboloid, Points points) const {
   bind_for(program);
-  gl::set_uniform(program, "band_only", band_only ? 1 : 0);
+  gl::set_uniform(program, "band_only", points == Points::last_band ? 1 : 0);
+  gl::set_uniform(program, "map_points", points == Points::all ? 1 : 0);
   gl::set_uniform(program, "view_projection", view_projection);
   gl::set_uniform(program, "paraboloid", paraboloid);
   gl::set_uniform(program, "splat_size", splat_size);
@@ -154,14 +156,15 @@ void PointSplat::begin() {
 
 void PointSplat::add(const glm::mat4& view_projection, int splat_size, float depth_bias, bool band_only) {
   if (list_.most_points == 0) return;
-  count_groups(band_only);
-  dispatch(keeping_depth_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f), band_only);
+  const Points points = band_only ? Points::last_band : Points::frame;
+  count_groups(points);
+  dispatch(keeping_depth_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f), points);
 }
 
 void PointSplat::resolve(const glm::mat4& view_projection, int splat_size, float depth_bias) {
   if (list_.most_points == 0) return;
-  count_groups(false);
-  dispatch(resolve_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f), false);
+  count_groups(Points::frame);
+  dispatch(resolve_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f), Points::frame);
 }
 
 // The layer's depths go into the depth buffer and back, copied by GL from and to a pixel buffer:
@@ -174,8 +177,8 @@ void PointSplat::splat_onto(GLuint depth_texture, int layer, const glm::mat4& vi
   glBindBuffer(GL_PIXEL_PACK_BUFFER, depths_.name());
   glGetTextureSubImage(depth_texture, 0, 0, 0, layer, size_.x, size_.y, 1, GL_DEPTH_COMPONENT, GL_FLOAT, bytes, nullptr);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-  count_groups(false);
-  dispatch(depth_program_, view_projection, splat_size, depth_bias, paraboloid, false);
+  count_groups(Points::all);
+  dispatch(depth_program_, view_projection, splat_size, depth_bias, paraboloid, Points::all);
   glMemoryBarrier(GL_PIXEL_BUFFER_BARRIER_BIT);
   glBindBuffer(GL_PIXEL_UNPACK_BUFFER, depths_.name());
   glTextureSubImage3D(depth_texture, 0, 0, 0, layer, size_.x, size_.y, 1, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
@@ -192,8 +195,8 @@ Image<std::uint32_t> PointSplat::count_points_on(const Image<float>& surface_dep
   glNamedBufferSubData(depths_.name(), 0, static_cast<GLsizeiptr>(rows_up.samples.size() * sizeof(float)), rows_up.samples.data());
   clear(winners_, 0u);
   if (list_.most_points > 0) {
-    count_groups(false);
-    dispatch(*count_program_, view_projection, 1, 0.0f, glm::vec2(0.0f), false);
+    count_groups(Points::frame);
+    dispatch(*count_program_, view_projection, 1, 0.0f, glm::vec2(0.0f), Points::frame);
   }
   std::vector<std::uint32_t> bottom_up(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));
   glGetNamedBufferSubData(winners_.name(), 0, static_cast<GLsizeiptr>(bottom_up.size() * sizeof(std::uint32_t)), bottom_up.data());
