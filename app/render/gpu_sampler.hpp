@@ -52,16 +52,15 @@ class GpuSampler {
   int band_count() const { return bands_used_; }
   // The number of the casters' band in this frame; none without caster views.
   std::optional<int> casters_band() const { return casters_band_; }
-  // The number of the band of the plants hidden in the frame, after the casters'; none without.
-  std::optional<int> hidden_band() const { return hidden_band_; }
   // Adds the plants of a band (numbered from 0, nearest first); hidden ones are left out where
   // `occluders` is given (built over the first view's image).
   void add_band(int band, const DepthPyramid* occluders);
   // The casters' band, then the plants within a few tens of metres that the frame's bands left out
-  // as hidden (their shadows may fall on what the frame shows), each counted for a shadow map of `texels` texels
-  // through `map_view` (its first view's world → clip matrix): only plants whose boxes cover a
-  // receiver in `receivers` (a mask over that view's image, DepthPyramid::build_receivers), none
-  // with more points than k per texel it covers there. Their points are for the maps alone.
+  // as hidden (their shadows may fall on what the frame shows), each counted for a shadow map of
+  // `texels` texels through `map_view` (its first view's world → clip matrix): only plants whose
+  // boxes cover a receiver farther from the light in `receivers` (a mask over that view's image,
+  // DepthPyramid::build_receivers), none with more points than k per texel it covers there. Their
+  // points are for the maps alone.
   void add_casters(const glm::mat4& map_view, float texels, const DepthPyramid& receivers);
   // One band holding every plant, without occlusion.
   void sample(const pointgen::SamplerView& view);
