@@ -126,6 +126,7 @@ void PointSplat::count_groups(Points points) const {
 
 void PointSplat::dispatch(const gl::Program& program, const glm::mat4& view_projection, int splat_size,
                           float depth_bias, glm::vec2 paraboloid, Points points) const {
+  count_groups(points);
   bind_for(program);
   gl::set_uniform(program, "band_only", points == Points::last_band ? 1 : 0);
   gl::set_uniform(program, "map_points", points == Points::all ? 1 : 0);
@@ -156,14 +157,12 @@ void PointSplat::begin() {
 
 void PointSplat::add(const glm::mat4& view_projection, int splat_size, float depth_bias, bool band_only) {
   if (list_.most_points == 0) return;
-  const Points points = band_only ? Points::last_band : Points::frame;
-  count_groups(points);
-  dispatch(keeping_depth_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f), points);
+  dispatch(keeping_depth_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f),
+           band_only ? Points::last_band : Points::frame);
 }
 
 void PointSplat::resolve(const glm::mat4& view_projection, int splat_size, float depth_bias) {
   if (list_.most_points == 0) return;
-  count_groups(Points::frame);
   dispatch(resolve_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f), Points::frame);
 }
 
@@ -177,7 +176,6 @@ void PointSplat::splat_onto(GLuint depth_texture, int layer, const glm::mat4& vi
   glBindBuffer(GL_PIXEL_PACK_BUFFER, depths_.name());
   glGetTextureSubImage(depth_texture, 0, 0, 0, layer, size_.x, size_.y, 1, GL_DEPTH_COMPONENT, GL_FLOAT, bytes, nullptr);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-  count_groups(Points::all);
   dispatch(depth_program_, view_projection, splat_size, depth_bias, paraboloid, Points::all);
   glMemoryBarrier(GL_PIXEL_BUFFER_BARRIER_BIT);
   glBindBuffer(GL_PIXEL_UNPACK_BUFFER, depths_.name());
@@ -195,7 +193,6 @@ Image<std::uint32_t> PointSplat::count_points_on(const Image<float>& surface_dep
   glNamedBufferSubData(depths_.name(), 0, static_cast<GLsizeiptr>(rows_up.samples.size() * sizeof(float)), rows_up.samples.data());
   clear(winners_, 0u);
   if (list_.most_points > 0) {
-    count_groups(Points::frame);
     dispatch(*count_program_, view_projection, 1, 0.0f, glm::vec2(0.0f), Points::frame);
   }
   std::vector<std::uint32_t> bottom_up(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));

@@ -61,11 +61,12 @@ class PointSplat {
   PointDrawList list_;  // the one drawn: uploaded_ or another's
   gl::Buffer draws_, instances_, block_draws_, totals_, depths_, winners_, projected_, dispatch_;
   std::size_t draws_capacity_ = 0, instances_capacity_ = 0, block_draws_capacity_ = 0, projected_capacity_ = 0;
-  // The passes' work groups for the list's points, written on the GPU (shaders/point_dispatch.comp).
   // Which of the list's points a pass takes: the frame's, those of the band last added, or every
   // one, the shadow maps' alone too.
   enum class Points { frame, last_band, all };
+  // The pass's work groups for those points, written on the GPU (shaders/point_dispatch.comp).
   void count_groups(Points points) const;
+  // Runs one pass of `program` over them.
   void dispatch(const gl::Program& program, const glm::mat4& view_projection, int splat_size, float depth_bias,
                 glm::vec2 paraboloid, Points points) const;
 

@@ -374,7 +374,8 @@ void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<sha
     frame_pass_.add_chosen_surfaces(gpu_scene_, *gpu_sampler_, static_cast<int>(b), camera);
     frame_points_.add(view_projection_, settings_.splat_size, 0.0f, true);
   }
-  // Casters out of view: for the shadow map alone; their points fall outside the frame.
+  // Casters out of view and near plants the frame hides: for the shadow map alone (the frame's
+  // splat passes stop before their points).
   if (!casters.empty()) {
     const glm::mat4 map_view = culling_frusta(setup_.views.front()).front();
     occluders_->build_if(gpu_sampler_->band_drawn(), bands.size() - 1, frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());

@@ -143,8 +143,9 @@ class Renderer {
   // matrix; earlier: the cascades' before it).
   GpuScene::PlantDraws cascade_casters(int layer, const glm::mat4& map_view, const std::vector<glm::mat4>& earlier);
   // The frame's plants chosen on the GPU band by band, nearest first: each band's polygons and
-  // points drawn into the frame before the next band is culled against them; then the plants in
-  // the casters' body (planes, normals out) that the frame does not show, for the shadow map.
+  // points drawn into the frame before the next band is culled against them; then, for the shadow
+  // map alone, the plants in the casters' body (planes, normals out) out of view and the near
+  // plants the frame hides.
   void sample_on_gpu(const shadow::Camera& camera, const std::vector<shadow::Plane>& casters);
   // The frame's surfaces: polygons, and with points their nearest depths (the splat's pass 1).
   void draw_surfaces(const shadow::Camera& camera, const std::vector<shadow::Plane>& casters);
