@@ -29,6 +29,7 @@ void main() {
     frame_points = 0u;
     all_points = 0u;
     polygon_count = 0u;
+    part_plants_used = 0u;
   }
   uint carried = list_start;
   uint cells = group_count * band_count;

@@ -10,6 +10,7 @@ struct SampledMesh {
   vec4 half_size_area;   // its bounds' half sizes; w: its surface area, square metres
   vec4 moments[3];       // columns of the mean n nᵀ of its samples' normals (zero: facing every way)
   uvec4 sizes;           // triangles, samples, its list's first sample among all meshes', 0
+  uvec4 polygon_parts;   // its first polygon part among all meshes', their number (none: drawn whole), 0, 0
 };
 layout(std430, binding = 2) readonly buffer Instances { Instance instances[]; };
 layout(std430, binding = 10) readonly buffer PlantMeshes { uvec2 plant_meshes[]; };  // mesh, rounding's float bits
@@ -32,6 +33,7 @@ layout(std430, binding = 15) buffer Totals {
   uint frame_points;
   uint all_points;
   uint polygon_count;
+  uint part_plants_used;  // of the frame's lists of polygon plants by part (part_lists.comp)
 };
 // The plants in view, band after band, each band's in plant order; per band its first place in
 // that list and its plants.

@@ -30,17 +30,6 @@ uniform float points_per_triangle;
 // The band around break-even (pointgen/sampling/view_sampler.cpp).
 const float band_low = 0.8, band_high = 1.25;
 
-// Whether the plant's bounds box is off screen or behind what nearer bands drew over all of its
-// screen rectangle. Not where the box reaches behind the eye.
-bool hidden(mat4 model, SampledMesh mesh) {
-  vec3 lo, hi;
-  if (!box_rect(view_projection, model, mesh, lo, hi)) return false;
-  if (off_image(lo, hi)) return true;
-  ivec2 first, last;
-  texels_of(lo, hi, first, last);
-  return lo.z * 0.5 + 0.5 > farthest_over(first, last);
-}
-
 float facing(SampledMesh mesh, vec3 v) {
   mat3 moments = mat3(mesh.moments[0].xyz, mesh.moments[1].xyz, mesh.moments[2].xyz);
   if (!(moments[0][0] + moments[1][1] + moments[2][2] > 0.0)) return 0.5;
@@ -51,7 +40,10 @@ float facing(SampledMesh mesh, vec3 v) {
 uvec3 count_plant(uint i) {
   mat4 model = instances[i].model;
   SampledMesh mesh = meshes[plant_meshes[i].x];
-  if (occlusion && hidden(model, mesh)) return uvec3(0u, 0u, hidden_in_frame);
+  // Off screen or behind what nearer bands drew over all of its bounds box's rectangle.
+  if (occlusion && box_hidden(view_projection, model, mesh.center_radius.xyz, mesh.half_size_area.xyz, true)) {
+    return uvec3(0u, 0u, hidden_in_frame);
+  }
   if (receivers_only && shadows_nothing(map_view_projection, model, mesh)) return uvec3(0u);
   vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
   float scale = pow(abs(determinant(mat3(model))), 1.0 / 3.0);

@@ -201,12 +201,14 @@ TEST_F(GpuSampling, ACascadeDrawsThePlantsWhoseShadowsFallInIt) {
         "objects": [{"type": "plane", "center": [0, 0, -100], "size": [300, 300]},
                     {"type": "plant", "species": "beech", "positions": [[0, 0, -12]]}]})");
   };
+  // The uniform map draws the plane and the whole beech (the frame draws the parts it shows).
+  const std::size_t beech = render(ShadowMethod::uniform, "[0.2, -1, 0.1]").stats.shadow_triangles - 2;
+  ASSERT_GT(beech, 1000u) << "the beech is drawn as polygons";
   const Shadowed high = render(ShadowMethod::cascades, "[0.2, -1, 0.1]");
-  ASSERT_GT(high.stats.triangles, 1000u) << "the beech is drawn as polygons";
   EXPECT_GT(high.shadowed, 200u);
-  EXPECT_EQ(high.stats.shadow_triangles, 4 * 2 + (high.stats.triangles - 2)) << "the plane in each cascade, the beech in the first alone";
+  EXPECT_EQ(high.stats.shadow_triangles, 4 * 2 + beech) << "the plane in each cascade, the beech in the first alone";
   const Shadowed low = render(ShadowMethod::cascades, "[0.7, -0.3, -0.65]"), uniform = render(ShadowMethod::uniform, "[0.7, -0.3, -0.65]");
-  EXPECT_GT(low.stats.shadow_triangles, 4 * 2 + (low.stats.triangles - 2)) << "the beech in more cascades than the first";
+  EXPECT_GT(low.stats.shadow_triangles, 4 * 2 + beech) << "the beech in more cascades than the first";
   EXPECT_GT(uniform.shadowed, 1000u);
   EXPECT_NEAR(static_cast<double>(low.shadowed), static_cast<double>(uniform.shadowed), 0.15 * static_cast<double>(uniform.shadowed));
 }
@@ -276,6 +278,40 @@ TEST_F(GpuSampling, APlantSeenThroughAOnePixelSlitIsLeftOutButNotThroughAWiderOn
   EXPECT_EQ(narrow.points, 0u);
   EXPECT_EQ(narrow.triangles, 36u) << "the three boxes alone";
   EXPECT_GT(wide.points + wide.triangles, 36u);
+}
+
+// A near plant drawn as polygons draws the parts of it that nearer surfaces leave to be seen: a
+// beech that a wall hides but for its right edge draws fewer triangles than without the wall, and
+// each pixel shows the nearer of the wall and the beech drawn alone.
+TEST_F(GpuSampling, APlantMostlyBehindAWallDrawsOnlyThePartsItShows) {
+  settings.method = ShadowMethod::none;
+  settings.gpu_sampler = true;
+  const auto render = [&](const std::string& objects) {
+    const Scene s = load_scene({"half.json", R"({"camera": {"position": [0, 3, 0], "target": [0, 6, -40], "fov_y_deg": 50,
+        "near": 0.5, "far": 400}, "lights": [{"type": "directional", "direction": [0.4, -0.8, -0.3]}], "objects": [)" + objects + "]}",
+                                [](const std::string&) { return std::nullopt; }});
+    Renderer renderer(s, settings);
+    renderer.render(s.camera, s.lights[0]);
+    return std::make_pair(renderer.frame().read_depth(), renderer.stats());
+  };
+  const std::string wall = R"({"type": "box", "min": [-100, -50, -21], "max": [2, 60, -20]})";
+  const std::string beech = R"({"type": "plant", "species": "beech", "positions": [[0, 0, -40]]})";
+  const auto [alone, alone_stats] = render(beech);
+  const auto [wall_depth, wall_stats] = render(wall);
+  const auto [both, both_stats] = render(wall + ", " + beech);
+  ASSERT_EQ(alone_stats.points, 0u) << "the beech should be near enough to be drawn as polygons";
+  const std::size_t whole = alone_stats.triangles, shown = both_stats.triangles - wall_stats.triangles;
+  EXPECT_GT(shown, 0u);
+  EXPECT_LT(shown, whole * 3 / 4) << "the parts behind the wall should be left out: " << shown << " of " << whole;
+  std::size_t beech_pixels = 0, wrong = 0;
+  for (std::size_t i = 0; i < both.samples.size(); ++i) {
+    const float a = alone.samples[i], w = wall_depth.samples[i];
+    const float expected = a < 0.0f ? w : w < 0.0f ? a : std::min(a, w);
+    beech_pixels += a >= 0.0f && (w < 0.0f || a < w);
+    wrong += std::abs(both.samples[i] - expected) > 1e-3f * std::max(expected, 1.0f);
+  }
+  ASSERT_GT(beech_pixels, 1000u) << "the beech should show beside the wall";
+  EXPECT_EQ(wrong, 0u);
 }
 
 // The shadow map draws the camera's plants and the casters out of view whose shadows reach what

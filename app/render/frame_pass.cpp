@@ -97,7 +97,7 @@ void FramePass::draw_surfaces(const GpuScene& scene, const shadow::Camera& camer
 
 void FramePass::add_chosen_surfaces(const GpuScene& scene, const GpuSampler& sampler, int band, const shadow::Camera& camera) const {
   start_surfaces(plant_surface_program_, camera);
-  scene.draw_chosen(sampler.polygon_draws(band, band + 1));
+  scene.draw_chosen(sampler.frame_polygon_draws(band));
 }
 
 void FramePass::start_surfaces(const gl::Program& program, const shadow::Camera& camera) const {

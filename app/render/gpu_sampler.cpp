@@ -21,9 +21,15 @@ struct GpuMesh {
   glm::vec4 half_size_area;
   glm::vec4 moments[3];
   glm::uvec4 sizes;
+  glm::uvec4 polygon_parts;
+};
+struct GpuPolygonPart {
+  glm::vec4 center;
+  glm::vec4 half_size;
+  glm::uvec4 indices;
 };
 struct GpuTotals {
-  GLuint total_points, draw_count, band_first_point, frame_points, all_points, polygon_count;
+  GLuint total_points, draw_count, band_first_point, frame_points, all_points, polygon_count, part_plants_used;
 };
 constexpr std::size_t command_uints = GpuScene::command_bytes / sizeof(GLuint);
 
@@ -31,11 +37,18 @@ constexpr GLuint draws_binding = 1, instances_binding = 2, block_draws_binding =
                  meshes_binding = 11, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
                  polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19, band_list_binding = 20,
                  band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24,
-                 band_drawn_binding = 28, layer_counts_binding = 31, layer_plants_binding = 32, layer_commands_binding = 33,
+                 polygon_parts_binding = 25, part_masks_binding = 26, part_plants_binding = 27, band_drawn_binding = 28,
+                 part_commands_binding = 29, layer_counts_binding = 31, layer_plants_binding = 32, layer_commands_binding = 33,
                  layer_dispatch_binding = 34;
 constexpr std::size_t plants_per_group = 1024, threads_per_group = 256;  // shaders/sample_count.comp
 constexpr std::size_t points_per_block = 16;                              // shaders/point_common.glsl
 constexpr std::size_t max_planes = 96;                                    // planes[96]
+// A table's draws of a band's polygon plants in the frame: one per polygon part, one of the plants
+// drawn whole (shaders/part_lists.comp).
+constexpr std::size_t part_lanes = 65;
+// Room in the frame's lists of polygon plants by part: a plant takes a place per part it draws
+// (at most 64), and a frame's polygon plants are the few near ones not hidden.
+constexpr std::size_t most_part_plants = std::size_t{1} << 22;
 
 // Bands: the first ends this far from the eye (metres), each next one this many times as far.
 // Finer bands hide more of what lies behind a near one, at a pyramid and a few passes each.
@@ -90,6 +103,8 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
       groups_program_(gl::build_program({"sample_groups.comp"})),
       draws_program_(gl::build_program({"sample_draws.comp"})),
       commands_program_(gl::build_program({"sample_commands.comp"})),
+      part_masks_program_(gl::build_program({"part_masks.comp"})),
+      part_lists_program_(gl::build_program({"part_lists.comp"})),
       layer_start_program_(gl::build_program({"layer_casters.comp"}, "#define START\n")),
       layer_plants_program_(gl::build_program({"layer_casters.comp"})),
       layer_place_program_(gl::build_program({"layer_casters.comp"}, "#define PLACE\n")) {
@@ -116,12 +131,17 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
     most_points += table.size() * mesh.samples;
   }
   std::vector<GpuMesh> gpu_meshes;
+  std::vector<GpuPolygonPart> polygon_parts;
   for (std::size_t m = 0; m < meshes.size(); ++m) {
     const pointgen::SampledMesh& mesh = meshes[m];
     gpu_meshes.push_back({glm::vec4(mesh.center, mesh.radius), glm::vec4(mesh.half_size, mesh.area),
                           {glm::vec4(mesh.normal_moments[0], 0.0f), glm::vec4(mesh.normal_moments[1], 0.0f),
                            glm::vec4(mesh.normal_moments[2], 0.0f)},
-                          glm::uvec4(mesh.triangles, mesh.samples, samples.first_sample(m), 0u)});
+                          glm::uvec4(mesh.triangles, mesh.samples, samples.first_sample(m), 0u),
+                          glm::uvec4(polygon_parts.size(), mesh.polygon_parts.size(), 0u, 0u)});
+    for (const pointgen::PolygonPart& part : mesh.polygon_parts) {
+      polygon_parts.push_back({glm::vec4(part.center, 0.0f), glm::vec4(part.half_size, 0.0f), glm::uvec4(part.first_index, part.index_count, 0u, 0u)});
+    }
   }
   plant_count_ = instances.size();
   group_count_ = (plant_count_ + plants_per_group - 1) / plants_per_group;
@@ -135,6 +155,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   gl::store(instances_, instances, GL_DYNAMIC_STORAGE_BIT);  // moving plants are posed each frame
   gl::store(plant_meshes_, plant_meshes);
   gl::store(meshes_, gpu_meshes);
+  gl::store(polygon_parts_, polygon_parts);
   gl::store(tables_, table_ranges);
   storage<glm::uvec4>(counts_, plant_count_);
   storage<glm::uvec4>(offsets_, plant_count_);
@@ -144,6 +165,10 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   gl::store(totals_, std::vector<GpuTotals>(1, GpuTotals{}));  // stays so in a scene without plants
   storage<GLuint>(polygon_instances_, plant_count_);
   storage<GLuint>(commands_, command_uints * max_bands * std::max<std::size_t>(triangles_of_command_.size(), 1));
+  storage<glm::uvec2>(part_masks_, plant_count_);
+  part_plant_capacity_ = std::min(most_part_plants, 64 * plant_count_);
+  storage<GLuint>(part_plants_, part_plant_capacity_);
+  storage<GLuint>(part_commands_, command_uints * part_lanes * max_bands * std::max<std::size_t>(triangles_of_command_.size(), 1));
   storage<GLuint>(band_keys_, plant_count_);
   storage<GLuint>(group_bands_, group_count_ * max_bands);
   storage<GLuint>(band_list_, 2 * plant_count_);  // the frame's bands, then the band of those hidden in it
@@ -184,6 +209,10 @@ void GpuSampler::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, group_bands_binding, group_bands_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_dispatch_binding, band_dispatch_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_drawn_binding, band_drawn_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, polygon_parts_binding, polygon_parts_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, part_masks_binding, part_masks_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, part_plants_binding, part_plants_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, part_commands_binding, part_commands_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_counts_binding, layer_counts_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_plants_binding, layer_plants_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_commands_binding, layer_commands_.name());
@@ -214,6 +243,8 @@ void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm:
   glProgramUniform4fv(keys, glGetUniformLocation(keys, "planes"), static_cast<GLsizei>(planes.size()), &planes.front().x);
   glProgramUniform1fv(keys, glGetUniformLocation(keys, "band_ends"), static_cast<GLsizei>(band_ends.size()), band_ends.data());
   gl::set_uniform(count_program_, "view_projection", view.views.front());
+  gl::set_uniform(part_masks_program_, "view_projection", view.views.front());
+  gl::set_uniform(part_masks_program_, "pixels", glm::vec2(view.pixels));
   gl::set_uniform(count_program_, "eye", view.eye);
   gl::set_uniform(count_program_, "forward", view.forward);
   gl::set_uniform(count_program_, "edge_cos", view.edge_cos);
@@ -293,7 +324,7 @@ void GpuSampler::add_band(int band, const DepthPyramid* occluders) {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   gl::set_uniform(groups_program_, "point_capacity", static_cast<unsigned>(point_capacity_));
-  gl::set_uniform(groups_program_, "in_frame", !casters_band_ || band < *casters_band_ ? 1 : 0);
+  gl::set_uniform(groups_program_, "in_frame", in_frame(band) ? 1 : 0);
   glUseProgram(groups_program_.name());
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -308,7 +339,32 @@ void GpuSampler::add_band(int band, const DepthPyramid* occluders) {
   glDispatchCompute(groups_for(triangles_of_command_.size(), 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT |
                   GL_BUFFER_UPDATE_BARRIER_BIT);
+  if (in_frame(band)) choose_parts(band, occluders);
 }
+
+// The frame's draws of the band's polygon plants by parts (shaders/part_masks.comp, part_lists.comp).
+void GpuSampler::choose_parts(int band, const DepthPyramid* occluders) {
+  const auto number = static_cast<unsigned>(band + 1);
+  gl::set_uniform(part_masks_program_, "band_number", number);
+  gl::set_uniform(part_masks_program_, "occlusion", occluders ? 1 : 0);
+  if (occluders) occluders->bind_for(part_masks_program_);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, band_dispatch_.name());
+  glUseProgram(part_masks_program_.name());
+  glDispatchComputeIndirect(static_cast<GLintptr>((2 * band + 1) * sizeof(glm::uvec4)));  // the draws pass's groups
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+  const std::size_t tables = triangles_of_command_.size();
+  gl::set_uniform(part_lists_program_, "band_number", number);
+  gl::set_uniform(part_lists_program_, "table_count", static_cast<unsigned>(tables));
+  gl::set_uniform(part_lists_program_, "part_plant_capacity", static_cast<unsigned>(part_plant_capacity_));
+  gl::set_uniform(part_lists_program_, "first_command", static_cast<unsigned>(static_cast<std::size_t>(band) * tables * part_lanes));
+  glUseProgram(part_lists_program_.name());
+  glDispatchCompute(static_cast<GLuint>(part_lanes), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+}
+
+bool GpuSampler::in_frame(int band) const { return !casters_band_ || band < *casters_band_; }
 
 void GpuSampler::sample(const pointgen::SamplerView& view) {
   begin(view, {glm::vec2(0.0f, INFINITY)});
@@ -319,6 +375,12 @@ GpuScene::PlantDraws GpuSampler::polygon_draws(int first, int end) const {
   const std::size_t tables = triangles_of_command_.size();
   return {instances_.name(), polygon_instances_.name(), commands_.name(), static_cast<std::size_t>(first) * tables,
           static_cast<std::size_t>(std::max(end - first, 0)) * tables};
+}
+
+GpuScene::PlantDraws GpuSampler::frame_polygon_draws(int band) const {
+  const std::size_t commands = triangles_of_command_.size() * part_lanes;
+  return {instances_.name(), part_plants_.name(), part_commands_.name(), static_cast<std::size_t>(band) * commands,
+          in_frame(band) ? commands : 0};
 }
 
 GpuScene::PlantDraws GpuSampler::select_casters(int layer, const glm::mat4& map_view, const DepthPyramid& receivers) {
@@ -389,8 +451,13 @@ GpuSampler::Totals GpuSampler::read_totals() const {
   for (std::size_t c = 0; c < commands.size() / command_uints; ++c) {
     const std::size_t triangles = commands[c * command_uints + 1] * triangles_of_command_[c % tables];
     out.triangles += triangles;
-    if (!casters_band_ || c / tables < static_cast<std::size_t>(*casters_band_)) out.frame_triangles += triangles;
   }
+  const std::size_t frame_bands = static_cast<std::size_t>(casters_band_.value_or(bands_used_));
+  std::vector<GLuint> part_commands(command_uints * part_lanes * tables * frame_bands);
+  if (!part_commands.empty()) {
+    glGetNamedBufferSubData(part_commands_.name(), 0, static_cast<GLsizeiptr>(part_commands.size() * sizeof(GLuint)), part_commands.data());
+  }
+  for (std::size_t c = 0; c < part_commands.size(); c += command_uints) out.frame_triangles += part_commands[c] / 3 * part_commands[c + 1];
   std::vector<GLuint> layers(command_uints * tables * static_cast<std::size_t>(layers_selected_));
   if (!layers.empty()) glGetNamedBufferSubData(layer_commands_.name(), 0, static_cast<GLsizeiptr>(layers.size() * sizeof(GLuint)), layers.data());
   out.layer_triangles.assign(static_cast<std::size_t>(layers_selected_), 0);

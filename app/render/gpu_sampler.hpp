@@ -70,6 +70,10 @@ class GpuSampler {
   // The plants chosen as polygons in bands `first` to `end` - 1, one command per table of point
   // meshes and band.
   GpuScene::PlantDraws polygon_draws(int first, int end) const;
+  // Those of a band the frame shows as the frame draws them: a large one's parts that nearer bands
+  // leave to be seen, the others whole (per table, a command per polygon part and one for those
+  // drawn whole). Nothing for the shadow maps' own bands.
+  GpuScene::PlantDraws frame_polygon_draws(int band) const;
   // Those of every band this frame (the casters' too) that shadow what shadow view `layer` (below
   // max_layers) serves: whose bounds box through `map_view` (its world → clip matrix) covers a
   // receiver in `receivers` (a mask over its image, DepthPyramid::build_receivers). Valid until
@@ -106,9 +110,12 @@ class GpuSampler {
  private:
   void bind() const;
   void sort(const gl::Program& keys, int band_count, int first_band);
+  bool in_frame(int band) const;  // a band the frame shows: not the casters' nor the hidden plants'
+  void choose_parts(int band, const DepthPyramid* occluders);
   std::size_t plant_count_ = 0;
   std::size_t group_count_ = 0;
   std::size_t point_capacity_ = 0;  // points the draw list has room for
+  std::size_t part_plant_capacity_ = 0;  // places in the frame's lists of polygon plants by part
   int bands_used_ = 0;
   int layers_selected_ = 0;  // select_casters' this frame: layers 0 to this - 1
   std::optional<int> casters_band_, hidden_band_;
@@ -120,6 +127,9 @@ class GpuSampler {
   gl::Buffer band_keys_, group_bands_, band_list_, band_ranges_, band_dispatch_, band_drawn_;
   gl::Program keys_program_, hidden_keys_program_, bin_count_program_, bands_program_, place_program_;
   gl::Program count_program_, groups_program_, draws_program_, commands_program_;
+  // The frame's polygon plants by part (choose_parts).
+  gl::Buffer polygon_parts_, part_masks_, part_plants_, part_commands_;
+  gl::Program part_masks_program_, part_lists_program_;
   // select_casters' (shaders/layer_casters.comp).
   gl::Buffer layer_counts_, layer_plants_, layer_commands_, layer_dispatch_;
   gl::Program layer_start_program_, layer_plants_program_, layer_place_program_;

@@ -1,0 +1,89 @@
+#version 450 core
+// The GPU sampler's pass after part_masks.comp, a work group per lane: lane p < 64 lists the band's
+// polygon plants that draw part p alone of their parts, the last lane those drawn whole, each list
+// in plant order; then the lane's draw per table of plants (a DrawElementsIndirectCommand whose
+// base instance is the list's first place). A lane's threads take a run of the band's polygon
+// plants each, so the lists need no sort; a list's place in the buffer is taken by an atomic add,
+// which moves no plant's turn in the frame's draws.
+#include "sample_common.glsl"
+#include "polygon_parts.glsl"
+layout(local_size_x = 256) in;
+
+layout(std430, binding = 16) readonly buffer PolygonInstances { uint polygon_instances[]; };
+layout(std430, binding = 18) readonly buffer Tables { uvec4 tables[]; };
+layout(std430, binding = 26) readonly buffer PartMasks { uvec2 part_masks[]; };
+layout(std430, binding = 27) coherent buffer PartPlants { uint part_plants[]; };
+layout(std430, binding = 29) writeonly buffer PartCommands { uint part_commands[]; };
+uniform uint table_count;
+uniform uint part_plant_capacity;  // the list's room: plants past it are not drawn
+uniform uint first_command;        // this band's first command
+
+const uint lanes = 65u, whole_lane = 64u;
+
+bool in_lane(uvec2 mask, uint lane) {
+  if (lane == whole_lane) return mask == drawn_whole;
+  return mask != drawn_whole && ((mask[lane / 32u] >> (lane % 32u)) & 1u) != 0u;
+}
+
+// The band's polygon plants: their first place in the lists of polygon plants, and the end.
+uvec2 band_polygons() {
+  uvec2 band = this_band();
+  return uvec2(band.y > 0u ? offsets[0].z + group_sums[0].z : polygon_count, polygon_count);
+}
+
+// The first place in list[first, end) whose plant is `plant` or after it (lists hold plants in order).
+uint place_of(uint first, uint end, uint plant) {
+  while (first < end) {
+    uint mid = (first + end) / 2u;
+    if (part_plants[mid] < plant) first = mid + 1u; else end = mid;
+  }
+  return first;
+}
+
+shared uint sums[256];
+shared uint list_first;
+
+void main() {
+  uint lane = gl_WorkGroupID.x, t = gl_LocalInvocationID.x;
+  uvec2 polygons = band_polygons();
+  uint run = (polygons.y - polygons.x + 255u) / 256u;
+  uint first = min(polygons.x + t * run, polygons.y), end = min(first + run, polygons.y);
+  uint own = 0u;
+  for (uint s = first; s < end; ++s) own += in_lane(part_masks[s], lane) ? 1u : 0u;
+  sums[t] = own;
+  barrier();
+  for (uint step = 1u; step < 256u; step *= 2u) {
+    uint before = t >= step ? sums[t - step] : 0u;
+    barrier();
+    sums[t] += before;
+    barrier();
+  }
+  if (t == 255u) list_first = atomicAdd(part_plants_used, sums[255]);
+  barrier();
+  uint listed = min(sums[255], part_plant_capacity - min(list_first, part_plant_capacity));
+  uint at = list_first + sums[t] - own;
+  for (uint s = first; s < end; ++s) {
+    if (!in_lane(part_masks[s], lane)) continue;
+    if (at < list_first + listed) part_plants[at] = polygon_instances[s];
+    ++at;
+  }
+  memoryBarrierBuffer();
+  barrier();
+  for (uint table = t; table < table_count; table += 256u) {
+    uvec4 plants = tables[2u * table], mesh_draw = tables[2u * table + 1u];
+    uint from = place_of(list_first, list_first + listed, plants.x), to = place_of(list_first, list_first + listed, plants.y);
+    uint index_count = mesh_draw.x, first_index = mesh_draw.y;
+    if (lane != whole_lane) {
+      uvec4 parts = meshes[plant_meshes[plants.x].x].polygon_parts;
+      uvec4 part = lane < parts.y ? polygon_parts[parts.x + lane].indices : uvec4(0u);
+      first_index += part.x;
+      index_count = part.y;
+    }
+    uint c = 5u * (first_command + table * lanes + lane);
+    part_commands[c] = index_count;
+    part_commands[c + 1u] = index_count > 0u ? to - from : 0u;
+    part_commands[c + 2u] = first_index;
+    part_commands[c + 3u] = mesh_draw.z;
+    part_commands[c + 4u] = from;
+  }
+}
