@@ -1,53 +1,60 @@
 #version 450 core
 // The polygon plants of a frame (every band's, casters' included) that shadow what one shadow view
-// of several (a cascade) serves: those whose bounds box in its image covers a receiver of the
-// mask over it (DepthPyramid::build_receivers, the surfaces that look up this view), listed per
-// table with an indirect draw each, so that a cascade draws its own casters, not every cascade's. The order within a table follows the threads' atomics:
-// a depth-only map keeps the nearest depth whatever the order. Passes: START (one thread) clears
-// the tables' counts and sizes the per-plant passes from the frame's polygon plants; the per-plant
-// pass counts each table's (`writing` false), then, after PLACE (one thread: each table's first
-// place and its command), writes each plant's index in its table's run.
+// serves (a cascade, or a single map): those whose bounds box in its image covers a receiver of the
+// mask over it (DepthPyramid::build_receivers, the surfaces that look up this view), and of a plant
+// that covers more than pixels_to_split texels there, only the parts whose boxes do; listed per
+// table and lane (polygon_parts.glsl) with an indirect draw each. The order within a list follows
+// the threads' atomics: a depth-only map keeps the nearest depth whatever the order. Passes: START
+// (one thread) clears the lists' counts and sizes the per-plant passes from the frame's polygon
+// plants; the per-plant pass counts each list's plants (`writing` false), then, after PLACE (one
+// thread: each list's place and its command), writes each plant's index into the lists it is in.
 #include "sample_common.glsl"
 #include "depth_pyramid.glsl"
 #include "plant_boxes.glsl"
+#include "polygon_parts.glsl"
 
-// Per table of plants: (first plant, end, 0, 0), then (index count, first index, base vertex, 0).
-layout(std430, binding = 18) readonly buffer Tables { uvec4 tables[]; };
 layout(std430, binding = 16) readonly buffer PolygonInstances { uint polygon_instances[]; };
-// Per table two: its plants, then the next place in its run (a uint each, as atomics take them).
-layout(std430, binding = 31) buffer LayerCounts { uint layer_counts[]; };
+// The per-plant passes' work groups (a glDispatchComputeIndirect command), then per list (table by
+// lane) two: its plants, then, once placed, its end and its next place (a uint each, as atomics
+// take them).
+layout(std430, binding = 31) buffer LayerCounts {
+  uvec4 layer_dispatch;
+  uint layer_counts[];
+};
 layout(std430, binding = 32) writeonly buffer LayerPlants { uint layer_plants[]; };
 layout(std430, binding = 33) writeonly buffer LayerCommands { uint layer_commands[]; };
-layout(std430, binding = 34) writeonly buffer LayerDispatch { uvec4 layer_dispatch; };
 uniform uint table_count;
 
 #if defined(START)
 layout(local_size_x = 1) in;
 void main() {
-  for (uint t = 0u; t < 2u * table_count; ++t) layer_counts[t] = 0u;
+  for (uint c = 0u; c < 2u * table_count * lanes; ++c) layer_counts[c] = 0u;
   layer_dispatch = uvec4((polygon_count + 255u) / 256u, 1u, 1u, 0u);
 }
 #elif defined(PLACE)
 layout(local_size_x = 1) in;
-uniform uint first_command;  // the view's commands: one per table from here
+uniform uint first_command;  // the view's commands: `lanes` per table from here
+uniform uint capacity;       // the places in layer_plants: lists past them are cut short
 void main() {
   uint first = 0u;
-  for (uint t = 0u; t < table_count; ++t) {
-    uvec4 mesh = tables[2u * t + 1u];
-    uint plants = layer_counts[2u * t];
-    uint at = 5u * (first_command + t);
-    layer_commands[at] = mesh.x;
-    layer_commands[at + 1u] = plants;
-    layer_commands[at + 2u] = mesh.y;
-    layer_commands[at + 3u] = mesh.z;
+  for (uint list = 0u; list < table_count * lanes; ++list) {
+    uint plants = min(layer_counts[2u * list], capacity - min(first, capacity));
+    uvec2 indices = lane_indices(list / lanes, list % lanes);
+    uint at = 5u * (first_command + list);
+    layer_commands[at] = indices.x;
+    layer_commands[at + 1u] = indices.x > 0u ? plants : 0u;
+    layer_commands[at + 2u] = indices.y;
+    layer_commands[at + 3u] = tables[2u * (list / lanes) + 1u].z;
     layer_commands[at + 4u] = first;
-    layer_counts[2u * t + 1u] = first;
+    layer_counts[2u * list] = first + plants;
+    layer_counts[2u * list + 1u] = first;
     first += plants;
   }
 }
 #else
 layout(local_size_x = 256) in;
 uniform mat4 map_view_projection;
+uniform vec2 pixels;  // the view's image
 uniform bool writing;
 
 // The table holding a plant (the tables hold plants in order).
@@ -60,16 +67,43 @@ uint table_of(uint plant) {
   return lo;
 }
 
+// The plant's parts that shadow a receiver, a bit each, or drawn_whole.
+uvec2 parts_casting(mat4 model, SampledMesh mesh) {
+  vec3 lo, hi;
+  if (mesh.polygon_parts.y == 0u || !box_rect(map_view_projection, model, mesh, lo, hi)) return drawn_whole;
+  if (!(pixels_in(lo, hi, pixels) > pixels_to_split)) return drawn_whole;
+  uvec2 casting = uvec2(0u);
+  for (uint p = 0u; p < mesh.polygon_parts.y; ++p) {
+    PolygonPart part = polygon_parts[mesh.polygon_parts.x + p];
+    if (!shadows_nothing(map_view_projection, model, part.center.xyz, part.half_size.xyz)) casting[p / 32u] |= 1u << (p % 32u);
+  }
+  return casting == every_part(mesh.polygon_parts.y) ? drawn_whole : casting;
+}
+
+void add_to(uint list, uint plant) {
+  if (!writing) {
+    atomicAdd(layer_counts[2u * list], 1u);
+    return;
+  }
+  uint at = atomicAdd(layer_counts[2u * list + 1u], 1u);
+  if (at < layer_counts[2u * list]) layer_plants[at] = plant;
+}
+
 void main() {
   uint slot = gl_GlobalInvocationID.x;
   if (slot >= polygon_count) return;
   uint plant = polygon_instances[slot];
-  if (shadows_nothing(map_view_projection, instances[plant].model, meshes[plant_meshes[plant].x])) return;
-  uint t = table_of(plant);
-  if (writing) {
-    layer_plants[atomicAdd(layer_counts[2u * t + 1u], 1u)] = plant;
-  } else {
-    atomicAdd(layer_counts[2u * t], 1u);
+  mat4 model = instances[plant].model;
+  SampledMesh mesh = meshes[plant_meshes[plant].x];
+  if (shadows_nothing(map_view_projection, model, mesh)) return;
+  uint first_list = table_of(plant) * lanes;
+  uvec2 casting = parts_casting(model, mesh);
+  if (casting == drawn_whole) {
+    add_to(first_list + whole_lane, plant);
+    return;
+  }
+  for (uint half_ = 0u; half_ < 2u; ++half_) {
+    for (uint bits = casting[half_]; bits != 0u; bits &= bits - 1u) add_to(first_list + 32u * half_ + uint(findLSB(bits)), plant);
   }
 }
 #endif

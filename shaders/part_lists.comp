@@ -10,20 +10,12 @@
 layout(local_size_x = 256) in;
 
 layout(std430, binding = 16) readonly buffer PolygonInstances { uint polygon_instances[]; };
-layout(std430, binding = 18) readonly buffer Tables { uvec4 tables[]; };
 layout(std430, binding = 26) readonly buffer PartMasks { uvec2 part_masks[]; };
 layout(std430, binding = 27) coherent buffer PartPlants { uint part_plants[]; };
 layout(std430, binding = 29) writeonly buffer PartCommands { uint part_commands[]; };
 uniform uint table_count;
 uniform uint part_plant_capacity;  // the list's room: plants past it are not drawn
 uniform uint first_command;        // this band's first command
-
-const uint lanes = 65u, whole_lane = 64u;
-
-bool in_lane(uvec2 mask, uint lane) {
-  if (lane == whole_lane) return mask == drawn_whole;
-  return mask != drawn_whole && ((mask[lane / 32u] >> (lane % 32u)) & 1u) != 0u;
-}
 
 // The band's polygon plants: their first place in the lists of polygon plants, and the end.
 uvec2 band_polygons() {
@@ -70,20 +62,14 @@ void main() {
   memoryBarrierBuffer();
   barrier();
   for (uint table = t; table < table_count; table += 256u) {
-    uvec4 plants = tables[2u * table], mesh_draw = tables[2u * table + 1u];
+    uvec4 plants = tables[2u * table];
     uint from = place_of(list_first, list_first + listed, plants.x), to = place_of(list_first, list_first + listed, plants.y);
-    uint index_count = mesh_draw.x, first_index = mesh_draw.y;
-    if (lane != whole_lane) {
-      uvec4 parts = meshes[plant_meshes[plants.x].x].polygon_parts;
-      uvec4 part = lane < parts.y ? polygon_parts[parts.x + lane].indices : uvec4(0u);
-      first_index += part.x;
-      index_count = part.y;
-    }
+    uvec2 indices = lane_indices(table, lane);
     uint c = 5u * (first_command + table * lanes + lane);
-    part_commands[c] = index_count;
-    part_commands[c + 1u] = index_count > 0u ? to - from : 0u;
-    part_commands[c + 2u] = first_index;
-    part_commands[c + 3u] = mesh_draw.z;
+    part_commands[c] = indices.x;
+    part_commands[c + 1u] = indices.x > 0u ? to - from : 0u;
+    part_commands[c + 2u] = indices.y;
+    part_commands[c + 3u] = tables[2u * table + 1u].z;
     part_commands[c + 4u] = from;
   }
 }

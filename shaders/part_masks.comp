@@ -24,8 +24,7 @@ uvec2 parts_drawn(uint i) {
   SampledMesh mesh = meshes[plant_meshes[i].x];
   vec3 lo, hi;
   if (mesh.polygon_parts.y == 0u || !box_rect(view_projection, model, mesh, lo, hi)) return drawn_whole;
-  vec2 extent = 0.5 * (hi.xy - lo.xy) * pixels;
-  if (!(extent.x * extent.y > pixels_to_split)) return drawn_whole;
+  if (!(pixels_in(lo, hi, pixels) > pixels_to_split)) return drawn_whole;
   uvec2 drawn = uvec2(0u);
   for (uint p = 0u; p < mesh.polygon_parts.y; ++p) {
     PolygonPart part = polygon_parts[mesh.polygon_parts.x + p];

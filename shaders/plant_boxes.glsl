@@ -44,14 +44,19 @@ bool box_hidden(mat4 m, mat4 model, vec3 center, vec3 half_size, bool occlusion)
   return lo.z * 0.5 + 0.5 > farthest_over(first, last);
 }
 
-// Whether a caster's box covers no receiver farther from the light than its nearest point, in the
-// mask the pyramid holds over the image of a shadow view (`map`: its world → clip matrix; the
-// receivers' farthest window depths, receiver_marks.comp); false where it reaches behind the light.
-bool shadows_nothing(mat4 map, mat4 model, SampledMesh mesh) {
+// Whether a caster's box (centre and half sizes in the frame `model` places) covers no receiver
+// farther from the light than its nearest point, in the mask the pyramid holds over the image of a
+// shadow view (`map`: its world → clip matrix; the receivers' farthest window depths,
+// receiver_marks.comp); false where it reaches behind the light.
+bool shadows_nothing(mat4 map, mat4 model, vec3 center, vec3 half_size) {
   vec3 lo, hi;
-  if (!box_rect(map, model, mesh, lo, hi)) return false;
+  if (!placed_box_rect(map, model, center, half_size, lo, hi)) return false;
   if (off_image(lo, hi)) return true;
   ivec2 first, last;
   texels_of(lo, hi, first, last);
   return farthest_over(first, last) <= max(lo.z * 0.5 + 0.5, 0.0);
+}
+
+bool shadows_nothing(mat4 map, mat4 model, SampledMesh mesh) {
+  return shadows_nothing(map, model, mesh.center_radius.xyz, mesh.half_size_area.xyz);
 }

@@ -379,6 +379,31 @@ TEST_F(GpuSampling, ACasterBeyondEveryReceiverFromTheLightIsLeftOut) {
   EXPECT_EQ(beyond.stats.shadow_triangles, bare.stats.shadow_triangles);
 }
 
+// The shadow map draws the parts of a large polygon plant that may shadow what the frame shows: a
+// beech half behind a wall, lit from behind the camera, casts the shadow of its hidden half onto
+// ground the wall hides, and the map leaves that half out; the frame's shadows are those of every
+// plant drawn whole.
+TEST_F(GpuSampling, TheMapLeavesOutThePartsOfAPlantThatShadowNothingTheFrameShows) {
+  const std::string scene = R"({"camera": {"position": [0, 6, 0], "target": [0, 0, -25], "fov_y_deg": 40, "near": 0.5, "far": 200},
+      "lights": [{"type": "directional", "direction": [0.3, -1, -0.7]}],
+      "objects": [{"type": "plane", "center": [0, 0, -20], "size": [200, 200]},
+                  {"type": "box", "min": [-30, 0, -10.5], "max": [2, 30, -10]},
+                  {"type": "plant", "species": "beech", "positions": [[0, 0, -25]]}]})";
+  settings.width = 320;
+  settings.height = 180;
+  settings.method = ShadowMethod::psm;
+  settings.points = settings.gpu_sampler = false;
+  const Shadowed whole = render_shadows(scene);
+  settings.points = settings.gpu_sampler = true;
+  const Shadowed parts = render_shadows(scene);
+  const std::size_t ground_and_wall = 2 + 12, beech = whole.stats.triangles - ground_and_wall;
+  ASSERT_GT(beech, 1000u) << "the beech is near enough to be drawn as polygons";
+  ASSERT_EQ(parts.stats.points, 0u);
+  EXPECT_LT(parts.stats.shadow_triangles - ground_and_wall, beech * 3 / 4) << "its hidden half should be left out of the map";
+  ASSERT_GT(whole.shadowed, 1000u) << "its shadow should lie on the ground beside the wall";
+  EXPECT_NEAR(static_cast<double>(parts.shadowed), static_cast<double>(whole.shadowed), 0.02 * static_cast<double>(whole.shadowed));
+}
+
 TEST_F(GpuSampling, AFrameWithoutPlantsDrawsNone) {
   const Scene bare = load_scene({"bare.json", R"({"camera": {"position": [0, 3, 8], "target": [0, 0, 0]},
       "lights": [{"type": "directional", "direction": [0.3, -1, 0.2]}],

@@ -38,8 +38,7 @@ constexpr GLuint draws_binding = 1, instances_binding = 2, block_draws_binding =
                  polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19, band_list_binding = 20,
                  band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24,
                  polygon_parts_binding = 25, part_masks_binding = 26, part_plants_binding = 27, band_drawn_binding = 28,
-                 part_commands_binding = 29, layer_counts_binding = 31, layer_plants_binding = 32, layer_commands_binding = 33,
-                 layer_dispatch_binding = 34;
+                 part_commands_binding = 29, layer_counts_binding = 31, layer_plants_binding = 32, layer_commands_binding = 33;
 constexpr std::size_t plants_per_group = 1024, threads_per_group = 256;  // shaders/sample_count.comp
 constexpr std::size_t points_per_block = 16;                              // shaders/point_common.glsl
 constexpr std::size_t max_planes = 96;                                    // planes[96]
@@ -175,10 +174,9 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<glm::uvec2>(band_ranges_, max_bands);
   storage<glm::uvec4>(band_dispatch_, 2 * max_bands);
   gl::store(band_drawn_, std::vector<GLuint>(max_bands, 1u));  // as if each drew: a pyramid built over them stays right
-  storage<GLuint>(layer_counts_, 2 * triangles_of_command_.size());
-  storage<GLuint>(layer_plants_, plant_count_);
-  storage<GLuint>(layer_commands_, command_uints * max_layers * std::max<std::size_t>(triangles_of_command_.size(), 1));
-  storage<glm::uvec4>(layer_dispatch_, 1);
+  storage<GLuint>(layer_counts_, 4 + 2 * part_lanes * triangles_of_command_.size());  // a dispatch, then the counts
+  storage<GLuint>(layer_plants_, part_plant_capacity_);
+  storage<GLuint>(layer_commands_, command_uints * part_lanes * max_layers * std::max<std::size_t>(triangles_of_command_.size(), 1));
 }
 
 void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed) {
@@ -216,7 +214,6 @@ void GpuSampler::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_counts_binding, layer_counts_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_plants_binding, layer_plants_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_commands_binding, layer_commands_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_dispatch_binding, layer_dispatch_.name());
 }
 
 void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands,
@@ -383,7 +380,7 @@ GpuScene::PlantDraws GpuSampler::frame_polygon_draws(int band) const {
           in_frame(band) ? commands : 0};
 }
 
-GpuScene::PlantDraws GpuSampler::select_casters(int layer, const glm::mat4& map_view, const DepthPyramid& receivers) {
+GpuScene::PlantDraws GpuSampler::select_casters(int layer, const glm::mat4& map_view, int map_size, const DepthPyramid& receivers) {
   if (layer < 0 || layer >= max_layers) throw RuntimeFailure("the GPU sampler selects casters for at most 8 shadow views");
   const std::size_t tables = triangles_of_command_.size();
   if (plant_count_ == 0 || tables == 0) return polygon_draws(0, 0);
@@ -393,7 +390,9 @@ GpuScene::PlantDraws GpuSampler::select_casters(int layer, const glm::mat4& map_
   for (const gl::Program* program : {&layer_start_program_, &layer_plants_program_, &layer_place_program_}) {
     gl::set_uniform(*program, "table_count", table_count);
   }
-  gl::set_uniform(layer_place_program_, "first_command", static_cast<unsigned>(static_cast<std::size_t>(layer) * tables));
+  gl::set_uniform(layer_place_program_, "first_command", static_cast<unsigned>(static_cast<std::size_t>(layer) * tables * part_lanes));
+  gl::set_uniform(layer_place_program_, "capacity", static_cast<unsigned>(part_plant_capacity_));
+  gl::set_uniform(layer_plants_program_, "pixels", glm::vec2(static_cast<float>(map_size)));
   const GLuint p = layer_plants_program_.name();
   gl::set_uniform(layer_plants_program_, "map_view_projection", map_view);
   receivers.bind_for(layer_plants_program_);
@@ -401,7 +400,7 @@ GpuScene::PlantDraws GpuSampler::select_casters(int layer, const glm::mat4& map_
   glUseProgram(layer_start_program_.name());
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, layer_dispatch_.name());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, layer_counts_.name());
   glUseProgram(p);
   gl::set_uniform(layer_plants_program_, "writing", 0);
   glDispatchComputeIndirect(0);
@@ -414,7 +413,8 @@ GpuScene::PlantDraws GpuSampler::select_casters(int layer, const glm::mat4& map_
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
-  return {instances_.name(), layer_plants_.name(), layer_commands_.name(), static_cast<std::size_t>(layer) * tables, tables};
+  return {instances_.name(), layer_plants_.name(), layer_commands_.name(), static_cast<std::size_t>(layer) * tables * part_lanes,
+          tables * part_lanes};
 }
 
 PointDrawList GpuSampler::draw_list() const {
@@ -441,28 +441,27 @@ std::vector<glm::uvec4> GpuSampler::read_draws() const {
   return draws;
 }
 
+// The triangles that `count` indirect draws from `first` in `commands` draw (read back).
+std::size_t GpuSampler::triangles_drawn(const gl::Buffer& commands, std::size_t first, std::size_t count) {
+  std::vector<GLuint> read(command_uints * count);
+  if (read.empty()) return 0;
+  glGetNamedBufferSubData(commands.name(), static_cast<GLintptr>(first * GpuScene::command_bytes),
+                          static_cast<GLsizeiptr>(read.size() * sizeof(GLuint)), read.data());
+  std::size_t triangles = 0;
+  for (std::size_t c = 0; c < read.size(); c += command_uints) triangles += static_cast<std::size_t>(read[c] / 3) * read[c + 1];
+  return triangles;
+}
+
 GpuSampler::Totals GpuSampler::read_totals() const {
   GpuTotals totals{};
   glGetNamedBufferSubData(totals_.name(), 0, sizeof totals, &totals);
   const std::size_t tables = triangles_of_command_.size();
-  std::vector<GLuint> commands(command_uints * tables * static_cast<std::size_t>(std::max(bands_used_, 1)));
-  glGetNamedBufferSubData(commands_.name(), 0, static_cast<GLsizeiptr>(commands.size() * sizeof(GLuint)), commands.data());
+  const auto frame_bands = static_cast<std::size_t>(casters_band_.value_or(bands_used_));
   Totals out{totals.total_points, totals.polygon_count, 0, totals.frame_points, 0, {}};
-  for (std::size_t c = 0; c < commands.size() / command_uints; ++c) {
-    const std::size_t triangles = commands[c * command_uints + 1] * triangles_of_command_[c % tables];
-    out.triangles += triangles;
-  }
-  const std::size_t frame_bands = static_cast<std::size_t>(casters_band_.value_or(bands_used_));
-  std::vector<GLuint> part_commands(command_uints * part_lanes * tables * frame_bands);
-  if (!part_commands.empty()) {
-    glGetNamedBufferSubData(part_commands_.name(), 0, static_cast<GLsizeiptr>(part_commands.size() * sizeof(GLuint)), part_commands.data());
-  }
-  for (std::size_t c = 0; c < part_commands.size(); c += command_uints) out.frame_triangles += part_commands[c] / 3 * part_commands[c + 1];
-  std::vector<GLuint> layers(command_uints * tables * static_cast<std::size_t>(layers_selected_));
-  if (!layers.empty()) glGetNamedBufferSubData(layer_commands_.name(), 0, static_cast<GLsizeiptr>(layers.size() * sizeof(GLuint)), layers.data());
-  out.layer_triangles.assign(static_cast<std::size_t>(layers_selected_), 0);
-  for (std::size_t c = 0; c < layers.size() / command_uints; ++c) {
-    out.layer_triangles[c / tables] += layers[c * command_uints + 1] * triangles_of_command_[c % tables];
+  out.triangles = triangles_drawn(commands_, 0, tables * static_cast<std::size_t>(bands_used_));
+  out.frame_triangles = triangles_drawn(part_commands_, 0, tables * part_lanes * frame_bands);
+  for (int layer = 0; layer < layers_selected_; ++layer) {
+    out.layer_triangles.push_back(triangles_drawn(layer_commands_, static_cast<std::size_t>(layer) * tables * part_lanes, tables * part_lanes));
   }
   return out;
 }

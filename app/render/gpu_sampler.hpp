@@ -76,9 +76,11 @@ class GpuSampler {
   GpuScene::PlantDraws frame_polygon_draws(int band) const;
   // Those of every band this frame (the casters' too) that shadow what shadow view `layer` (below
   // max_layers) serves: whose bounds box through `map_view` (its world → clip matrix) covers a
-  // receiver in `receivers` (a mask over its image, DepthPyramid::build_receivers). Valid until
-  // the next call; the list is made on the GPU.
-  GpuScene::PlantDraws select_casters(int layer, const glm::mat4& map_view, const DepthPyramid& receivers);
+  // receiver in `receivers` (a mask over its image, DepthPyramid::build_receivers), and of a plant
+  // covering more than 1,024 of the view's `map_size`² texels, the parts whose boxes do (per table,
+  // a command per polygon part and one for those drawn whole). Valid until the next call; the
+  // lists are made on the GPU.
+  GpuScene::PlantDraws select_casters(int layer, const glm::mat4& map_view, int map_size, const DepthPyramid& receivers);
   static constexpr int max_layers = 8;
 
   // A GL buffer of a uint per band, written by add_band: zero where the band drew nothing.
@@ -112,6 +114,7 @@ class GpuSampler {
   void sort(const gl::Program& keys, int band_count, int first_band);
   bool in_frame(int band) const;  // a band the frame shows: not the casters' nor the hidden plants'
   void choose_parts(int band, const DepthPyramid* occluders);
+  static std::size_t triangles_drawn(const gl::Buffer& commands, std::size_t first, std::size_t count);
   std::size_t plant_count_ = 0;
   std::size_t group_count_ = 0;
   std::size_t point_capacity_ = 0;  // points the draw list has room for
@@ -131,7 +134,7 @@ class GpuSampler {
   gl::Buffer polygon_parts_, part_masks_, part_plants_, part_commands_;
   gl::Program part_masks_program_, part_lists_program_;
   // select_casters' (shaders/layer_casters.comp).
-  gl::Buffer layer_counts_, layer_plants_, layer_commands_, layer_dispatch_;
+  gl::Buffer layer_counts_, layer_plants_, layer_commands_;
   gl::Program layer_start_program_, layer_plants_program_, layer_place_program_;
 };
 

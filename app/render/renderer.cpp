@@ -531,12 +531,15 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
   shadow_points_->use(gpu_sampler_->draw_list(), samples_);
   shadow_timer_.start();
   const GpuScene::PlantDraws every_band = gpu_sampler_->polygon_draws(0, gpu_sampler_->band_count());
+  // One projective map: the receiver mask over it was built for the casters' band.
+  const bool one_map = setup_.views.size() == 1 && !setup_.views.front().paraboloid && gpu_sampler_->casters_band();
   std::vector<glm::mat4> earlier;  // the cascades before this one
   for (std::size_t layer = 0; layer < setup_.views.size(); ++layer) {
     const shadow::ShadowView& v = setup_.views[layer];
     const GpuScene::PlantDraws plants = setup_.selection == shadow::ViewSelection::first_containing
                                             ? cascade_casters(static_cast<int>(layer), v.view_projection(), earlier)
-                                            : every_band;
+                                        : one_map ? gpu_sampler_->select_casters(0, v.view_projection(), settings_.shadow_size, *receivers_)
+                                                  : every_band;
     earlier.push_back(v.view_projection());
     shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer), &plants);
     shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
@@ -556,7 +559,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
 // others (on the ecosystem's default view each cascade otherwise drew every polygon plant).
 GpuScene::PlantDraws Renderer::cascade_casters(int layer, const glm::mat4& map_view, const std::vector<glm::mat4>& earlier) {
   receivers_->build_receivers(*occluders_, view_projection_, map_view, earlier, static_cast<float>(settings_.shadow_size));
-  return gpu_sampler_->select_casters(layer, map_view, *receivers_);
+  return gpu_sampler_->select_casters(layer, map_view, settings_.shadow_size, *receivers_);
 }
 
 // The GPU's figures of the last frame drawn, read back when asked: nothing in a frame waits for
