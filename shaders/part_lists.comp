@@ -1,10 +1,10 @@
 #version 450 core
-// The GPU sampler's pass after part_masks.comp, a work group per lane: lane p < 64 lists the band's
-// polygon plants that draw part p alone of their parts, the last lane those drawn whole, each list
-// in plant order; then the lane's draw per table of plants (a DrawElementsIndirectCommand whose
-// base instance is the list's first place). A lane's threads take a run of the band's polygon
-// plants each, so the lists need no sort; a list's place in the buffer is taken by an atomic add,
-// which moves no plant's turn in the frame's draws.
+// The GPU sampler's pass after part_masks.comp, for a band with polygon plants, a work group per
+// lane: lane p < 64 lists the band's polygon plants that draw part p alone of their parts, the
+// last lane those drawn whole, each list in plant order; then the lane's draw per table of plants
+// (a DrawElementsIndirectCommand whose base instance is the list's first place). A lane's threads
+// take a run of the band's polygon plants each, so the lists need no sort; a list's place in the
+// buffer is taken by an atomic add, which moves no plant's turn in the frame's draws.
 #include "sample_common.glsl"
 #include "polygon_parts.glsl"
 layout(local_size_x = 256) in;

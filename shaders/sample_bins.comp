@@ -1,8 +1,10 @@
 #version 450 core
 // The GPU sampler's first passes, once a frame: the plants in view sorted into distance bands,
-// each band's in plant order (a stable counting sort). With KEYS each plant culled against the
-// view's frusta and given its band by its distance from the eye; a plant in none of them but in the
-// body of the casters (what may shadow the view) goes to the last band, the casters'; with
+// each band's in plant order (a stable counting sort). With HISTOGRAM the plants in the view's
+// frusta counted by quarters of the ladder's bands (band_ends.comp cuts the dense ones there).
+// With KEYS each plant culled against the view's frusta and given its band by its distance from
+// the eye; a plant in none of them but in the body of the casters (what may shadow the view) goes
+// to the last band, the casters'; with
 // HIDDEN_KEYS, once the frame's bands are counted, the plants the nearest of them left out as
 // hidden go to a band of their own. Then each work group of plants counts (COUNT) or places its plants band by band,
 // one thread walking the group's plants in order. The keys pass also clears the plants' counts.
@@ -14,23 +16,29 @@ layout(std430, binding = 22) buffer BandKeys { uint band_keys[]; };  // per plan
 layout(std430, binding = 23) buffer GroupBands { uint group_bands[]; };
 uniform uint group_count;
 uniform uint band_count;
+// The frame's distance bands' far ends, metres (band_ends.comp), and the plants in view per
+// quarter of the ladder's bands.
+layout(std430, binding = 34) buffer BandEnds {
+  float band_ends[32];
+  uint quarter_counts[];
+};
 
 #ifdef HIDDEN_KEYS
 layout(local_size_x = 256) in;
-uniform uint hidden_bands;  // of the frame's bands, the first this many
+uniform float hidden_reach;  // metres: the bands that end within it
 // The plants in view that those bands left out as hidden (sample_count.comp), into one band.
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= plant_count) return;
-  band_keys[i] = counts[i].w == hidden_in_frame && counts[i].y <= hidden_bands ? 0u : no_band;
+  uvec4 c = counts[i];
+  band_keys[i] = c.w == hidden_in_frame && band_ends[c.y - 1u] <= hidden_reach ? 0u : no_band;
 }
-#elif defined(KEYS)
+#elif defined(KEYS) || defined(HISTOGRAM)
 layout(local_size_x = 256) in;
 uniform vec4 planes[96];  // inside where dot >= 0: six per view, then the casters' body's
 uniform uint view_count;
 uniform uint caster_plane_count;  // none: no casters' band
 uniform vec3 eye;
-uniform float band_ends[32];  // each band's far end from the eye, metres; the last's is infinite
 
 bool in_planes(vec3 center, float radius, uint first, uint end) {
   bool inside = true;
@@ -45,6 +53,28 @@ bool in_view(vec3 center, float radius) {
   return false;
 }
 
+#ifdef HISTOGRAM
+uniform float ladder_ends[32];  // the ladder's bands' far ends (GpuSampler::bands), the last's infinite
+uniform uint ladder_count;
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= plant_count) return;
+  mat4 model = instances[i].model;
+  vec4 bounds = meshes[plant_meshes[i].x].center_radius;
+  vec3 center = (model * vec4(bounds.xyz, 1.0)).xyz;
+  if (!in_view(center, bounds.w * pow(abs(determinant(mat3(model))), 1.0 / 3.0))) return;
+  float from_eye = length(eye - center);
+  uint band = 0u;
+  while (band + 1u < ladder_count && from_eye >= ladder_ends[band]) ++band;
+  uint quarter = 0u;
+  if (band + 1u < ladder_count) {
+    float start = band > 0u ? ladder_ends[band - 1u] : 0.0;
+    quarter = min(uint(4.0 * (from_eye - start) / (ladder_ends[band] - start)), 3u);
+  }
+  atomicAdd(quarter_counts[4u * band + quarter], 1u);
+}
+#else
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= plant_count) return;
@@ -64,6 +94,7 @@ void main() {
   band_keys[i] = key;
   counts[i] = uvec4(0u);
 }
+#endif
 #else
 layout(local_size_x = 64) in;
 #define MAX_BANDS 32

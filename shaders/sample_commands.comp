@@ -2,12 +2,14 @@
 // The GPU sampler's last pass, per band: for each table of point meshes, the indirect draw of its
 // plants this band drew as polygons (a DrawElementsIndirectCommand: index count, instances, first
 // index, base vertex, base instance), read from the prefix sums of the band's polygon plants.
+// The frame's draws of the band's polygon plants by part are emptied here, for a band without
+// polygon plants, whose part lists are not made (part_lists.comp).
 #include "sample_common.glsl"
+#include "polygon_parts.glsl"
 layout(local_size_x = 64) in;
 
-// Per table of plants: (first plant, end, 0, 0), then (index count, first index, base vertex, 0).
-layout(std430, binding = 18) readonly buffer Tables { uvec4 tables[]; };
 layout(std430, binding = 19) writeonly buffer Commands { uint commands[]; };
+layout(std430, binding = 29) writeonly buffer PartCommands { uint part_commands[]; };
 uniform uint table_count;
 
 // The first place in the band whose plant is `plant` or after it (the band holds plants in order).
@@ -37,4 +39,6 @@ void main() {
   commands[at + 2u] = mesh.y;
   commands[at + 3u] = mesh.z;
   commands[at + 4u] = first;
+  uint first_part_command = ((band_number - 1u) * table_count + t) * lanes;
+  for (uint lane = 0u; lane < lanes; ++lane) part_commands[5u * (first_part_command + lane) + 1u] = 0u;
 }

@@ -8,6 +8,10 @@ layout(local_size_x = 256) in;
 // Per band, its point draws and polygon plants: none where it drew nothing, so that nothing
 // after it needs the depth pyramid built again.
 layout(std430, binding = 28) writeonly buffer BandDrawn { uint band_drawn[]; };
+// Per band three dispatches (sample_bands.comp); the third, of its part lists (part_lists.comp: a
+// work group per lane), none where the band has no polygon plants.
+layout(std430, binding = 24) writeonly buffer BandDispatch { uvec4 band_dispatch[]; };
+const uint lanes = 65u;  // polygon_parts.glsl
 uniform uint point_capacity;  // the points the splat's buffers hold: those past it are not drawn
 uniform bool in_frame;         // the band is one the frame shows
 
@@ -35,6 +39,7 @@ void main() {
   barrier();
   if (t == 0u) {
     band_drawn[band_number - 1u] = carried.y - draw_count + carried.z - polygon_count;
+    band_dispatch[3u * (band_number - 1u) + 2u] = uvec4(carried.z > polygon_count ? lanes : 0u, 1u, 1u, 0u);
     band_first_point = min(all_points, point_capacity);
     all_points = carried.x;
     total_points = min(carried.x, point_capacity);

@@ -148,15 +148,54 @@ TEST_F(GpuSampling, TellsWhichBandsDrewSomething) {
   const std::vector<glm::vec2> bands = GpuSampler::bands(scene.camera.far);
   gpu.begin(view(), bands);
   for (int b = 0; b < gpu.band_count(); ++b) gpu.add_band(b, nullptr);
-  std::vector<bool> drew(bands.size(), false);
+  std::vector<bool> drew(static_cast<std::size_t>(gpu.band_count()), false);
   for (const GpuSampler::Count& c : gpu.read_counts()) {
     if (c.band && (c.points > 0 || c.polygons)) drew[static_cast<std::size_t>(*c.band)] = true;
   }
-  std::vector<GLuint> said(bands.size());
+  std::vector<GLuint> said(drew.size());
   glGetNamedBufferSubData(gpu.band_drawn(), 0, static_cast<GLsizeiptr>(said.size() * sizeof(GLuint)), said.data());
   ASSERT_TRUE(drew.front()) << "plants stand within the first band";
   ASSERT_FALSE(drew.back()) << "none beyond the plantation, 450 m away";
-  for (std::size_t b = 0; b < bands.size(); ++b) EXPECT_EQ(said[b] != 0, drew[b]) << "band " << b;
+  for (std::size_t b = 0; b < drew.size(); ++b) EXPECT_EQ(said[b] != 0, drew[b]) << "band " << b;
+}
+
+// A band of the ladder that holds more than a few thousand plants in view is cut into bands by
+// distance (the farthest merged to make room): 2,500 ferns 12.5–17.5 m ahead, in the ladder's band
+// from 12 to 18 m, take several bands, each one's plants nearer the eye than the next one's.
+TEST_F(GpuSampling, ADenseBandIsCutIntoBandsByDistance) {
+  std::ostringstream json;
+  json << R"({"camera": {"position": [0, 3, 0], "target": [0, 2, -60], "fov_y_deg": 50, "near": 0.5, "far": 1000},
+             "lights": [{"type": "directional", "direction": [0.4, -0.8, -0.3]}],
+             "objects": [{"type": "plant", "species": "fern", "positions": [)";
+  for (int x = 0; x < 100; ++x) {
+    for (int z = 0; z < 25; ++z) json << (x || z ? ", " : "") << "[" << -10.0 + 0.2 * x << ", 0, " << -12.5 - 0.2 * z << "]";
+  }
+  json << "]}]}";
+  const Scene dense = load_scene({"dense.json", json.str(), [](const std::string&) { return std::nullopt; }});
+  const PointSamples dense_samples(dense, settings.points_per_triangle, true);
+  GpuSampler gpu(dense.groups, dense_samples, GpuScene(dense).point_mesh_places());
+  const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
+  pointgen::SamplerView v = sampler_view(dense.camera, settings, {dense.camera.projection(aspect) * dense.camera.view()});
+  const std::vector<glm::vec2> ladder = GpuSampler::bands(dense.camera.far);
+  gpu.begin(v, ladder);
+  for (int b = 0; b < gpu.band_count(); ++b) gpu.add_band(b, nullptr);
+  // Per band, the nearest and farthest of its plants' bounds centres from the eye.
+  const pointgen::SampledMesh& fern = dense_samples.meshes()[dense.groups.front().mesh];
+  std::map<int, std::pair<float, float>> reach;
+  const std::vector<GpuSampler::Count> counts = gpu.read_counts();
+  ASSERT_EQ(counts.size(), 2500u);
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    ASSERT_TRUE(counts[i].band) << "every fern is in view";
+    const glm::vec3 center(dense.groups.front().transforms[i] * glm::vec4(fern.center, 1.0f));
+    const float d = glm::distance(center, dense.camera.position);
+    auto [at, fresh] = reach.try_emplace(*counts[i].band, d, d);
+    at->second = {std::min(at->second.first, d), std::max(at->second.second, d)};
+  }
+  EXPECT_GE(reach.size(), 3u) << "the ladder's band should be cut";
+  for (auto a = reach.begin(), b = std::next(a); b != reach.end(); ++a, ++b) {
+    EXPECT_LT(a->first, b->first);
+    EXPECT_LE(a->second.second, b->second.first) << "band " << a->first << " reaches past band " << b->first;
+  }
 }
 
 // Over a depth texture that changes between builds, build_if keeps the pyramid where its flag is

@@ -38,7 +38,7 @@ constexpr GLuint draws_binding = 1, instances_binding = 2, block_draws_binding =
                  polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19, band_list_binding = 20,
                  band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24,
                  polygon_parts_binding = 25, part_masks_binding = 26, part_plants_binding = 27, band_drawn_binding = 28,
-                 part_commands_binding = 29, layer_counts_binding = 31, layer_plants_binding = 32, layer_commands_binding = 33;
+                 part_commands_binding = 29, band_ends_binding = 34, layer_counts_binding = 31, layer_plants_binding = 32, layer_commands_binding = 33;
 constexpr std::size_t plants_per_group = 1024, threads_per_group = 256;  // shaders/sample_count.comp
 constexpr std::size_t points_per_block = 16;                              // shaders/point_common.glsl
 constexpr std::size_t max_planes = 96;                                    // planes[96]
@@ -52,6 +52,10 @@ constexpr std::size_t most_part_plants = std::size_t{1} << 22;
 // Bands: the first ends this far from the eye (metres), each next one this many times as far.
 // Finer bands hide more of what lies behind a near one, at a pyramid and a few passes each.
 constexpr float first_band_end = 12.0f, band_ratio = 1.5f;
+// A band of the ladder holding more plants in view than this is cut at its quarters, the far
+// bands merged to make room (shaders/band_ends.comp).
+constexpr unsigned dense_band_plants = 2048;
+constexpr int most_distance_bands = 24;
 // The plants the frame hides go into the shadow maps from the bands within this distance (the
 // first four). On the ecosystem's default view with PSM 2048² those beyond change `err` by 0.01
 // points; on a dense stand of 10^5 plants they added 0.8 M map triangles (docs/benchmarks.md).
@@ -78,12 +82,18 @@ GLuint groups_for(std::size_t threads, std::size_t per_group) {
   return static_cast<GLuint>(std::max<std::size_t>((threads + per_group - 1) / per_group, 1));
 }
 
+// Runs a pass over `groups` work groups; the passes after it see what it wrote.
+void run_pass(const gl::Program& program, GLuint groups) {
+  glUseProgram(program.name());
+  glDispatchCompute(groups, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
 }  // namespace
 
 std::vector<glm::vec2> GpuSampler::bands(float far) {
-  constexpr int most = 24;  // and the casters' and the hidden plants' after them
   std::vector<glm::vec2> bands;
-  for (float near = 0.0f, end = first_band_end; static_cast<int>(bands.size()) + 1 < most; near = end, end *= band_ratio) {
+  for (float near = 0.0f, end = first_band_end; static_cast<int>(bands.size()) + 1 < most_distance_bands; near = end, end *= band_ratio) {
     if (near >= far) break;
     bands.emplace_back(near, end);
   }
@@ -93,7 +103,9 @@ std::vector<glm::vec2> GpuSampler::bands(float far) {
 
 GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const PointSamples& samples,
                        const std::vector<GpuScene::DrawPlace>& places)
-    : keys_program_(gl::build_program({"sample_bins.comp"}, "#define KEYS\n")),
+    : histogram_program_(gl::build_program({"sample_bins.comp"}, "#define HISTOGRAM\n")),
+      band_ends_program_(gl::build_program({"band_ends.comp"})),
+      keys_program_(gl::build_program({"sample_bins.comp"}, "#define KEYS\n")),
       hidden_keys_program_(gl::build_program({"sample_bins.comp"}, "#define HIDDEN_KEYS\n")),
       bin_count_program_(gl::build_program({"sample_bins.comp"}, "#define COUNT\n")),
       bands_program_(gl::build_program({"sample_bands.comp"})),
@@ -172,7 +184,8 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<GLuint>(group_bands_, group_count_ * max_bands);
   storage<GLuint>(band_list_, 2 * plant_count_);  // the frame's bands, then the band of those hidden in it
   storage<glm::uvec2>(band_ranges_, max_bands);
-  storage<glm::uvec4>(band_dispatch_, 2 * max_bands);
+  gl::store(band_ends_, std::vector<GLuint>(max_bands + 4 * static_cast<std::size_t>(most_distance_bands), 0u));  // ends, quarters' counts
+  storage<glm::uvec4>(band_dispatch_, 3 * max_bands);
   gl::store(band_drawn_, std::vector<GLuint>(max_bands, 1u));  // as if each drew: a pyramid built over them stays right
   storage<GLuint>(layer_counts_, 4 + 2 * part_lanes * triangles_of_command_.size());  // a dispatch, then the counts
   storage<GLuint>(layer_plants_, part_plant_capacity_);
@@ -207,6 +220,7 @@ void GpuSampler::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, group_bands_binding, group_bands_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_dispatch_binding, band_dispatch_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_drawn_binding, band_drawn_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_ends_binding, band_ends_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, polygon_parts_binding, polygon_parts_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, part_masks_binding, part_masks_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, part_plants_binding, part_plants_.name());
@@ -219,11 +233,12 @@ void GpuSampler::bind() const {
 void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands,
                        const std::vector<shadow::Plane>& casters) {
   if (6 * view.views.size() + casters.size() > max_planes) throw RuntimeFailure("the GPU sampler takes at most 96 planes at once");
-  if (bands.empty() || bands.size() + 2 > max_bands) throw RuntimeFailure("the GPU sampler takes 1 to 30 bands a frame");
-  bands_used_ = static_cast<int>(bands.size() + (casters.empty() ? 0 : 2));
+  if (bands.empty() || static_cast<int>(bands.size()) > most_distance_bands) throw RuntimeFailure("the GPU sampler takes 1 to 24 bands a frame");
+  distance_bands_ = static_cast<int>(bands.size());
+  bands_used_ = distance_bands_ + (casters.empty() ? 0 : 2);
   layers_selected_ = 0;
-  casters_band_ = casters.empty() ? std::nullopt : std::optional<int>(static_cast<int>(bands.size()));
-  hidden_band_ = casters.empty() ? std::nullopt : std::optional<int>(static_cast<int>(bands.size() + 1));
+  casters_band_ = casters.empty() ? std::nullopt : std::optional<int>(distance_bands_);
+  hidden_band_ = casters.empty() ? std::nullopt : std::optional<int>(distance_bands_ + 1);
   // The lists are reset by the sort's passes, not by buffer clears: on llvmpipe a clear of the
   // counts at times landed after the count pass that followed it (counts of the first plants lost,
   // differently from run to run).
@@ -233,12 +248,21 @@ void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm:
   const pointgen::ViewFrusta frusta(view.views);
   for (const std::array<glm::vec4, 6>& p : frusta.planes()) planes.insert(planes.end(), p.begin(), p.end());
   for (const shadow::Plane& p : casters) planes.emplace_back(-p.normal, p.offset);  // inside where dot >= 0
-  std::vector<float> band_ends;
-  for (const glm::vec2& band : bands) band_ends.push_back(band.y);
-  if (casters_band_) band_ends.push_back(INFINITY);
-  const GLuint keys = keys_program_.name();
-  glProgramUniform4fv(keys, glGetUniformLocation(keys, "planes"), static_cast<GLsizei>(planes.size()), &planes.front().x);
-  glProgramUniform1fv(keys, glGetUniformLocation(keys, "band_ends"), static_cast<GLsizei>(band_ends.size()), band_ends.data());
+  std::vector<float> ladder_ends;
+  for (const glm::vec2& band : bands) ladder_ends.push_back(band.y);
+  for (const gl::Program* program : {&histogram_program_, &keys_program_}) {
+    const GLuint p = program->name();
+    glProgramUniform4fv(p, glGetUniformLocation(p, "planes"), static_cast<GLsizei>(planes.size()), &planes.front().x);
+    gl::set_uniform(*program, "view_count", static_cast<unsigned>(view.views.size()));
+    gl::set_uniform(*program, "caster_plane_count", static_cast<unsigned>(casters.size()));
+    gl::set_uniform(*program, "eye", view.eye);
+  }
+  for (const gl::Program* program : {&histogram_program_, &band_ends_program_}) {
+    const GLuint p = program->name();
+    glProgramUniform1fv(p, glGetUniformLocation(p, "ladder_ends"), static_cast<GLsizei>(ladder_ends.size()), ladder_ends.data());
+    gl::set_uniform(*program, "ladder_count", static_cast<unsigned>(ladder_ends.size()));
+  }
+  gl::set_uniform(band_ends_program_, "dense_plants", dense_band_plants);
   gl::set_uniform(count_program_, "view_projection", view.views.front());
   gl::set_uniform(part_masks_program_, "view_projection", view.views.front());
   gl::set_uniform(part_masks_program_, "pixels", glm::vec2(view.pixels));
@@ -248,13 +272,18 @@ void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm:
   gl::set_uniform(count_program_, "pixels_per_radian", view.density.pixels_per_radian);
   gl::set_uniform(count_program_, "k", view.density.k);
   gl::set_uniform(count_program_, "points_per_triangle", view.points_per_triangle);
-  gl::set_uniform(keys_program_, "view_count", static_cast<unsigned>(view.views.size()));
-  gl::set_uniform(keys_program_, "caster_plane_count", static_cast<unsigned>(casters.size()));
-  gl::set_uniform(keys_program_, "eye", view.eye);
+  gl::set_uniform(hidden_keys_program_, "hidden_reach", hidden_casters_reach);
+  cut_dense_bands();
+  sort(keys_program_, distance_bands_ + (casters.empty() ? 0 : 1), 0);
+}
 
-  const auto near_bands = std::count_if(bands.begin(), bands.end(), [](const glm::vec2& b) { return b.y <= hidden_casters_reach; });
-  gl::set_uniform(hidden_keys_program_, "hidden_bands", static_cast<unsigned>(near_bands));
-  sort(keys_program_, static_cast<int>(bands.size() + (casters.empty() ? 0 : 1)), 0);
+// The frame's distance bands from the ladder, on the GPU (shaders/band_ends.comp).
+void GpuSampler::cut_dense_bands() {
+  bind();
+  gl::set_uniform(histogram_program_, "plant_count", static_cast<unsigned>(plant_count_));
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  run_pass(histogram_program_, groups_for(plant_count_, threads_per_group));
+  run_pass(band_ends_program_, 1);
 }
 
 // The stable counting sort of the plants that `keys` gives a band into `band_count` bands from
@@ -271,15 +300,9 @@ void GpuSampler::sort(const gl::Program& keys, int band_count, int first_band) {
   gl::set_uniform(bands_program_, "list_start", static_cast<unsigned>(first_band == 0 ? 0 : plant_count_));
   gl::set_uniform(bands_program_, "first_band", static_cast<unsigned>(first_band));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  glUseProgram(keys.name());
-  glDispatchCompute(groups_for(plant_count_, threads_per_group), 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  glUseProgram(bin_count_program_.name());
-  glDispatchCompute(groups_for(group_count_, 64), 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  glUseProgram(bands_program_.name());
-  glDispatchCompute(1, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  run_pass(keys, groups_for(plant_count_, threads_per_group));
+  run_pass(bin_count_program_, groups_for(group_count_, 64));
+  run_pass(bands_program_, 1);
   glUseProgram(place_program_.name());
   glDispatchCompute(groups_for(group_count_, 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
@@ -313,7 +336,7 @@ void GpuSampler::add_band(int band, const DepthPyramid* occluders) {
   }
   gl::set_uniform(count_program_, "occlusion", occluders ? 1 : 0);
   if (occluders) occluders->bind_for(count_program_);
-  const auto dispatch_at = [&](int which) { return static_cast<GLintptr>((2 * band + which) * sizeof(glm::uvec4)); };
+  const auto dispatch_at = [&](int which) { return static_cast<GLintptr>((3 * band + which) * sizeof(glm::uvec4)); };
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, band_dispatch_.name());
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   glUseProgram(count_program_.name());
@@ -347,8 +370,7 @@ void GpuSampler::choose_parts(int band, const DepthPyramid* occluders) {
   if (occluders) occluders->bind_for(part_masks_program_);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, band_dispatch_.name());
   glUseProgram(part_masks_program_.name());
-  glDispatchComputeIndirect(static_cast<GLintptr>((2 * band + 1) * sizeof(glm::uvec4)));  // the draws pass's groups
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glDispatchComputeIndirect(static_cast<GLintptr>((3 * band + 1) * sizeof(glm::uvec4)));  // the draws pass's groups
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   const std::size_t tables = triangles_of_command_.size();
@@ -357,7 +379,8 @@ void GpuSampler::choose_parts(int band, const DepthPyramid* occluders) {
   gl::set_uniform(part_lists_program_, "part_plant_capacity", static_cast<unsigned>(part_plant_capacity_));
   gl::set_uniform(part_lists_program_, "first_command", static_cast<unsigned>(static_cast<std::size_t>(band) * tables * part_lanes));
   glUseProgram(part_lists_program_.name());
-  glDispatchCompute(static_cast<GLuint>(part_lanes), 1, 1);
+  glDispatchComputeIndirect(static_cast<GLintptr>((3 * band + 2) * sizeof(glm::uvec4)));  // a group per lane, or none
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
 }
 

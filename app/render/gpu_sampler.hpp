@@ -48,8 +48,10 @@ class GpuSampler {
   // in it); the band of hidden plants follows it (add_casters).
   void begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands,
              const std::vector<shadow::Plane>& casters = {});
-  // The bands of this frame, the casters' among them.
+  // The bands of this frame, the casters' among them; those of distance, nearest first, as many
+  // as the ladder's from begin(): the GPU cuts a dense one into several and merges the farthest.
   int band_count() const { return bands_used_; }
+  int distance_band_count() const { return distance_bands_; }
   // The number of the casters' band in this frame; none without caster views.
   std::optional<int> casters_band() const { return casters_band_; }
   // Adds the plants of a band (numbered from 0, nearest first); hidden ones are left out where
@@ -112,6 +114,7 @@ class GpuSampler {
  private:
   void bind() const;
   void sort(const gl::Program& keys, int band_count, int first_band);
+  void cut_dense_bands();
   bool in_frame(int band) const;  // a band the frame shows: not the casters' nor the hidden plants'
   void choose_parts(int band, const DepthPyramid* occluders);
   static std::size_t triangles_drawn(const gl::Buffer& commands, std::size_t first, std::size_t count);
@@ -120,6 +123,7 @@ class GpuSampler {
   std::size_t point_capacity_ = 0;  // points the draw list has room for
   std::size_t part_plant_capacity_ = 0;  // places in the frame's lists of polygon plants by part
   int bands_used_ = 0;
+  int distance_bands_ = 0;
   int layers_selected_ = 0;  // select_casters' this frame: layers 0 to this - 1
   std::optional<int> casters_band_, hidden_band_;
   std::vector<std::uint32_t> first_plant_;
@@ -127,8 +131,8 @@ class GpuSampler {
   std::vector<std::size_t> triangles_of_command_;  // per place, the mesh's triangles
   gl::Buffer instances_, plant_meshes_, meshes_, counts_, offsets_, group_sums_, draws_, block_draws_, totals_;
   gl::Buffer polygon_instances_, tables_, commands_;
-  gl::Buffer band_keys_, group_bands_, band_list_, band_ranges_, band_dispatch_, band_drawn_;
-  gl::Program keys_program_, hidden_keys_program_, bin_count_program_, bands_program_, place_program_;
+  gl::Buffer band_keys_, group_bands_, band_list_, band_ranges_, band_dispatch_, band_drawn_, band_ends_;
+  gl::Program histogram_program_, band_ends_program_, keys_program_, hidden_keys_program_, bin_count_program_, bands_program_, place_program_;
   gl::Program count_program_, groups_program_, draws_program_, commands_program_;
   // The frame's polygon plants by part (choose_parts).
   gl::Buffer polygon_parts_, part_masks_, part_plants_, part_commands_;

@@ -362,23 +362,23 @@ void Renderer::finish_frame(const shadow::Camera& camera, const shadow::Light& l
 }
 
 void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<shadow::Plane>& casters) {
-  const std::vector<glm::vec2> bands = GpuSampler::bands(camera.far);
-  gpu_sampler_->begin(sampler_view(camera, settings_, {view_projection_}), bands, casters);
+  gpu_sampler_->begin(sampler_view(camera, settings_, {view_projection_}), GpuSampler::bands(camera.far), casters);
+  const int bands = gpu_sampler_->distance_band_count();
   frame_points_.use(gpu_sampler_->draw_list(), samples_);
   frame_points_.begin();
   // The first band is hidden by the ground alone; each next one by what the bands before drew.
   occluders_->build(frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
-  for (std::size_t b = 0; b < bands.size(); ++b) {
-    if (b > 0) occluders_->build_if(gpu_sampler_->band_drawn(), b - 1, frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
-    gpu_sampler_->add_band(static_cast<int>(b), occluders_.get());
-    frame_pass_.add_chosen_surfaces(gpu_scene_, *gpu_sampler_, static_cast<int>(b), camera);
+  for (int b = 0; b < bands; ++b) {
+    if (b > 0) occluders_->build_if(gpu_sampler_->band_drawn(), static_cast<std::size_t>(b - 1), frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
+    gpu_sampler_->add_band(b, occluders_.get());
+    frame_pass_.add_chosen_surfaces(gpu_scene_, *gpu_sampler_, b, camera);
     frame_points_.add(view_projection_, settings_.splat_size, 0.0f, true);
   }
   // Casters out of view and near plants the frame hides: for the shadow map alone (the frame's
   // splat passes stop before their points).
   if (!casters.empty()) {
     const glm::mat4 map_view = culling_frusta(setup_.views.front()).front();
-    occluders_->build_if(gpu_sampler_->band_drawn(), bands.size() - 1, frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
+    occluders_->build_if(gpu_sampler_->band_drawn(), static_cast<std::size_t>(bands - 1), frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
     receivers_->build_receivers(*occluders_, view_projection_, map_view);
     gpu_sampler_->add_casters(map_view, static_cast<float>(settings_.shadow_size) * static_cast<float>(settings_.shadow_size), *receivers_);
   }
