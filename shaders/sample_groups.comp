@@ -3,6 +3,7 @@
 // their exclusive prefix sums after the lists of the bands before, the lists' new totals, and
 // what the band drew.
 #include "sample_common.glsl"
+#include "polygon_parts.glsl"
 layout(local_size_x = 256) in;
 
 // Per band, its point draws and polygon plants: none where it drew nothing, so that nothing
@@ -11,7 +12,6 @@ layout(std430, binding = 28) writeonly buffer BandDrawn { uint band_drawn[]; };
 // Per band three dispatches (sample_bands.comp); the third, of its part lists (part_lists.comp: a
 // work group per lane), none where the band has no polygon plants.
 layout(std430, binding = 24) writeonly buffer BandDispatch { uvec4 band_dispatch[]; };
-const uint lanes = 65u;  // polygon_parts.glsl
 uniform uint point_capacity;  // the points the splat's buffers hold: those past it are not drawn
 uniform bool in_frame;         // the band is one the frame shows
 

@@ -14,14 +14,15 @@ namespace ecoview {
 
 // The view sampler's per-plant choice on the GPU. The plants of point meshes stay in GL buffers
 // from load on (transform, tint, mesh, rounding threshold). A frame's plants in view are sorted
-// into bands of distance from the eye and sampled band by band, nearest first: each band's plants
-// are culled against a depth pyramid of what the bands before drew (occluders drawn first in the
-// same frame, so a frame depends on its own view alone), counted with the density formula, given
-// points or polygons with the band around break-even, and appended to the point draws (as
-// PointSplat reads them) and the list of polygon plants (their indices), with an indirect draw per
-// table and band and no read-back. Two last bands, for shadow maps alone, may hold the casters out
-// of view and the plants the frame hides that shadow what it shows; a cascade draws the polygon
-// plants that shadow its own surfaces.
+// into bands of distance from the eye (a dense band cut into several) and sampled band by band,
+// nearest first: each band's plants are culled against a depth pyramid of what the bands before
+// drew (occluders drawn first in the same frame, so a frame depends on its own view alone),
+// counted with the density formula, given points or polygons with the band around break-even, and
+// appended to the point draws (as PointSplat reads them) and the list of polygon plants (their
+// indices), with indirect draws per table and band and no read-back; the frame draws a large
+// polygon plant's parts that it may show. Two last bands, for shadow maps alone, may hold the
+// casters out of view and the plants the frame hides that shadow what it shows; a cascade or a
+// single map draws the polygon plants, and of a large one the parts, that shadow its receivers.
 // Without occlusion it chooses as pointgen::sample_view does, by whole plants and without cells'
 // aggregates: the CPU sampler is its test oracle. docs/point_density.md, "On the GPU".
 class GpuSampler {
