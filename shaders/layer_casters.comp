@@ -12,6 +12,7 @@
 #include "depth_pyramid.glsl"
 #include "plant_boxes.glsl"
 #include "polygon_parts.glsl"
+#include "plant_parts.glsl"
 
 layout(std430, binding = 16) readonly buffer PolygonInstances { uint polygon_instances[]; };
 // The per-plant passes' work groups (a glDispatchComputeIndirect command), then per list (table by
@@ -67,19 +68,6 @@ uint table_of(uint plant) {
   return lo;
 }
 
-// The plant's parts that shadow a receiver, a bit each, or drawn_whole.
-uvec2 parts_casting(mat4 model, SampledMesh mesh) {
-  vec3 lo, hi;
-  if (mesh.polygon_parts.y == 0u || !box_rect(map_view_projection, model, mesh, lo, hi)) return drawn_whole;
-  if (!(pixels_in(lo, hi, pixels) > pixels_to_split)) return drawn_whole;
-  uvec2 casting = uvec2(0u);
-  for (uint p = 0u; p < mesh.polygon_parts.y; ++p) {
-    PolygonPart part = polygon_parts[mesh.polygon_parts.x + p];
-    if (!shadows_nothing(map_view_projection, model, part.center.xyz, part.half_size.xyz)) casting[p / 32u] |= 1u << (p % 32u);
-  }
-  return casting == every_part(mesh.polygon_parts.y) ? drawn_whole : casting;
-}
-
 void add_to(uint list, uint plant) {
   if (!writing) {
     atomicAdd(layer_counts[2u * list], 1u);
@@ -97,7 +85,7 @@ void main() {
   SampledMesh mesh = meshes[plant_meshes[plant].x];
   if (shadows_nothing(map_view_projection, model, mesh)) return;
   uint first_list = table_of(plant) * lanes;
-  uvec2 casting = parts_casting(model, mesh);
+  uvec2 casting = parts_kept(map_view_projection, pixels, model, mesh, true, false);
   if (casting == drawn_whole) {
     add_to(first_list + whole_lane, plant);
     return;

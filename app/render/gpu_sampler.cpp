@@ -57,7 +57,7 @@ constexpr float first_band_end = 12.0f, band_ratio = 1.5f;
 constexpr unsigned dense_band_plants = 2048;
 constexpr int most_distance_bands = 24;
 // The plants the frame hides go into the shadow maps from the bands within this distance (the
-// first four). On the ecosystem's default view with PSM 2048² those beyond change `err` by 0.01
+// ladder's first four, or the bands cut from them). On the ecosystem's default view with PSM 2048² those beyond change `err` by 0.01
 // points; on a dense stand of 10^5 plants they added 0.8 M map triangles (docs/benchmarks.md).
 constexpr float hidden_casters_reach = 41.0f;
 
@@ -129,7 +129,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
     const pointgen::SampledMesh& mesh = meshes[table.mesh];
     holds_plants_.push_back(mesh.samples > 0 && table.size() > 0);
     if (!holds_plants_.back()) continue;
-    triangles_of_command_.push_back(mesh.triangles);
+    ++table_count_;
     const auto first = static_cast<std::uint32_t>(instances.size());
     const std::vector<GpuInstance> own = instances_of(table);
     instances.insert(instances.end(), own.begin(), own.end());
@@ -175,11 +175,11 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<GLuint>(block_draws_, (point_capacity_ + points_per_block - 1) / points_per_block);
   gl::store(totals_, std::vector<GpuTotals>(1, GpuTotals{}));  // stays so in a scene without plants
   storage<GLuint>(polygon_instances_, plant_count_);
-  storage<GLuint>(commands_, command_uints * max_bands * std::max<std::size_t>(triangles_of_command_.size(), 1));
+  storage<GLuint>(commands_, command_uints * max_bands * std::max<std::size_t>(table_count_, 1));
   storage<glm::uvec2>(part_masks_, plant_count_);
   part_plant_capacity_ = std::min(most_part_plants, 64 * plant_count_);
   storage<GLuint>(part_plants_, part_plant_capacity_);
-  storage<GLuint>(part_commands_, command_uints * part_lanes * max_bands * std::max<std::size_t>(triangles_of_command_.size(), 1));
+  storage<GLuint>(part_commands_, command_uints * part_lanes * max_bands * std::max<std::size_t>(table_count_, 1));
   storage<GLuint>(band_keys_, plant_count_);
   storage<GLuint>(group_bands_, group_count_ * max_bands);
   storage<GLuint>(band_list_, 2 * plant_count_);  // the frame's bands, then the band of those hidden in it
@@ -187,9 +187,9 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   gl::store(band_ends_, std::vector<GLuint>(max_bands + 4 * static_cast<std::size_t>(most_distance_bands), 0u));  // ends, quarters' counts
   storage<glm::uvec4>(band_dispatch_, 3 * max_bands);
   gl::store(band_drawn_, std::vector<GLuint>(max_bands, 1u));  // as if each drew: a pyramid built over them stays right
-  storage<GLuint>(layer_counts_, 4 + 2 * part_lanes * triangles_of_command_.size());  // a dispatch, then the counts
+  storage<GLuint>(layer_counts_, 4 + 2 * part_lanes * table_count_);  // a dispatch, then the counts
   storage<GLuint>(layer_plants_, part_plant_capacity_);
-  storage<GLuint>(layer_commands_, command_uints * part_lanes * max_layers * std::max<std::size_t>(triangles_of_command_.size(), 1));
+  storage<GLuint>(layer_commands_, command_uints * part_lanes * max_layers * std::max<std::size_t>(table_count_, 1));
 }
 
 void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed) {
@@ -354,9 +354,9 @@ void GpuSampler::add_band(int band, const DepthPyramid* occluders) {
   glDispatchComputeIndirect(dispatch_at(1));
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 
-  gl::set_uniform(commands_program_, "table_count", static_cast<unsigned>(triangles_of_command_.size()));
+  gl::set_uniform(commands_program_, "table_count", static_cast<unsigned>(table_count_));
   glUseProgram(commands_program_.name());
-  glDispatchCompute(groups_for(triangles_of_command_.size(), 64), 1, 1);
+  glDispatchCompute(groups_for(table_count_, 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT |
                   GL_BUFFER_UPDATE_BARRIER_BIT);
   if (in_frame(band)) choose_parts(band, occluders);
@@ -373,7 +373,7 @@ void GpuSampler::choose_parts(int band, const DepthPyramid* occluders) {
   glDispatchComputeIndirect(static_cast<GLintptr>((3 * band + 1) * sizeof(glm::uvec4)));  // the draws pass's groups
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-  const std::size_t tables = triangles_of_command_.size();
+  const std::size_t tables = table_count_;
   gl::set_uniform(part_lists_program_, "band_number", number);
   gl::set_uniform(part_lists_program_, "table_count", static_cast<unsigned>(tables));
   gl::set_uniform(part_lists_program_, "part_plant_capacity", static_cast<unsigned>(part_plant_capacity_));
@@ -392,20 +392,20 @@ void GpuSampler::sample(const pointgen::SamplerView& view) {
 }
 
 GpuScene::PlantDraws GpuSampler::polygon_draws(int first, int end) const {
-  const std::size_t tables = triangles_of_command_.size();
+  const std::size_t tables = table_count_;
   return {instances_.name(), polygon_instances_.name(), commands_.name(), static_cast<std::size_t>(first) * tables,
           static_cast<std::size_t>(std::max(end - first, 0)) * tables};
 }
 
 GpuScene::PlantDraws GpuSampler::frame_polygon_draws(int band) const {
-  const std::size_t commands = triangles_of_command_.size() * part_lanes;
+  const std::size_t commands = table_count_ * part_lanes;
   return {instances_.name(), part_plants_.name(), part_commands_.name(), static_cast<std::size_t>(band) * commands,
           in_frame(band) ? commands : 0};
 }
 
 GpuScene::PlantDraws GpuSampler::select_casters(int layer, const glm::mat4& map_view, int map_size, const DepthPyramid& receivers) {
   if (layer < 0 || layer >= max_layers) throw RuntimeFailure("the GPU sampler selects casters for at most 8 shadow views");
-  const std::size_t tables = triangles_of_command_.size();
+  const std::size_t tables = table_count_;
   if (plant_count_ == 0 || tables == 0) return polygon_draws(0, 0);
   layers_selected_ = std::max(layers_selected_, layer + 1);
   bind();
@@ -478,7 +478,7 @@ std::size_t GpuSampler::triangles_drawn(const gl::Buffer& commands, std::size_t 
 GpuSampler::Totals GpuSampler::read_totals() const {
   GpuTotals totals{};
   glGetNamedBufferSubData(totals_.name(), 0, sizeof totals, &totals);
-  const std::size_t tables = triangles_of_command_.size();
+  const std::size_t tables = table_count_;
   const auto frame_bands = static_cast<std::size_t>(casters_band_.value_or(bands_used_));
   Totals out{totals.total_points, totals.polygon_count, 0, totals.frame_points, 0, {}};
   out.triangles = triangles_drawn(commands_, 0, tables * static_cast<std::size_t>(bands_used_));

@@ -129,7 +129,7 @@ class GpuSampler {
   std::optional<int> casters_band_, hidden_band_;
   std::vector<std::uint32_t> first_plant_;
   std::vector<bool> holds_plants_;  // per table
-  std::vector<std::size_t> triangles_of_command_;  // per place, the mesh's triangles
+  std::size_t table_count_ = 0;  // tables holding plants: a polygon draw each per band or lane
   gl::Buffer instances_, plant_meshes_, meshes_, counts_, offsets_, group_sums_, draws_, block_draws_, totals_;
   gl::Buffer polygon_instances_, tables_, commands_;
   gl::Buffer band_keys_, group_bands_, band_list_, band_ranges_, band_dispatch_, band_drawn_, band_ends_;
