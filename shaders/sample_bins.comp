@@ -63,7 +63,7 @@ void main() {
   mat4 model = instances[i].model;
   vec4 bounds = meshes[plant_meshes[i].x].center_radius;
   vec3 center = (model * vec4(bounds.xyz, 1.0)).xyz;
-  if (!in_view(center, bounds.w * pow(abs(determinant(mat3(model))), 1.0 / 3.0))) return;
+  if (!in_view(center, bounds.w * model_scale(model))) return;
   float from_eye = length(eye - center);
   uint band = 0u;
   while (band + 1u < ladder_count && from_eye >= ladder_ends[band]) ++band;
@@ -81,7 +81,7 @@ void main() {
   mat4 model = instances[i].model;
   vec4 bounds = meshes[plant_meshes[i].x].center_radius;
   vec3 center = (model * vec4(bounds.xyz, 1.0)).xyz;
-  float radius = bounds.w * pow(abs(determinant(mat3(model))), 1.0 / 3.0);
+  float radius = bounds.w * model_scale(model);
   uint key = no_band;
   uint distance_bands = caster_plane_count > 0u ? band_count - 1u : band_count;
   if (in_view(center, radius)) {

@@ -5,16 +5,8 @@ struct Instance {
   mat4 model;
   vec4 tint;
 };
-struct SampledMesh {
-  vec4 center_radius;    // of its bounds, in the mesh's frame
-  vec4 half_size_area;   // its bounds' half sizes; w: its surface area, square metres
-  vec4 moments[3];       // columns of the mean n nᵀ of its samples' normals (zero: facing every way)
-  uvec4 sizes;           // triangles, samples, its list's first sample among all meshes', 0
-  uvec4 polygon_parts;   // its first polygon part among all meshes', their number (none: drawn whole), 0, 0
-};
 layout(std430, binding = 2) readonly buffer Instances { Instance instances[]; };
-layout(std430, binding = 10) readonly buffer PlantMeshes { uvec2 plant_meshes[]; };  // mesh, rounding's float bits
-layout(std430, binding = 11) readonly buffer SampledMeshes { SampledMesh meshes[]; };
+#include "sampled_meshes.glsl"
 // Per plant, once counted: (points, the number of its band from 1, 1 when drawn as polygons,
 // hidden_in_frame where its box is behind what nearer bands drew, else 0); zero before.
 layout(std430, binding = 12) buffer Counts { uvec4 counts[]; };

@@ -11,9 +11,8 @@ layout(local_size_x = 256) in;
 
 uniform mat4 view_projection;  // the first view's, for occlusion
 uniform bool occlusion;
-// For the shadow maps' own bands (casters out of view, plants the frame hides): no more than k
-// points per texel of the surface a shadow view projects (half the area: taken as facing every
-// way), whatever the camera's density asks.
+// For the shadow maps' own bands (casters out of view, plants the frame hides): no more points than
+// the shadow view asks (points_a_map_asks), whatever the camera's density asks.
 uniform bool cap_to_map;
 uniform mat4 map_view_projection;
 uniform float map_texels;
@@ -46,7 +45,7 @@ uvec3 count_plant(uint i) {
   }
   if (receivers_only && shadows_nothing(map_view_projection, model, mesh)) return uvec3(0u);
   vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
-  float scale = pow(abs(determinant(mat3(model))), 1.0 / 3.0);
+  float scale = model_scale(model);
   float radius = mesh.center_radius.w * scale;
   float distance = max(length(eye - center), max(0.5 * radius, 1e-3));
   float depth = max(dot(center - eye, forward), distance * edge_cos);
@@ -55,13 +54,7 @@ uvec3 count_plant(uint i) {
   float z = max(depth, 1e-3);
   float area = mesh.half_size_area.w * scale * scale;
   float needed = k * pixels_per_radian * pixels_per_radian * area * facing_eye * max(distance, z) / (z * z * z);
-  if (cap_to_map) {
-    float w = (map_view_projection * vec4(center, 1.0)).w;
-    vec3 row_x = vec3(map_view_projection[0][0], map_view_projection[1][0], map_view_projection[2][0]);
-    vec3 row_y = vec3(map_view_projection[0][1], map_view_projection[1][1], map_view_projection[2][1]);
-    float ndc_per_square_metre = length(row_x) * length(row_y) / (w * w);
-    needed = min(needed, k * 0.5 * area * ndc_per_square_metre * 0.25 * map_texels);
-  }
+  if (cap_to_map) needed = min(needed, points_a_map_asks(map_view_projection, map_texels, k, center, area));
   float samples = float(mesh.sizes.y);
   float ratio = needed / (points_per_triangle * float(mesh.sizes.x));
   bool as_polygons = ratio > band_low || needed > samples;

@@ -7,10 +7,12 @@
 #include "app/render/renderer.hpp"
 #include "app/scene/scene_file.hpp"
 
+#include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -441,6 +443,43 @@ TEST_F(GpuSampling, TheMapLeavesOutThePartsOfAPlantThatShadowNothingTheFrameShow
   EXPECT_LT(parts.stats.shadow_triangles - ground_and_wall, beech * 3 / 4) << "its hidden half should be left out of the map";
   ASSERT_GT(whole.shadowed, 1000u) << "its shadow should lie on the ground beside the wall";
   EXPECT_NEAR(static_cast<double>(parts.shadowed), static_cast<double>(whole.shadowed), 0.02 * static_cast<double>(whole.shadowed));
+}
+
+// A map whose texels are coarser than the frame's pixels takes of each plant no more of the
+// camera's points than k a texel of half its surface (as a sampling made for the map would): a
+// field of ferns in a 64² uniform map, whose texels per square metre the test reads from the map's
+// orthographic matrix.
+TEST_F(GpuSampling, ACoarseMapTakesOfEachPlantKPointsATexel) {
+  std::ostringstream json;
+  json << R"({"camera": {"position": [0, 1.5, 0], "target": [0, 0, -20], "fov_y_deg": 40, "near": 0.5, "far": 200},
+      "lights": [{"type": "directional", "direction": [0.3, -1, -0.2]}],
+      "objects": [{"type": "plane", "center": [0, 0, -20], "size": [120, 120]},
+                  {"type": "plant", "species": "fern", "positions": [)";
+  for (int i = 0; i < 40; ++i) json << (i ? ", " : "") << "[" << (i % 8) * 3 - 10 << ", 0, " << -30 - (i / 8) * 6 << "]";
+  json << "]}]}";
+  const Scene ferns = load_scene({"ferns.json", json.str(), [](const std::string&) { return std::nullopt; }});
+  settings.method = ShadowMethod::uniform;
+  settings.shadow_size = 128;
+  settings.gpu_sampler = true;
+  Renderer renderer(ferns, settings);
+  renderer.render(ferns.camera, ferns.lights[0]);
+  const FrameStats stats = renderer.stats();
+  const glm::mat4 map = renderer.shadow_setup().views.at(0).view_projection();
+  const float texels_per_square_metre = glm::length(glm::vec3(glm::row(map, 0))) * glm::length(glm::vec3(glm::row(map, 1))) * 0.25f *
+                                        static_cast<float>(settings.shadow_size * settings.shadow_size);
+  const PointSamples fern_samples{ferns, settings.points_per_triangle, true};
+  double most = 0.0;
+  for (const pointgen::InstanceTable& table : ferns.groups) {
+    const float area = fern_samples.meshes()[table.mesh].area;
+    if (fern_samples.meshes()[table.mesh].samples == 0) continue;
+    for (const glm::mat4& model : table.transforms) {
+      const float scale = std::cbrt(std::abs(glm::determinant(glm::mat3(model))));
+      most += std::floor(settings.k * 0.5f * area * scale * scale * texels_per_square_metre) + 1.0;
+    }
+  }
+  ASSERT_GT(stats.points, static_cast<std::size_t>(2.0 * most)) << "the frame should hold more points than the map may take";
+  EXPECT_GT(stats.shadow_points, 0u);
+  EXPECT_LE(static_cast<double>(stats.shadow_points), most);
 }
 
 TEST_F(GpuSampling, AFrameWithoutPlantsDrawsNone) {

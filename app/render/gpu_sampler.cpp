@@ -441,7 +441,7 @@ GpuScene::PlantDraws GpuSampler::select_casters(int layer, const glm::mat4& map_
 }
 
 PointDrawList GpuSampler::draw_list() const {
-  return {draws_.name(), instances_.name(), block_draws_.name(), totals_.name(), point_capacity_};
+  return {draws_.name(), instances_.name(), block_draws_.name(), totals_.name(), point_capacity_, plant_meshes_.name(), meshes_.name()};
 }
 
 

@@ -15,7 +15,8 @@ struct GpuInstance {
 
 constexpr GLuint draws_binding = 1, instances_binding = 2, positions_binding = 3, normals_binding = 4,
                  colors_binding = 5, depths_binding = 6, winners_binding = 7, block_draws_binding = 8,
-                 projected_binding = 9, totals_binding = 15, dispatch_binding = 16;
+                 projected_binding = 9, plant_meshes_binding = 10, meshes_binding = 11, totals_binding = 15,
+                 dispatch_binding = 16, points_drawn_binding = 30;
 constexpr std::uint64_t points_per_thread = 16;  // point_threads.glsl
 constexpr std::uint64_t points_per_block = 16;   // point_common.glsl
 // Point indices are 32-bit in the shaders: the last one marks "no point", and a thread's run of
@@ -61,12 +62,15 @@ PointSplat::PointSplat(glm::ivec2 size)
       dispatch_program_(gl::build_program({"point_dispatch.comp"})),
       depth_program_(gl::build_program({"point_depth.comp"})),
       keeping_depth_program_(gl::build_program({"point_depth.comp"}, "#define KEEP_PROJECTION\n")),
+      capped_depth_program_(gl::build_program({"point_depth.comp"}, "#define MAP_CAP\n")),
       resolve_program_(gl::build_program({"point_resolve.comp"})) {
   const auto pixels = static_cast<GLsizeiptr>(size.x) * size.y * static_cast<GLsizeiptr>(sizeof(GLuint));
   glNamedBufferStorage(depths_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(winners_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(totals_.name(), 4 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(dispatch_.name(), 3 * sizeof(GLuint), nullptr, 0);
+  glNamedBufferStorage(points_drawn_onto_.name(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  clear(points_drawn_onto_, 0u);
 }
 
 void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std::vector<pointgen::InstanceTable>& tables,
@@ -100,6 +104,14 @@ void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std
 void PointSplat::use(const PointDrawList& list, const PointSamples& samples) {
   list_ = list;
   samples_ = &samples;
+  clear(points_drawn_onto_, 0u);
+}
+
+std::size_t PointSplat::points_drawn_onto() const {
+  GLuint points = 0;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(points_drawn_onto_.name(), 0, sizeof points, &points);
+  return points;
 }
 
 void PointSplat::bind_for(const gl::Program& program) const {
@@ -169,14 +181,22 @@ void PointSplat::resolve(const glm::mat4& view_projection, int splat_size, float
 // The layer's depths go into the depth buffer and back, copied by GL from and to a pixel buffer:
 // on llvmpipe a fullscreen pass writing each texel's depth took 80-140 ms a 4096² layer.
 void PointSplat::splat_onto(GLuint depth_texture, int layer, const glm::mat4& view_projection, int splat_size,
-                            float depth_bias, glm::vec2 paraboloid) {
+                            float depth_bias, glm::vec2 paraboloid, float points_per_texel) {
   if (list_.most_points == 0) return;
+  const bool capped = list_.meshes != 0;
+  if (capped) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, plant_meshes_binding, list_.plant_meshes);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, meshes_binding, list_.meshes);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, points_drawn_binding, points_drawn_onto_.name());
+    gl::set_uniform(capped_depth_program_, "map_texels", static_cast<float>(size_.x) * static_cast<float>(size_.y));
+    gl::set_uniform(capped_depth_program_, "k", paraboloid.x == 0.0f ? points_per_texel : 0.0f);  // projective views only
+  }
   const auto bytes = static_cast<GLsizei>(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y) * sizeof(float));
   overwrite_barrier();
   glBindBuffer(GL_PIXEL_PACK_BUFFER, depths_.name());
   glGetTextureSubImage(depth_texture, 0, 0, 0, layer, size_.x, size_.y, 1, GL_DEPTH_COMPONENT, GL_FLOAT, bytes, nullptr);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-  dispatch(depth_program_, view_projection, splat_size, depth_bias, paraboloid, Points::all);
+  dispatch(capped ? capped_depth_program_ : depth_program_, view_projection, splat_size, depth_bias, paraboloid, Points::all);
   glMemoryBarrier(GL_PIXEL_BUFFER_BARRIER_BIT);
   glBindBuffer(GL_PIXEL_UNPACK_BUFFER, depths_.name());
   glTextureSubImage3D(depth_texture, 0, 0, 0, layer, size_.x, size_.y, 1, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);

@@ -16,6 +16,9 @@ namespace ecoview {
 struct PointDrawList {
   GLuint draws = 0, instances = 0, block_draws = 0, totals = 0;
   std::size_t most_points = 0;  // the most points the list may hold
+  // A GpuSampler's list (instances are its plants): per plant its mesh, and what it knows of each
+  // mesh (shaders/sampled_meshes.glsl), by which a shadow map thins the list. None for others.
+  GLuint plant_meshes = 0, meshes = 0;
 };
 
 // Point splatting with compute shaders into a target of width x height pixels: the frame's draws
@@ -43,9 +46,13 @@ class PointSplat {
   // Pass 1 onto one layer of a depth-texture array of the target's size (a shadow map): each
   // texel keeps the nearer of its depth and the points'. For a paraboloid shadow view,
   // `view_projection` is its world → light space matrix and `paraboloid` its zoom and range
-  // (shadow::Paraboloid); zoom 0 for a projective view.
+  // (shadow::Paraboloid); zoom 0 for a projective view. A projective view drawing a GpuSampler's
+  // list, made for the camera, takes of each plant no more points than `points_per_texel` per
+  // texel of its surface (shaders/point_walk.glsl, MAP_CAP).
   void splat_onto(GLuint depth_texture, int layer, const glm::mat4& view_projection, int splat_size, float depth_bias,
-                  glm::vec2 paraboloid);
+                  glm::vec2 paraboloid, float points_per_texel);
+  // The points splat_onto drew of a GpuSampler's list since use() (read back).
+  std::size_t points_drawn_onto() const;
   // Per pixel, the points on the surface `surface_depth` shows there (linear view depth, rows from
   // the top, negative where none), each counted once where its centre lands, rows from the top: for
   // the density figures. On the surface: within `surface_gap` of its depth, as a fraction of it.
@@ -59,7 +66,7 @@ class PointSplat {
  private:
   glm::ivec2 size_;
   PointDrawList list_;  // the one drawn: uploaded_ or another's
-  gl::Buffer draws_, instances_, block_draws_, totals_, depths_, winners_, projected_, dispatch_;
+  gl::Buffer draws_, instances_, block_draws_, totals_, depths_, winners_, projected_, dispatch_, points_drawn_onto_;
   std::size_t draws_capacity_ = 0, instances_capacity_ = 0, block_draws_capacity_ = 0, projected_capacity_ = 0;
   // Which of the list's points a pass takes: the frame's, those of the band last added, or every
   // one, the shadow maps' alone too.
@@ -70,7 +77,7 @@ class PointSplat {
   void dispatch(const gl::Program& program, const glm::mat4& view_projection, int splat_size, float depth_bias,
                 glm::vec2 paraboloid, Points points) const;
 
-  gl::Program dispatch_program_, depth_program_, keeping_depth_program_, resolve_program_;
+  gl::Program dispatch_program_, depth_program_, keeping_depth_program_, capped_depth_program_, resolve_program_;
   std::unique_ptr<gl::Program> count_program_;  // made when first counting
   const PointSamples* samples_ = nullptr;
 };
