@@ -1,6 +1,6 @@
 // The body of the splat compute passes that project points: each thread projects its points and
 // calls VISIT(pixel index, depth, point) for the pixels of each one's splat (with MAP_CAP, only of
-// the points a shadow map asks). The including shader defines VISIT first, and may define
+// the points a shadow map takes). The including shader defines VISIT first, and may define
 // PROJECTED(point, corner, depth), called once per point on the target with its splat's lower-left
 // pixel, and OUTSIDE(point) once per point off it.
 #include "point_threads.glsl"
@@ -19,27 +19,14 @@ uniform float depth_bias;  // added to window depth (shadow maps)
 #include "paraboloid.glsl"
 
 #ifdef MAP_CAP
-// A projective shadow map drawing a GPU sampler's list (made for the camera): of each plant, no
-// more points than the map asks (points_a_map_asks, k a texel), the first ones of its list,
-// which are a uniform subset. Near the eye a coarse map's texel holds many of the camera's points,
-// and a texel that any point of a leaf falls in is shadowed whole; thinned to the map's density, a
-// texel is shadowed about as often as leaves cover it, as by a sampling made for the map.
-#include "sampled_meshes.glsl"
-layout(std430, binding = 30) buffer MapPoints { uint map_points_drawn; };  // the points drawn, summed
-uniform float map_texels;
-uniform float k;  // none: every point (a paraboloid view)
-uint points_drawn(uvec4 draw) {
-  if (k <= 0.0) return draw.y;
-  mat4 model = instances[draw.w].model;
-  SampledMesh mesh = meshes[plant_meshes[draw.w].x];
-  vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
-  float scale = model_scale(model);
-  float asked = points_a_map_asks(view_projection, map_texels, k, center, mesh.half_size_area.w * scale * scale);
-  return min(draw.y, uint(floor(asked + uintBitsToFloat(plant_meshes[draw.w].y))));
-}
+// A shadow map drawing a GPU sampler's list takes of each draw no more points than its cap
+// (map_caps.comp), and sums the points it drew.
+layout(std430, binding = 35) readonly buffer MapCaps { uint map_caps[]; };
+layout(std430, binding = 30) buffer MapPoints { uint map_points_drawn; };
+uint points_drawn(uint draw, uvec4 d) { return map_caps[draw]; }
 #define COUNT_DRAWN(points) atomicAdd(map_points_drawn, points)
 #else
-uint points_drawn(uvec4 draw) { return draw.y; }
+uint points_drawn(uint draw, uvec4 d) { return d.y; }
 #define COUNT_DRAWN(points)
 #endif
 
@@ -48,10 +35,13 @@ void main() {
   if (run.x >= run.y) return;
   uint draw = draw_of(run.x);
   uvec4 d = draws[draw];
-  uint drawn = points_drawn(d);
+  uint drawn = points_drawn(draw, d);
   uint kept = 0u;
   for (uint p = run.x; p < run.y; ++p) {
-    while (p >= d.x + d.y) drawn = points_drawn(d = draws[++draw]);
+    while (p >= d.x + d.y) {
+      d = draws[++draw];
+      drawn = points_drawn(draw, d);
+    }
     if (p - d.x >= drawn) continue;
     ++kept;
     vec4 world = instances[d.w].model * vec4(positions[d.z + (p - d.x)].xyz, 1.0);

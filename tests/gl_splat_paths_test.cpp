@@ -205,7 +205,7 @@ TEST_F(SplatPaths, ComputeSplatOntoADepthLayerKeepsTheNearer) {
 
   PointSplat splat({width, height});
   splat.upload(draws, scene.groups, samples);
-  splat.splat_onto(layers.name(), 1, view_projection, 1, 0.0f, glm::vec2(0.0f), 1.0f);
+  splat.splat_onto(layers.name(), 1, view_projection, 1, 0.0f, glm::vec2(0.0f));
   auto read = [&](int layer) {
     std::vector<float> bottom_up(texels);
     glGetTextureSubImage(layers.name(), 0, 0, 0, layer, width, height, 1, GL_DEPTH_COMPONENT, GL_FLOAT, bytes, bottom_up.data());

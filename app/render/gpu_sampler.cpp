@@ -38,7 +38,7 @@ constexpr GLuint draws_binding = 1, instances_binding = 2, block_draws_binding =
                  polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19, band_list_binding = 20,
                  band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24,
                  polygon_parts_binding = 25, part_masks_binding = 26, part_plants_binding = 27, band_drawn_binding = 28,
-                 part_commands_binding = 29, band_ends_binding = 34, layer_counts_binding = 31, layer_plants_binding = 32, layer_commands_binding = 33;
+                 part_commands_binding = 29, band_ends_binding = 34, map_caps_binding = 35, layer_counts_binding = 31, layer_plants_binding = 32, layer_commands_binding = 33;
 constexpr std::size_t plants_per_group = 1024, threads_per_group = 256;  // shaders/sample_count.comp
 constexpr std::size_t points_per_block = 16;                              // shaders/point_common.glsl
 constexpr std::size_t max_planes = 96;                                    // planes[96]
@@ -114,6 +114,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
       groups_program_(gl::build_program({"sample_groups.comp"})),
       draws_program_(gl::build_program({"sample_draws.comp"})),
       commands_program_(gl::build_program({"sample_commands.comp"})),
+      map_caps_program_(gl::build_program({"map_caps.comp"})),
       part_masks_program_(gl::build_program({"part_masks.comp"})),
       part_lists_program_(gl::build_program({"part_lists.comp"})),
       layer_start_program_(gl::build_program({"layer_casters.comp"}, "#define START\n")),
@@ -172,6 +173,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<glm::uvec4>(offsets_, plant_count_);
   storage<glm::uvec4>(group_sums_, group_count_);
   storage<glm::uvec4>(draws_, plant_count_);
+  storage<GLuint>(map_caps_, plant_count_);
   storage<GLuint>(block_draws_, (point_capacity_ + points_per_block - 1) / points_per_block);
   gl::store(totals_, std::vector<GpuTotals>(1, GpuTotals{}));  // stays so in a scene without plants
   storage<GLuint>(polygon_instances_, plant_count_);
@@ -228,6 +230,7 @@ void GpuSampler::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_counts_binding, layer_counts_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_plants_binding, layer_plants_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_commands_binding, layer_commands_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, map_caps_binding, map_caps_.name());
 }
 
 void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands,
@@ -440,8 +443,18 @@ GpuScene::PlantDraws GpuSampler::select_casters(int layer, const glm::mat4& map_
           tables * part_lanes};
 }
 
+void GpuSampler::cap_for_map(const glm::mat4& map_view, float texels, float points_per_texel) {
+  if (plant_count_ == 0) return;
+  bind();
+  gl::set_uniform(map_caps_program_, "map_view_projection", map_view);
+  gl::set_uniform(map_caps_program_, "map_texels", texels);
+  gl::set_uniform(map_caps_program_, "k", points_per_texel);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  run_pass(map_caps_program_, groups_for(plant_count_, threads_per_group));
+}
+
 PointDrawList GpuSampler::draw_list() const {
-  return {draws_.name(), instances_.name(), block_draws_.name(), totals_.name(), point_capacity_, plant_meshes_.name(), meshes_.name()};
+  return {draws_.name(), instances_.name(), block_draws_.name(), totals_.name(), point_capacity_, map_caps_.name()};
 }
 
 

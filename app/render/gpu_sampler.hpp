@@ -70,6 +70,11 @@ class GpuSampler {
 
   // The point draws so far, for PointSplat::use.
   PointDrawList draw_list() const;
+  // Caps each point draw for a shadow view of `texels` texels through `map_view` (its world → clip
+  // matrix), before the view's splat: of a plant, no more points than `points_per_texel` a texel
+  // of half its surface there, the first of its list (shaders/map_caps.comp); 0 (a paraboloid
+  // view): every point.
+  void cap_for_map(const glm::mat4& map_view, float texels, float points_per_texel);
   // The plants chosen as polygons in bands `first` to `end` - 1, one command per table of point
   // meshes and band.
   GpuScene::PlantDraws polygon_draws(int first, int end) const;
@@ -135,6 +140,8 @@ class GpuSampler {
   gl::Buffer band_keys_, group_bands_, band_list_, band_ranges_, band_dispatch_, band_drawn_, band_ends_;
   gl::Program histogram_program_, band_ends_program_, keys_program_, hidden_keys_program_, bin_count_program_, bands_program_, place_program_;
   gl::Program count_program_, groups_program_, draws_program_, commands_program_;
+  gl::Buffer map_caps_;
+  gl::Program map_caps_program_;
   // The frame's polygon plants by part (choose_parts).
   gl::Buffer polygon_parts_, part_masks_, part_plants_, part_commands_;
   gl::Program part_masks_program_, part_lists_program_;

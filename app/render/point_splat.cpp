@@ -15,8 +15,8 @@ struct GpuInstance {
 
 constexpr GLuint draws_binding = 1, instances_binding = 2, positions_binding = 3, normals_binding = 4,
                  colors_binding = 5, depths_binding = 6, winners_binding = 7, block_draws_binding = 8,
-                 projected_binding = 9, plant_meshes_binding = 10, meshes_binding = 11, totals_binding = 15,
-                 dispatch_binding = 16, points_drawn_binding = 30;
+                 projected_binding = 9, totals_binding = 15, dispatch_binding = 16, points_drawn_binding = 30,
+                 map_caps_binding = 35;
 constexpr std::uint64_t points_per_thread = 16;  // point_threads.glsl
 constexpr std::uint64_t points_per_block = 16;   // point_common.glsl
 // Point indices are 32-bit in the shaders: the last one marks "no point", and a thread's run of
@@ -181,15 +181,12 @@ void PointSplat::resolve(const glm::mat4& view_projection, int splat_size, float
 // The layer's depths go into the depth buffer and back, copied by GL from and to a pixel buffer:
 // on llvmpipe a fullscreen pass writing each texel's depth took 80-140 ms a 4096² layer.
 void PointSplat::splat_onto(GLuint depth_texture, int layer, const glm::mat4& view_projection, int splat_size,
-                            float depth_bias, glm::vec2 paraboloid, float points_per_texel) {
+                            float depth_bias, glm::vec2 paraboloid) {
   if (list_.most_points == 0) return;
-  const bool capped = list_.meshes != 0;
+  const bool capped = list_.map_caps != 0;
   if (capped) {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, plant_meshes_binding, list_.plant_meshes);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, meshes_binding, list_.meshes);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, map_caps_binding, list_.map_caps);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, points_drawn_binding, points_drawn_onto_.name());
-    gl::set_uniform(capped_depth_program_, "map_texels", static_cast<float>(size_.x) * static_cast<float>(size_.y));
-    gl::set_uniform(capped_depth_program_, "k", paraboloid.x == 0.0f ? points_per_texel : 0.0f);  // projective views only
   }
   const auto bytes = static_cast<GLsizei>(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y) * sizeof(float));
   overwrite_barrier();

@@ -16,9 +16,9 @@ namespace ecoview {
 struct PointDrawList {
   GLuint draws = 0, instances = 0, block_draws = 0, totals = 0;
   std::size_t most_points = 0;  // the most points the list may hold
-  // A GpuSampler's list (instances are its plants): per plant its mesh, and what it knows of each
-  // mesh (shaders/sampled_meshes.glsl), by which a shadow map thins the list. None for others.
-  GLuint plant_meshes = 0, meshes = 0;
+  // A GpuSampler's list: per draw the most points a shadow map takes of it (GpuSampler::cap_for_map).
+  // None for others.
+  GLuint map_caps = 0;
 };
 
 // Point splatting with compute shaders into a target of width x height pixels: the frame's draws
@@ -46,12 +46,11 @@ class PointSplat {
   // Pass 1 onto one layer of a depth-texture array of the target's size (a shadow map): each
   // texel keeps the nearer of its depth and the points'. For a paraboloid shadow view,
   // `view_projection` is its world → light space matrix and `paraboloid` its zoom and range
-  // (shadow::Paraboloid); zoom 0 for a projective view. A projective view drawing a GpuSampler's
-  // list, made for the camera, takes of each plant no more points than `points_per_texel` per
-  // texel of its surface (shaders/point_walk.glsl, MAP_CAP).
+  // (shadow::Paraboloid); zoom 0 for a projective view. Of a list with map caps, each draw's
+  // first points up to its cap.
   void splat_onto(GLuint depth_texture, int layer, const glm::mat4& view_projection, int splat_size, float depth_bias,
-                  glm::vec2 paraboloid, float points_per_texel);
-  // The points splat_onto drew of a GpuSampler's list since use() (read back).
+                  glm::vec2 paraboloid);
+  // The points splat_onto drew of a list with map caps since use() (read back).
   std::size_t points_drawn_onto() const;
   // Per pixel, the points on the surface `surface_depth` shows there (linear view depth, rows from
   // the top, negative where none), each counted once where its centre lands, rows from the top: for

@@ -290,7 +290,7 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
     if (!settings_.points) continue;
     shadow_points_->upload(selections[layer].points, tables_, samples_);
     shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
-                               settings_.shadow_splat_size, shadow_point_bias, v.paraboloid_parameters(), settings_.k);
+                               settings_.shadow_splat_size, shadow_point_bias, v.paraboloid_parameters());
   }
   shadow_timer_.stop();
   pending_.shadow_timer = true;
@@ -528,8 +528,8 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
   // uniform, so one splat size fits. One texel: on the ecosystem's default view with PSM 2048²,
   // err 5.67 % against 6.00 % with 2 × 2 and 6.51 % with 3 × 3, whose shadows grow. Where a map's
   // texels are coarser than the camera's pixels (the uniform map near the eye), each plant is
-  // thinned to k points a texel, as a sampling for the map would make it (uniform err 13.40 %
-  // against 12.52 % thinned; docs/benchmarks.md).
+  // thinned to k points a texel (GpuSampler::cap_for_map), as a sampling for the map would make it
+  // (uniform err 13.40 % against 12.52 % thinned; docs/benchmarks.md).
   if (!shadow_points_) shadow_points_ = std::make_unique<PointSplat>(glm::ivec2(settings_.shadow_size));
   shadow_points_->use(gpu_sampler_->draw_list(), samples_);
   shadow_timer_.start();
@@ -545,8 +545,10 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
                                                   : every_band;
     earlier.push_back(v.view_projection());
     shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer), &plants);
+    gpu_sampler_->cap_for_map(v.view_projection(), static_cast<float>(settings_.shadow_size) * static_cast<float>(settings_.shadow_size),
+                              v.paraboloid ? 0.0f : settings_.k);
     shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
-                               settings_.shadow_splat_size, shadow_point_bias, v.paraboloid_parameters(), settings_.k);
+                               settings_.shadow_splat_size, shadow_point_bias, v.paraboloid_parameters());
   }
   shadow_timer_.stop();
 
