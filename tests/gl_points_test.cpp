@@ -168,9 +168,9 @@ TEST(PointDensity, PointsPerPixelOfTheSeenSurfaceDoNotFollowDistance) {
   EXPECT_NEAR(f.pts_per_px_far / f.pts_per_px_near, 1.0, 0.25);
 }
 
-// Caster culling (pointgen::ReceiverMask) skips casters by where the last frame saw surfaces: the
-// shadows the camera sees stay as they were, with fewer shadow points. A stand of trees and
-// bushes seen from its edge, where most of it is hidden behind its first rows.
+// The CPU sampler's caster culling (pointgen::ReceiverMask) skips casters by where the last frame
+// saw surfaces: the shadows the camera sees stay as they were, with fewer shadow points. A stand
+// of trees and bushes seen from its edge, where most of it is hidden behind its first rows.
 TEST(CasterCulling, KeepsTheShadowsTheCameraSees) {
   const std::unique_ptr<GlContext> context = create_headless_context("egl");
   const Scene scene = load_scene({"stand.json", R"({
@@ -185,6 +185,7 @@ TEST(CasterCulling, KeepsTheShadowsTheCameraSees) {
     settings.height = 270;
     settings.shadow_size = 1024;
     settings.method = method;
+    settings.gpu_sampler = false;  // the CPU sampler's culling (the GPU sampler's: gl_sampler_test.cpp)
     Renderer culled(scene, settings);
     settings.cull_casters = false;
     Renderer every_caster(scene, settings);

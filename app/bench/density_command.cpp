@@ -97,6 +97,9 @@ class DensityBench {
     RenderSettings settings = base_;
     settings.method = ShadowMethod::none;  // the sampler's quality alone; shadows are bench's
     settings.point_meshes_only = true;
+    // The measures (the plants drawn as polygons, what the rest hides) are the CPU sampler's
+    // choice, so the points measured against them are its points too.
+    settings.gpu_sampler = false;
     for (double k : plan_.ks) {
       settings.k = static_cast<float>(k);
       DensityRenders renders;

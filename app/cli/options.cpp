@@ -69,10 +69,10 @@ void add_render_options(CLI::App& command, RenderOptions& o) {
       ->capture_default_str();
   command.add_option("--geometry", o.geometry, "points: far plants, people and animals as view-adaptive point "
                                                "splats; polygons: everything as polygons (plants culled to each view as the points are)")->capture_default_str();
-  command.add_option("--sampler", o.sampler, "Where the frame's points and polygons are chosen: cpu (the view sampler, "
-                                             "with occlusion by coverage, again for each shadow view) or gpu (compute passes band by band of "
-                                             "distance, occlusion by a depth pyramid; the shadow map draws the frame's plants and the casters "
-                                             "out of view)")->capture_default_str();
+  command.add_option("--sampler", o.sampler, "Where the frame's points and polygons are chosen: gpu (compute passes band by "
+                                             "band of distance, occlusion by a depth pyramid; the shadow map draws the frame's plants and the "
+                                             "casters out of view; the host only sets uniforms and dispatches) or cpu (the view sampler, with "
+                                             "occlusion by coverage, again for each shadow view: the GPU sampler's oracle)")->capture_default_str();
   command.add_option("--k", o.k, "Point density: points per pixel of projected surface")->capture_default_str();
   command.add_option("--splat", o.splat, "Splat size in pixels (per side)")->capture_default_str();
 }

@@ -40,7 +40,7 @@ struct RenderOptions {
   int shadow_size = 2048;
   std::string method = "uniform";
   std::string geometry = "points";
-  std::string sampler = "cpu";
+  std::string sampler = "gpu";
   double k = RenderSettings{}.k;
   int splat = RenderSettings{}.splat_size;
 };

@@ -46,11 +46,12 @@ struct RenderSettings {
   // (their reference), or not at all (what the rest hides); those it makes polygons stay.
   enum class Measure { off, their_polygons, without_them } measure = Measure::off;
   bool aliasing = false;  // fill the frame's aliasing target (the `aliasing` AOV, alias_p95)
-  // Skip point casters whose shadows fall on nothing the last frame showed (pointgen::ReceiverMask).
+  // The CPU sampler skips point casters whose shadows fall on nothing the last frame showed
+  // (pointgen::ReceiverMask); the GPU sampler always selects casters by the frame's receivers.
   bool cull_casters = true;
-  // The frame's points and polygons chosen on the GPU (GpuSampler), not by the CPU's view sampler;
-  // not for the density figures' measures.
-  bool gpu_sampler = false;
+  // The frame's points and polygons chosen on the GPU (GpuSampler); off: by the CPU's view sampler,
+  // the GPU sampler's test oracle, which the density figures' measures also use.
+  bool gpu_sampler = true;
 };
 
 // What a frame drew, and how long its parts took.
