@@ -37,17 +37,10 @@ constexpr GLuint draws_binding = 1, instances_binding = 2, block_draws_binding =
                  meshes_binding = 11, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
                  polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19, band_list_binding = 20,
                  band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24,
-                 polygon_parts_binding = 25, part_masks_binding = 26, part_plants_binding = 27, band_drawn_binding = 28,
-                 part_commands_binding = 29, band_ends_binding = 34, map_caps_binding = 35, layer_counts_binding = 31, layer_plants_binding = 32, layer_commands_binding = 33;
+                 polygon_parts_binding = 25, band_drawn_binding = 28, band_ends_binding = 34, map_caps_binding = 35;
 constexpr std::size_t plants_per_group = 1024, threads_per_group = 256;  // shaders/sample_count.comp
 constexpr std::size_t points_per_block = 16;                              // shaders/point_common.glsl
 constexpr std::size_t max_planes = 96;                                    // planes[96]
-// A table's draws of a band's polygon plants in the frame: one per polygon part, one of the plants
-// drawn whole (shaders/part_lists.comp).
-constexpr std::size_t part_lanes = 65;
-// Room in the frame's lists of polygon plants by part: a plant takes a place per part it draws
-// (at most 64), and a frame's polygon plants are the few near ones not hidden.
-constexpr std::size_t most_part_plants = std::size_t{1} << 22;
 
 // Bands: the first ends this far from the eye (metres), each next one this many times as far.
 // Finer bands hide more of what lies behind a near one, at a pyramid and a few passes each.
@@ -114,12 +107,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
       groups_program_(gl::build_program({"sample_groups.comp"})),
       draws_program_(gl::build_program({"sample_draws.comp"})),
       commands_program_(gl::build_program({"sample_commands.comp"})),
-      map_caps_program_(gl::build_program({"map_caps.comp"})),
-      part_masks_program_(gl::build_program({"part_masks.comp"})),
-      part_lists_program_(gl::build_program({"part_lists.comp"})),
-      layer_start_program_(gl::build_program({"layer_casters.comp"}, "#define START\n")),
-      layer_plants_program_(gl::build_program({"layer_casters.comp"})),
-      layer_place_program_(gl::build_program({"layer_casters.comp"}, "#define PLACE\n")) {
+      map_caps_program_(gl::build_program({"map_caps.comp"})) {
   const std::vector<pointgen::SampledMesh>& meshes = samples.meshes();
   std::vector<GpuInstance> instances;
   std::vector<glm::uvec2> plant_meshes;
@@ -178,10 +166,6 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   gl::store(totals_, std::vector<GpuTotals>(1, GpuTotals{}));  // stays so in a scene without plants
   storage<GLuint>(polygon_instances_, plant_count_);
   storage<GLuint>(commands_, command_uints * max_bands * std::max<std::size_t>(table_count_, 1));
-  storage<glm::uvec2>(part_masks_, plant_count_);
-  part_plant_capacity_ = std::min(most_part_plants, 64 * plant_count_);
-  storage<GLuint>(part_plants_, part_plant_capacity_);
-  storage<GLuint>(part_commands_, command_uints * part_lanes * max_bands * std::max<std::size_t>(table_count_, 1));
   storage<GLuint>(band_keys_, plant_count_);
   storage<GLuint>(group_bands_, group_count_ * max_bands);
   storage<GLuint>(band_list_, 2 * plant_count_);  // the frame's bands, then the band of those hidden in it
@@ -189,9 +173,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   gl::store(band_ends_, std::vector<GLuint>(max_bands + 4 * static_cast<std::size_t>(most_distance_bands), 0u));  // ends, quarters' counts
   storage<glm::uvec4>(band_dispatch_, 3 * max_bands);
   gl::store(band_drawn_, std::vector<GLuint>(max_bands, 1u));  // as if each drew: a pyramid built over them stays right
-  storage<GLuint>(layer_counts_, 4 + 2 * part_lanes * table_count_);  // a dispatch, then the counts
-  storage<GLuint>(layer_plants_, part_plant_capacity_);
-  storage<GLuint>(layer_commands_, command_uints * part_lanes * max_layers * std::max<std::size_t>(table_count_, 1));
+  part_lists_ = std::make_unique<PolygonPartLists>(plant_count_, table_count_, max_bands);
 }
 
 void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed) {
@@ -224,12 +206,7 @@ void GpuSampler::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_drawn_binding, band_drawn_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_ends_binding, band_ends_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, polygon_parts_binding, polygon_parts_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, part_masks_binding, part_masks_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, part_plants_binding, part_plants_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, part_commands_binding, part_commands_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_counts_binding, layer_counts_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_plants_binding, layer_plants_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layer_commands_binding, layer_commands_.name());
+  part_lists_->bind();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, map_caps_binding, map_caps_.name());
 }
 
@@ -239,7 +216,6 @@ void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm:
   if (bands.empty() || static_cast<int>(bands.size()) > most_distance_bands) throw RuntimeFailure("the GPU sampler takes 1 to 24 bands a frame");
   distance_bands_ = static_cast<int>(bands.size());
   bands_used_ = distance_bands_ + (casters.empty() ? 0 : 2);
-  layers_selected_ = 0;
   casters_band_ = casters.empty() ? std::nullopt : std::optional<int>(distance_bands_);
   hidden_band_ = casters.empty() ? std::nullopt : std::optional<int>(distance_bands_ + 1);
   // The lists are reset by the sort's passes, not by buffer clears: on llvmpipe a clear of the
@@ -267,8 +243,7 @@ void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm:
   }
   gl::set_uniform(band_ends_program_, "dense_plants", dense_band_plants);
   gl::set_uniform(count_program_, "view_projection", view.views.front());
-  gl::set_uniform(part_masks_program_, "view_projection", view.views.front());
-  gl::set_uniform(part_masks_program_, "pixels", glm::vec2(view.pixels));
+  part_lists_->begin(view.views.front(), glm::vec2(view.pixels));
   gl::set_uniform(count_program_, "eye", view.eye);
   gl::set_uniform(count_program_, "forward", view.forward);
   gl::set_uniform(count_program_, "edge_cos", view.edge_cos);
@@ -362,29 +337,7 @@ void GpuSampler::add_band(int band, const DepthPyramid* occluders) {
   glDispatchCompute(groups_for(table_count_, 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT |
                   GL_BUFFER_UPDATE_BARRIER_BIT);
-  if (in_frame(band)) choose_parts(band, occluders);
-}
-
-// The frame's draws of the band's polygon plants by parts (shaders/part_masks.comp, part_lists.comp).
-void GpuSampler::choose_parts(int band, const DepthPyramid* occluders) {
-  const auto number = static_cast<unsigned>(band + 1);
-  gl::set_uniform(part_masks_program_, "band_number", number);
-  gl::set_uniform(part_masks_program_, "occlusion", occluders ? 1 : 0);
-  if (occluders) occluders->bind_for(part_masks_program_);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, band_dispatch_.name());
-  glUseProgram(part_masks_program_.name());
-  glDispatchComputeIndirect(static_cast<GLintptr>((3 * band + 1) * sizeof(glm::uvec4)));  // the draws pass's groups
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-
-  const std::size_t tables = table_count_;
-  gl::set_uniform(part_lists_program_, "band_number", number);
-  gl::set_uniform(part_lists_program_, "table_count", static_cast<unsigned>(tables));
-  gl::set_uniform(part_lists_program_, "part_plant_capacity", static_cast<unsigned>(part_plant_capacity_));
-  gl::set_uniform(part_lists_program_, "first_command", static_cast<unsigned>(static_cast<std::size_t>(band) * tables * part_lanes));
-  glUseProgram(part_lists_program_.name());
-  glDispatchComputeIndirect(static_cast<GLintptr>((3 * band + 2) * sizeof(glm::uvec4)));  // a group per lane, or none
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+  if (in_frame(band)) part_lists_->choose(band, occluders, band_dispatch_.name());
 }
 
 bool GpuSampler::in_frame(int band) const { return !casters_band_ || band < *casters_band_; }
@@ -401,46 +354,14 @@ GpuScene::PlantDraws GpuSampler::polygon_draws(int first, int end) const {
 }
 
 GpuScene::PlantDraws GpuSampler::frame_polygon_draws(int band) const {
-  const std::size_t commands = table_count_ * part_lanes;
-  return {instances_.name(), part_plants_.name(), part_commands_.name(), static_cast<std::size_t>(band) * commands,
-          in_frame(band) ? commands : 0};
+  if (!in_frame(band)) return polygon_draws(0, 0);
+  return part_lists_->frame_draws(band, instances_.name());
 }
 
 GpuScene::PlantDraws GpuSampler::select_casters(int layer, const glm::mat4& map_view, int map_size, const DepthPyramid& receivers) {
-  if (layer < 0 || layer >= max_layers) throw RuntimeFailure("the GPU sampler selects casters for at most 8 shadow views");
-  const std::size_t tables = table_count_;
-  if (plant_count_ == 0 || tables == 0) return polygon_draws(0, 0);
-  layers_selected_ = std::max(layers_selected_, layer + 1);
+  if (plant_count_ == 0 || table_count_ == 0) return polygon_draws(0, 0);
   bind();
-  const auto table_count = static_cast<unsigned>(tables);
-  for (const gl::Program* program : {&layer_start_program_, &layer_plants_program_, &layer_place_program_}) {
-    gl::set_uniform(*program, "table_count", table_count);
-  }
-  gl::set_uniform(layer_place_program_, "first_command", static_cast<unsigned>(static_cast<std::size_t>(layer) * tables * part_lanes));
-  gl::set_uniform(layer_place_program_, "capacity", static_cast<unsigned>(part_plant_capacity_));
-  gl::set_uniform(layer_plants_program_, "pixels", glm::vec2(static_cast<float>(map_size)));
-  const GLuint p = layer_plants_program_.name();
-  gl::set_uniform(layer_plants_program_, "map_view_projection", map_view);
-  receivers.bind_for(layer_plants_program_);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  glUseProgram(layer_start_program_.name());
-  glDispatchCompute(1, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, layer_counts_.name());
-  glUseProgram(p);
-  gl::set_uniform(layer_plants_program_, "writing", 0);
-  glDispatchComputeIndirect(0);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  glUseProgram(layer_place_program_.name());
-  glDispatchCompute(1, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  glUseProgram(p);
-  gl::set_uniform(layer_plants_program_, "writing", 1);
-  glDispatchComputeIndirect(0);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
-  return {instances_.name(), layer_plants_.name(), layer_commands_.name(), static_cast<std::size_t>(layer) * tables * part_lanes,
-          tables * part_lanes};
+  return part_lists_->select(layer, map_view, map_size, receivers, instances_.name());
 }
 
 void GpuSampler::cap_for_map(const glm::mat4& map_view, float texels, float points_per_texel) {
@@ -477,28 +398,13 @@ std::vector<glm::uvec4> GpuSampler::read_draws() const {
   return draws;
 }
 
-// The triangles that `count` indirect draws from `first` in `commands` draw (read back).
-std::size_t GpuSampler::triangles_drawn(const gl::Buffer& commands, std::size_t first, std::size_t count) {
-  std::vector<GLuint> read(command_uints * count);
-  if (read.empty()) return 0;
-  glGetNamedBufferSubData(commands.name(), static_cast<GLintptr>(first * GpuScene::command_bytes),
-                          static_cast<GLsizeiptr>(read.size() * sizeof(GLuint)), read.data());
-  std::size_t triangles = 0;
-  for (std::size_t c = 0; c < read.size(); c += command_uints) triangles += static_cast<std::size_t>(read[c] / 3) * read[c + 1];
-  return triangles;
-}
-
 GpuSampler::Totals GpuSampler::read_totals() const {
   GpuTotals totals{};
   glGetNamedBufferSubData(totals_.name(), 0, sizeof totals, &totals);
-  const std::size_t tables = table_count_;
-  const auto frame_bands = static_cast<std::size_t>(casters_band_.value_or(bands_used_));
   Totals out{totals.total_points, totals.polygon_count, 0, totals.frame_points, 0, {}};
-  out.triangles = triangles_drawn(commands_, 0, tables * static_cast<std::size_t>(bands_used_));
-  out.frame_triangles = triangles_drawn(part_commands_, 0, tables * part_lanes * frame_bands);
-  for (int layer = 0; layer < layers_selected_; ++layer) {
-    out.layer_triangles.push_back(triangles_drawn(layer_commands_, static_cast<std::size_t>(layer) * tables * part_lanes, tables * part_lanes));
-  }
+  out.triangles = GpuScene::triangles_drawn(commands_.name(), 0, table_count_ * static_cast<std::size_t>(bands_used_));
+  out.frame_triangles = part_lists_->frame_triangles(casters_band_.value_or(bands_used_));
+  out.layer_triangles = part_lists_->layer_triangles();
   return out;
 }
 

@@ -4,9 +4,11 @@
 #include "app/render/gpu_scene.hpp"
 #include "app/render/point_samples.hpp"
 #include "app/render/point_splat.hpp"
+#include "app/render/polygon_part_lists.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
 #include "shadow/plane.hpp"
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -89,7 +91,7 @@ class GpuSampler {
   // a command per polygon part and one for those drawn whole). Valid until the next call; the
   // lists are made on the GPU.
   GpuScene::PlantDraws select_casters(int layer, const glm::mat4& map_view, int map_size, const DepthPyramid& receivers);
-  static constexpr int max_layers = 8;
+  static constexpr int max_layers = PolygonPartLists::max_layers;
 
   // A GL buffer of a uint per band, written by add_band: zero where the band drew nothing.
   GLuint band_drawn() const { return band_drawn_.name(); }
@@ -122,15 +124,11 @@ class GpuSampler {
   void sort(const gl::Program& keys, int band_count, int first_band);
   void cut_dense_bands();
   bool in_frame(int band) const;  // a band the frame shows: not the casters' nor the hidden plants'
-  void choose_parts(int band, const DepthPyramid* occluders);
-  static std::size_t triangles_drawn(const gl::Buffer& commands, std::size_t first, std::size_t count);
   std::size_t plant_count_ = 0;
   std::size_t group_count_ = 0;
   std::size_t point_capacity_ = 0;  // points the draw list has room for
-  std::size_t part_plant_capacity_ = 0;  // places in the frame's lists of polygon plants by part
   int bands_used_ = 0;
   int distance_bands_ = 0;
-  int layers_selected_ = 0;  // select_casters' this frame: layers 0 to this - 1
   std::optional<int> casters_band_, hidden_band_;
   std::vector<std::uint32_t> first_plant_;
   std::vector<bool> holds_plants_;  // per table
@@ -142,12 +140,8 @@ class GpuSampler {
   gl::Program count_program_, groups_program_, draws_program_, commands_program_;
   gl::Buffer map_caps_;
   gl::Program map_caps_program_;
-  // The frame's polygon plants by part (choose_parts).
-  gl::Buffer polygon_parts_, part_masks_, part_plants_, part_commands_;
-  gl::Program part_masks_program_, part_lists_program_;
-  // select_casters' (shaders/layer_casters.comp).
-  gl::Buffer layer_counts_, layer_plants_, layer_commands_;
-  gl::Program layer_start_program_, layer_plants_program_, layer_place_program_;
+  gl::Buffer polygon_parts_;  // every point mesh's parts (shaders/polygon_parts.glsl)
+  std::unique_ptr<PolygonPartLists> part_lists_;  // the frame's and the maps' polygon plants by part
 };
 
 }  // namespace ecoview

@@ -22,6 +22,8 @@ class GpuScene {
     std::size_t first_command = 0, command_count = 0;
   };
   static constexpr std::size_t command_bytes = 5 * sizeof(GLuint);  // DrawElementsIndirectCommand
+  // The triangles that `count` indirect draws from `first` in buffer `commands` draw (read back).
+  static std::size_t triangles_drawn(GLuint commands, std::size_t first, std::size_t count);
 
   explicit GpuScene(const Scene& scene);
   enum class Parts { chosen, all };
