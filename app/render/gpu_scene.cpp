@@ -64,8 +64,10 @@ GpuScene::GpuScene(const Scene& scene) {
     for (const pointgen::PolygonPart& part : split.parts) m.parts.push_back({part.first_index, static_cast<GLsizei>(part.index_count)});
   }
   for (const pointgen::InstanceTable& group : scene.groups) {
-    const std::vector<Instance> instances = instances_of(group);
     const Mesh& mesh = meshes_[group.mesh];
+    // A point mesh's instances come with each pass, those it draws as polygons (update): none at
+    // load (at 10^6 plants they would take 128 MB here and as much again on the way).
+    const std::vector<Instance> instances = mesh.point_mesh ? std::vector<Instance>{} : instances_of(group);
     Group& g = groups_.emplace_back();
     gl::store(g.instances, instances, GL_DYNAMIC_STORAGE_BIT);
     g.mesh = group.mesh;
