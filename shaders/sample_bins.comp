@@ -4,10 +4,11 @@
 // frusta counted by quarters of the ladder's bands (band_ends.comp cuts the dense ones there).
 // With KEYS each plant culled against the view's frusta and given its band by its distance from
 // the eye; a plant in none of them but in the body of the casters (what may shadow the view) goes
-// to the last band, the casters'; with
-// HIDDEN_KEYS, once the frame's bands are counted, the plants the nearest of them left out as
-// hidden go to a band of their own. Then each work group of plants counts (COUNT) or places its plants band by band,
-// one thread walking the group's plants in order. The keys pass also clears the plants' counts.
+// to the last band, the casters'; with HIDDEN_KEYS, once the frame's bands are counted, the
+// plants the nearest of them left out as hidden, and the polygon plants the map takes as points,
+// go to a band of their own. Then each work group of plants counts (COUNT) or places its plants
+// band by band, one thread walking the group's plants in order. The keys pass also clears the
+// plants' counts.
 #include "sample_common.glsl"
 
 layout(std430, binding = 22) buffer BandKeys { uint band_keys[]; };  // per plant: its band from 0, or no_band
@@ -26,12 +27,31 @@ layout(std430, binding = 34) buffer BandEnds {
 #ifdef HIDDEN_KEYS
 layout(local_size_x = 256) in;
 uniform float hidden_reach;  // metres: the bands that end within it
-// The plants in view that those bands left out as hidden (sample_count.comp), into one band.
+// The map's view, its texels, k and a point's cost in triangles: a plant the frame draws as
+// polygons that the map asks fewer points of than would be cheaper as polygons goes into the
+// band too, as points (a coarse texel is shadowed only where its centre meets a polygon's leaf,
+// but wholly by a point's splat).
+uniform mat4 map_view_projection;
+uniform float map_texels;
+uniform float k;
+uniform float points_per_triangle;
+
+bool map_takes_points(uint i) {
+  mat4 model = instances[i].model;
+  SampledMesh mesh = meshes[plant_meshes[i].x];
+  vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
+  float scale = model_scale(model);
+  float asked = points_a_map_asks(map_view_projection, map_texels, k, center, mesh.half_size_area.w * scale * scale);
+  return asked < band_low * points_per_triangle * float(mesh.sizes.x) && asked <= float(mesh.sizes.y);
+}
+// The plants in view that those bands left out as hidden (sample_count.comp) and the polygon
+// plants the map takes as points, into one band.
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= plant_count) return;
   uvec4 c = counts[i];
-  band_keys[i] = c.w == hidden_in_frame && band_ends[c.y - 1u] <= hidden_reach ? 0u : no_band;
+  bool hidden = c.w == hidden_in_frame && band_ends[c.y - 1u] <= hidden_reach;
+  band_keys[i] = hidden || (c.z != 0u && c.x == 0u && map_takes_points(i)) ? 0u : no_band;
 }
 #elif defined(KEYS) || defined(HISTOGRAM)
 layout(local_size_x = 256) in;

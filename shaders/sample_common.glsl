@@ -50,6 +50,9 @@ const uint hidden_in_frame = 1u;  // counts[].w of a plant in view that its band
 // The band's first place in the band list, and its plants.
 uvec2 this_band() { return band_ranges[band_number - 1u]; }
 
+// The band around break-even of points against polygons (pointgen/sampling/view_sampler.cpp).
+const float band_low = 0.8, band_high = 1.25;
+
 // The uniform scale of a plant's model matrix.
 float model_scale(mat4 model) { return pow(abs(determinant(mat3(model))), 1.0 / 3.0); }
 

@@ -26,8 +26,6 @@ uniform float pixels_per_radian;
 uniform float k;
 uniform float points_per_triangle;
 
-// The band around break-even (pointgen/sampling/view_sampler.cpp).
-const float band_low = 0.8, band_high = 1.25;
 
 float facing(SampledMesh mesh, vec3 v) {
   mat3 moments = mat3(mesh.moments[0].xyz, mesh.moments[1].xyz, mesh.moments[2].xyz);

@@ -482,6 +482,32 @@ TEST_F(GpuSampling, ACoarseMapTakesOfEachPlantKPointsATexel) {
   EXPECT_LE(static_cast<double>(stats.shadow_points), most);
 }
 
+// A plant the frame draws as polygons goes into a map as points where that map asks fewer points
+// of it than would be cheaper as polygons (a coarse texel is shadowed only where its centre meets
+// a leaf, but wholly by a splat): a near beech in a 128² uniform map, its shadow still cast; in a
+// 4096² map it stays polygons.
+TEST_F(GpuSampling, ACoarseMapDrawsAsPointsAPlantTheFrameDrawsAsPolygons) {
+  const std::string scene = R"({"camera": {"position": [0, 4, 0], "target": [0, 2, -20], "fov_y_deg": 50, "near": 0.5, "far": 200},
+      "lights": [{"type": "directional", "direction": [0.4, -1, -0.3]}],
+      "objects": [{"type": "plane", "center": [0, 0, -20], "size": [100, 100]},
+                  {"type": "plant", "species": "beech", "positions": [[0, 0, -14]]}]})";
+  settings.width = 320;
+  settings.height = 180;
+  settings.method = ShadowMethod::uniform;
+  settings.gpu_sampler = true;
+  settings.shadow_size = 4096;
+  const Shadowed fine = render_shadows(scene);
+  settings.shadow_size = 128;
+  const Shadowed coarse = render_shadows(scene);
+  const std::size_t ground = 2;
+  ASSERT_GT(coarse.stats.triangles, ground + 500) << "the frame draws the beech as polygons";
+  EXPECT_EQ(coarse.stats.triangles, fine.stats.triangles);
+  EXPECT_GT(fine.stats.shadow_triangles, ground + 500) << "the fine map draws it as polygons";
+  EXPECT_EQ(coarse.stats.shadow_triangles, ground) << "the coarse map does not";
+  EXPECT_GT(coarse.stats.shadow_points, 0u) << "but as points";
+  EXPECT_GT(coarse.shadowed, 300u) << "its shadow should lie on the ground";
+}
+
 TEST_F(GpuSampling, AFrameWithoutPlantsDrawsNone) {
   const Scene bare = load_scene({"bare.json", R"({"camera": {"position": [0, 3, 8], "target": [0, 0, 0]},
       "lights": [{"type": "directional", "direction": [0.3, -1, 0.2]}],

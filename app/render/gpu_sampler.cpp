@@ -251,6 +251,8 @@ void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm:
   gl::set_uniform(count_program_, "k", view.density.k);
   gl::set_uniform(count_program_, "points_per_triangle", view.points_per_triangle);
   gl::set_uniform(hidden_keys_program_, "hidden_reach", hidden_casters_reach);
+  gl::set_uniform(hidden_keys_program_, "k", view.density.k);
+  gl::set_uniform(hidden_keys_program_, "points_per_triangle", view.points_per_triangle);
   cut_dense_bands();
   sort(keys_program_, distance_bands_ + (casters.empty() ? 0 : 1), 0);
 }
@@ -288,6 +290,8 @@ void GpuSampler::sort(const gl::Program& keys, int band_count, int first_band) {
 
 void GpuSampler::add_casters(const glm::mat4& map_view, float texels, const DepthPyramid& receivers) {
   if (!casters_band_) return;
+  gl::set_uniform(hidden_keys_program_, "map_view_projection", map_view);
+  gl::set_uniform(hidden_keys_program_, "map_texels", texels);
   gl::set_uniform(count_program_, "cap_to_map", 1);
   gl::set_uniform(count_program_, "receivers_only", 1);
   gl::set_uniform(count_program_, "map_view_projection", map_view);

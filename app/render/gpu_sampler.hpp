@@ -60,10 +60,12 @@ class GpuSampler {
   // Adds the plants of a band (numbered from 0, nearest first); hidden ones are left out where
   // `occluders` is given (built over the first view's image).
   void add_band(int band, const DepthPyramid* occluders);
-  // The casters' band, then the plants within a few tens of metres that the frame's bands left out
-  // as hidden (their shadows may fall on what the frame shows), each counted for a shadow map of
-  // `texels` texels through `map_view` (its first view's world → clip matrix): only plants whose
-  // boxes cover a receiver farther from the light in `receivers` (a mask over that view's image,
+  // The casters' band, then a band of the plants within a few tens of metres that the frame's
+  // bands left out as hidden (their shadows may fall on what the frame shows) and of those the
+  // frame draws as polygons that the map asks too few points of to be polygons there (the maps
+  // then draw them as points alone), each counted for a shadow map of `texels` texels through
+  // `map_view` (its first view's world → clip matrix): only plants whose boxes cover a receiver
+  // farther from the light in `receivers` (a mask over that view's image,
   // DepthPyramid::build_receivers), none with more points than k per texel it covers there. Their
   // points are for the maps alone.
   void add_casters(const glm::mat4& map_view, float texels, const DepthPyramid& receivers);
