@@ -35,6 +35,7 @@ uniform mat4 map_view_projection;
 uniform float map_texels;
 uniform float k;
 uniform float points_per_triangle;
+uniform bool projective_map;  // a paraboloid map draws every polygon plant: none are moved to points
 
 bool map_takes_points(uint i) {
   mat4 model = instances[i].model;
@@ -51,7 +52,7 @@ void main() {
   if (i >= plant_count) return;
   uvec4 c = counts[i];
   bool hidden = c.w == hidden_in_frame && band_ends[c.y - 1u] <= hidden_reach;
-  band_keys[i] = hidden || (c.z != 0u && c.x == 0u && map_takes_points(i)) ? 0u : no_band;
+  band_keys[i] = hidden || (projective_map && c.z != 0u && c.x == 0u && map_takes_points(i)) ? 0u : no_band;
 }
 #elif defined(KEYS) || defined(HISTOGRAM)
 layout(local_size_x = 256) in;

@@ -380,7 +380,8 @@ void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<sha
     const glm::mat4 map_view = culling_frusta(setup_.views.front()).front();
     occluders_->build_if(gpu_sampler_->band_drawn(), static_cast<std::size_t>(bands - 1), frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
     receivers_->build_receivers(*occluders_, view_projection_, map_view);
-    gpu_sampler_->add_casters(map_view, static_cast<float>(settings_.shadow_size) * static_cast<float>(settings_.shadow_size), *receivers_);
+    gpu_sampler_->add_casters(map_view, static_cast<float>(settings_.shadow_size) * static_cast<float>(settings_.shadow_size), *receivers_,
+                              !setup_.views.front().paraboloid);
   }
 }
 
