@@ -406,7 +406,8 @@ std::vector<glm::uvec4> GpuSampler::read_draws() const {
 GpuSampler::Totals GpuSampler::read_totals() const {
   GpuTotals totals{};
   glGetNamedBufferSubData(totals_.name(), 0, sizeof totals, &totals);
-  Totals out{totals.total_points, totals.polygon_count, 0, totals.frame_points, 0, {}};
+  Totals out;
+  out.frame_points = totals.frame_points;
   out.triangles = GpuScene::triangles_drawn(commands_.name(), 0, table_count_ * static_cast<std::size_t>(bands_used_));
   out.frame_triangles = part_lists_->frame_triangles(casters_band_.value_or(bands_used_));
   out.layer_triangles = part_lists_->layer_triangles();

@@ -105,9 +105,9 @@ class GpuSampler {
 
   // Read back, for tests and figures: per plant its points, whether drawn as polygons and its band
   // this frame (none: not in view), the draws (first point, count, first sample, plant), and the
-  // totals: points, polygon plants and their triangles of every band, the points and triangles of
-  // the bands the frame shows (all but the casters'), and the triangles of the plants selected for
-  // each shadow view this frame (select_casters; none where its views drew them all).
+  // totals: the polygon plants' triangles of every band, the points and triangles of the bands the
+  // frame shows (all but the casters'), and the triangles of the plants selected for each shadow
+  // view this frame (select_casters; none where its views drew them all).
   struct Count {
     std::uint32_t points = 0;
     bool polygons = false;
@@ -116,8 +116,7 @@ class GpuSampler {
   std::vector<Count> read_counts() const;
   std::vector<glm::uvec4> read_draws() const;
   struct Totals {
-    std::size_t points = 0, polygon_plants = 0, triangles = 0;
-    std::size_t frame_points = 0, frame_triangles = 0;
+    std::size_t triangles = 0, frame_points = 0, frame_triangles = 0;
     std::vector<std::size_t> layer_triangles;
   };
   Totals read_totals() const;

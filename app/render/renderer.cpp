@@ -380,8 +380,7 @@ void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<sha
     const glm::mat4 map_view = culling_frusta(setup_.views.front()).front();
     occluders_->build_if(gpu_sampler_->band_drawn(), static_cast<std::size_t>(bands - 1), frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
     receivers_->build_receivers(*occluders_, view_projection_, map_view);
-    gpu_sampler_->add_casters(map_view, static_cast<float>(settings_.shadow_size) * static_cast<float>(settings_.shadow_size), *receivers_,
-                              !setup_.views.front().paraboloid);
+    gpu_sampler_->add_casters(map_view, shadow_texels(), *receivers_, !setup_.views.front().paraboloid);
   }
 }
 
@@ -546,8 +545,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
                                                   : every_band;
     earlier.push_back(v.view_projection());
     shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer), &plants);
-    gpu_sampler_->cap_for_map(v.view_projection(), static_cast<float>(settings_.shadow_size) * static_cast<float>(settings_.shadow_size),
-                              v.paraboloid ? 0.0f : settings_.k);
+    gpu_sampler_->cap_for_map(v.view_projection(), shadow_texels(), v.paraboloid ? 0.0f : settings_.k);
     shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
                                settings_.shadow_splat_size, shadow_point_bias, v.paraboloid_parameters());
   }

@@ -140,6 +140,8 @@ class Renderer {
   pointgen::SampledFrame draw_sampled_on_gpu(const shadow::Camera& camera, const shadow::Light& light);
   // The triangles of the meshes never drawn as points (ground, buildings), all of them.
   std::size_t fixed_triangles() const;
+  // The texels of one shadow-map layer.
+  float shadow_texels() const { return static_cast<float>(settings_.shadow_size) * static_cast<float>(settings_.shadow_size); }
   // The GPU sampler's polygon plants that cascade `layer` draws (map_view: its world → clip
   // matrix; earlier: the cascades' before it).
   GpuScene::PlantDraws cascade_casters(int layer, const glm::mat4& map_view, const std::vector<glm::mat4>& earlier);
