@@ -102,22 +102,34 @@ TEST(Terrain, HeightFollowsTheDrawnTriangles) {
 
 TEST(PoissonDisk, KeepsItsMinimumDistanceAndLeavesNoGaps) {
   Random rng(11);
-  const float r = 1.5f;
-  const std::vector<glm::vec2> points = poisson_disk({0.0f, 0.0f}, {40.0f, 30.0f}, r, rng);
-  ASSERT_GT(points.size(), 200u);
+  const float r = 0.8f;  // 75 × 57 cells of r/√2: tiles of four phases and their edges
+  const glm::vec2 size(40.0f, 30.0f);
+  const std::vector<glm::vec2> points = poisson_disk({0.0f, 0.0f}, size, r, rng);
+  ASSERT_GT(points.size(), 1000u);
   for (std::size_t i = 0; i < points.size(); ++i) {
+    ASSERT_TRUE(points[i].x >= 0.0f && points[i].y >= 0.0f && points[i].x < size.x && points[i].y < size.y);
     for (std::size_t j = i + 1; j < points.size(); ++j) ASSERT_GE(glm::distance(points[i], points[j]), r);
   }
   // Filled: a spot farther than r from every point would take one more, so a complete sampling has
   // none; Bridson's method tries a fixed number of candidates, which leaves small gaps (measured
-  // up to 1.3 r), never big ones.
-  for (float x = 0.25f; x < 40.0f; x += 0.5f) {
-    for (float y = 0.25f; y < 30.0f; y += 0.5f) {
+  // up to 1.3 r), never big ones, along the tiles' edges as inside them.
+  for (float x = 0.1f; x < size.x; x += 0.2f) {
+    for (float y = 0.1f; y < size.y; y += 0.2f) {
       float nearest = 1e9f;
       for (const glm::vec2& p : points) nearest = std::min(nearest, glm::distance(p, {x, y}));
-      EXPECT_LE(nearest, 1.5f * r) << x << ", " << y;
+      ASSERT_LE(nearest, 1.5f * r) << x << ", " << y;
     }
   }
+}
+
+TEST(PoissonDisk, GivesTheSamePointsOnAnyNumberOfThreads) {
+  Random one(5), three(5);
+  const std::vector<glm::vec2> a = poisson_disk({-50.0f, -50.0f}, {50.0f, 50.0f}, 0.5f, one, 12, 1);
+  const std::vector<glm::vec2> b = poisson_disk({-50.0f, -50.0f}, {50.0f, 50.0f}, 0.5f, three, 12, 3);
+  ASSERT_GT(a.size(), 20000u);  // 9 × 9 tiles
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a[i], b[i]) << i;
+  EXPECT_EQ(one.next(), three.next());
 }
 
 TEST(Ecosystem, SameSeedSameGeometryOtherSeedOtherGeometry) {

@@ -47,11 +47,11 @@ bool in_clearing(const glm::vec2& p, const std::vector<glm::vec3>& clearings) {
   return std::any_of(clearings.begin(), clearings.end(), [&](const glm::vec3& c) { return glm::distance(p, glm::vec2(c.x, c.y)) < c.z; });
 }
 
-// Poisson-disk points for `count` plants outside the clearings: the radius shrinks until the
-// points suffice.
+// Poisson-disk points for `count` plants outside the clearings, with some to spare for the density
+// maps' picks (about 1.16 per plant at this radius); the radius shrinks until the points suffice.
 std::vector<glm::vec2> layer_points(const glm::vec2& min, const glm::vec2& size, int count,
                                     const std::vector<glm::vec3>& clearings, Random& rng, float& radius) {
-  radius = std::sqrt(size.x * size.y / (1.6f * static_cast<float>(count)));
+  radius = std::sqrt(size.x * size.y / (2.0f * static_cast<float>(count)));
   for (int attempt = 0; attempt < 12; ++attempt) {  // the radius may shrink to a third
     std::vector<glm::vec2> points = poisson_disk(min, min + size, radius, rng);
     const auto free = std::count_if(points.begin(), points.end(), [&](const glm::vec2& p) { return !in_clearing(p, clearings); });
@@ -74,9 +74,13 @@ std::vector<std::size_t> pick(const std::vector<glm::vec2>& points, std::vector<
   const auto n = static_cast<std::size_t>(count);
   std::nth_element(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(n), keys.end(),
                    [](const auto& a, const auto& b) { return a.first > b.first || (a.first == b.first && a.second < b.second); });
+  std::vector<bool> picked(points.size(), false);
+  for (std::size_t k = 0; k < n; ++k) picked[keys[k].second] = true;
   std::vector<std::size_t> chosen;
-  for (std::size_t k = 0; k < n; ++k) chosen.push_back(keys[k].second);
-  std::sort(chosen.begin(), chosen.end());
+  chosen.reserve(n);
+  for (std::size_t i = 0; i < points.size(); ++i) {  // in point order
+    if (picked[i]) chosen.push_back(i);
+  }
   for (std::size_t i : chosen) taken[i] = true;
   return chosen;
 }
