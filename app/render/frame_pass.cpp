@@ -266,7 +266,7 @@ float FramePass::nearest_depth() const {
   glBindTextureUnit(0, depth_.name());
   gl::set_uniform(nearest_program_, "view_depth", 0);
   glUseProgram(nearest_program_.name());
-  glDispatchCompute(static_cast<GLuint>((width_ + 15) / 16), static_cast<GLuint>((height_ + 15) / 16), 1);
+  glDispatchCompute(static_cast<GLuint>((width_ + 63) / 64), static_cast<GLuint>((height_ + 63) / 64), 1);  // 8 × 8 threads of 8 × 8 pixels
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   GLuint bits = none;
   glGetNamedBufferSubData(nearest_.name(), 0, sizeof bits, &bits);
