@@ -123,5 +123,30 @@ TEST(RendererChange, FramesAfterAChangeAreThoseOfAFreshRenderer) {
   }
 }
 
+// The frame's nearest depth, reduced on the GPU in blocks of 8 × 8 pixels, is the least positive
+// depth of its depth AOV. The camera looks at a wall obliquely, so the wall comes nearest along
+// the image's last column, which a size of 331 pixels puts in blocks partly outside the image.
+TEST(FrameNearestDepth, IsTheLeastDepthOfTheFrame) {
+  const auto context = create_headless_context("egl");
+  const Scene scene = load_scene({"wall.json", R"({"camera": {"position": [20, 5, 15], "target": [0, 5, 0], "fov_y_deg": 50},
+    "lights": [{"type": "directional", "direction": [0.3, -1, -0.2]}],
+    "objects": [{"type": "box", "min": [-100, -50, -1], "max": [100, 50, 0]}]})",
+                                  [](const std::string&) { return std::nullopt; }});
+  Renderer renderer(scene, {331, 203, 512, ShadowMethod::uniform});
+  renderer.render(scene.camera, scene.lights[0]);
+  const Image<float> depth = renderer.frame().read_depth();
+  float least = 0.0f;
+  int least_column = -1;
+  for (std::size_t i = 0; i < depth.samples.size(); ++i) {
+    const float d = depth.samples[i];
+    if (d > 0.0f && (least == 0.0f || d < least)) {
+      least = d;
+      least_column = static_cast<int>(i % 331);
+    }
+  }
+  ASSERT_EQ(least_column, 330);  // the scene is as described
+  EXPECT_EQ(renderer.frame().nearest_depth(), least);
+}
+
 }  // namespace
 }  // namespace ecoview::test
