@@ -1,7 +1,7 @@
 #version 450 core
 // The GPU sampler's first passes, once a frame: the plants in view sorted into distance bands,
 // each band's in plant order (a stable counting sort). With HISTOGRAM the plants in the view's
-// frusta counted by quarters of the ladder's bands (band_ends.comp cuts the dense ones there).
+// frusta weighed by quarters of the ladder's bands (band_ends.comp cuts the dense ones there).
 // With KEYS each plant culled against the view's frusta and given its band by its distance from
 // the eye; a plant in none of them but in the body of the casters (what may shadow the view) goes
 // to the last band, the casters'; with HIDDEN_KEYS, once the frame's bands are counted, the
@@ -77,6 +77,15 @@ bool in_view(vec3 center, float radius) {
 #ifdef HISTOGRAM
 uniform float ladder_ends[32];  // the ladder's bands' far ends (GpuSampler::bands), the last's infinite
 uniform uint ladder_count;
+// The count's view (sample_count.comp): a plant likely drawn as polygons (before occlusion) weighs
+// a plant per triangles_a_plant of its triangles, for the plants of one band do not hide each other
+// and polygons cost most.
+uniform vec3 forward;
+uniform float edge_cos;
+uniform float pixels_per_radian;
+uniform float k;
+uniform float points_per_triangle;
+const uint triangles_a_plant = 128u;
 
 void main() {
   uint i = gl_GlobalInvocationID.x;
@@ -93,7 +102,10 @@ void main() {
     float start = band > 0u ? ladder_ends[band - 1u] : 0.0;
     quarter = min(uint(4.0 * (from_eye - start) / (ladder_ends[band] - start)), 3u);
   }
-  atomicAdd(quarter_counts[4u * band + quarter], 1u);
+  SampledMesh mesh = meshes[plant_meshes[i].x];
+  float needed = points_needed(model, mesh, eye, forward, edge_cos, pixels_per_radian, k);
+  uint weight = as_polygons(needed, mesh, points_per_triangle) ? max(mesh.sizes.x / triangles_a_plant, 1u) : 1u;
+  atomicAdd(quarter_counts[4u * band + quarter], weight);
 }
 #else
 void main() {

@@ -66,3 +66,34 @@ float points_a_map_asks(mat4 map_view_projection, float texels, float k, vec3 ce
   float ndc_per_square_metre = length(row_x) * length(row_y) / (w * w);
   return k * 0.5 * area * ndc_per_square_metre * 0.25 * texels;
 }
+
+float facing(SampledMesh mesh, vec3 v) {
+  mat3 moments = mat3(mesh.moments[0].xyz, mesh.moments[1].xyz, mesh.moments[2].xyz);
+  if (!(moments[0][0] + moments[1][1] + moments[2][2] > 0.0)) return 0.5;
+  return sqrt(max(dot(v, moments * v), 0.0));
+}
+
+// The points the view asks of a plant (docs/point_density.md): k per pixel of its surface as seen
+// from the eye, by its bounds centre's distance and depth along `forward`.
+float points_needed(mat4 model, SampledMesh mesh, vec3 eye, vec3 forward, float edge_cos, float pixels_per_radian, float k) {
+  vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
+  float scale = model_scale(model);
+  float radius = mesh.center_radius.w * scale;
+  float distance = max(length(eye - center), max(0.5 * radius, 1e-3));
+  float depth = max(dot(center - eye, forward), distance * edge_cos);
+  vec3 to_eye = inverse(mat3(model)) * (eye - center);
+  float facing_eye = dot(to_eye, to_eye) > 0.0 ? facing(mesh, normalize(to_eye)) : 0.5;
+  float z = max(depth, 1e-3);
+  float area = mesh.half_size_area.w * scale * scale;
+  return k * pixels_per_radian * pixels_per_radian * area * facing_eye * max(distance, z) / (z * z * z);
+}
+
+// A plant the view asks `needed` points of is drawn as polygons (too, within the band around
+// break-even) where they would cost more than band_low times its triangles, or where its samples
+// do not suffice.
+float triangles_ratio(float needed, SampledMesh mesh, float points_per_triangle) {
+  return needed / (points_per_triangle * float(mesh.sizes.x));
+}
+bool as_polygons(float needed, SampledMesh mesh, float points_per_triangle) {
+  return triangles_ratio(needed, mesh, points_per_triangle) > band_low || needed > float(mesh.sizes.y);
+}

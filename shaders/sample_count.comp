@@ -27,12 +27,6 @@ uniform float k;
 uniform float points_per_triangle;
 
 
-float facing(SampledMesh mesh, vec3 v) {
-  mat3 moments = mat3(mesh.moments[0].xyz, mesh.moments[1].xyz, mesh.moments[2].xyz);
-  if (!(moments[0][0] + moments[1][1] + moments[2][2] > 0.0)) return 0.5;
-  return sqrt(max(dot(v, moments * v), 0.0));
-}
-
 // (points, 1 when drawn as polygons, hidden_in_frame when hidden) of plant i.
 uvec3 count_plant(uint i) {
   mat4 model = instances[i].model;
@@ -42,24 +36,19 @@ uvec3 count_plant(uint i) {
     return uvec3(0u, 0u, hidden_in_frame);
   }
   if (receivers_only && shadows_nothing(map_view_projection, model, mesh)) return uvec3(0u);
-  vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
-  float scale = model_scale(model);
-  float radius = mesh.center_radius.w * scale;
-  float distance = max(length(eye - center), max(0.5 * radius, 1e-3));
-  float depth = max(dot(center - eye, forward), distance * edge_cos);
-  vec3 to_eye = inverse(mat3(model)) * (eye - center);
-  float facing_eye = dot(to_eye, to_eye) > 0.0 ? facing(mesh, normalize(to_eye)) : 0.5;
-  float z = max(depth, 1e-3);
-  float area = mesh.half_size_area.w * scale * scale;
-  float needed = k * pixels_per_radian * pixels_per_radian * area * facing_eye * max(distance, z) / (z * z * z);
-  if (cap_to_map) needed = min(needed, points_a_map_asks(map_view_projection, map_texels, k, center, area));
+  float needed = points_needed(model, mesh, eye, forward, edge_cos, pixels_per_radian, k);
+  if (cap_to_map) {
+    float scale = model_scale(model);
+    vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
+    needed = min(needed, points_a_map_asks(map_view_projection, map_texels, k, center, mesh.half_size_area.w * scale * scale));
+  }
   float samples = float(mesh.sizes.y);
-  float ratio = needed / (points_per_triangle * float(mesh.sizes.x));
-  bool as_polygons = ratio > band_low || needed > samples;
-  float drawn = (as_polygons ? clamp((band_high - ratio) / (band_high - band_low), 0.0, 1.0) : 1.0) * needed;
+  float ratio = triangles_ratio(needed, mesh, points_per_triangle);
+  bool polygons = as_polygons(needed, mesh, points_per_triangle);
+  float drawn = (polygons ? clamp((band_high - ratio) / (band_high - band_low), 0.0, 1.0) : 1.0) * needed;
   uint points = uint(min(floor(drawn + uintBitsToFloat(plant_meshes[i].y)), samples));
   bool as_points = ratio < band_high && mesh.sizes.y > 0u;
-  return uvec3(as_points ? points : 0u, as_polygons ? 1u : 0u, 0u);
+  return uvec3(as_points ? points : 0u, polygons ? 1u : 0u, 0u);
 }
 
 shared uvec4 sums[256];

@@ -161,16 +161,16 @@ TEST_F(GpuSampling, TellsWhichBandsDrewSomething) {
   for (std::size_t b = 0; b < drew.size(); ++b) EXPECT_EQ(said[b] != 0, drew[b]) << "band " << b;
 }
 
-// A band of the ladder that holds more than a few thousand plants in view is cut into bands by
-// distance (the farthest merged to make room): 2,500 ferns 12.5–17.5 m ahead, in the ladder's band
-// from 12 to 18 m, take several bands, each one's plants nearer the eye than the next one's.
-TEST_F(GpuSampling, ADenseBandIsCutIntoBandsByDistance) {
+// Seen with `settings`, `columns` × `rows` plants of `species` 0.2 m apart, 12.5 m ahead and on, in the ladder's band from
+// 12 to 18 m, sorted into bands; per band the nearest and farthest of its plants' bounds centres
+// from the eye.
+std::map<int, std::pair<float, float>> band_reach(const RenderSettings& settings, const std::string& species, int columns, int rows) {
   std::ostringstream json;
   json << R"({"camera": {"position": [0, 3, 0], "target": [0, 2, -60], "fov_y_deg": 50, "near": 0.5, "far": 1000},
              "lights": [{"type": "directional", "direction": [0.4, -0.8, -0.3]}],
-             "objects": [{"type": "plant", "species": "fern", "positions": [)";
-  for (int x = 0; x < 100; ++x) {
-    for (int z = 0; z < 25; ++z) json << (x || z ? ", " : "") << "[" << -10.0 + 0.2 * x << ", 0, " << -12.5 - 0.2 * z << "]";
+             "objects": [{"type": "plant", "species": ")" << species << R"(", "positions": [)";
+  for (int x = 0; x < columns; ++x) {
+    for (int z = 0; z < rows; ++z) json << (x || z ? ", " : "") << "[" << -0.1 * columns + 0.2 * x << ", 0, " << -12.5 - 0.2 * z << "]";
   }
   json << "]}]}";
   const Scene dense = load_scene({"dense.json", json.str(), [](const std::string&) { return std::nullopt; }});
@@ -178,26 +178,46 @@ TEST_F(GpuSampling, ADenseBandIsCutIntoBandsByDistance) {
   GpuSampler gpu(dense.groups, dense_samples, GpuScene(dense).point_mesh_places());
   const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
   pointgen::SamplerView v = sampler_view(dense.camera, settings, {dense.camera.projection(aspect) * dense.camera.view()});
-  const std::vector<glm::vec2> ladder = GpuSampler::bands(dense.camera.far);
-  gpu.begin(v, ladder);
+  gpu.begin(v, GpuSampler::bands(dense.camera.far));
   for (int b = 0; b < gpu.band_count(); ++b) gpu.add_band(b, nullptr);
-  // Per band, the nearest and farthest of its plants' bounds centres from the eye.
-  const pointgen::SampledMesh& fern = dense_samples.meshes()[dense.groups.front().mesh];
+  const pointgen::SampledMesh& mesh = dense_samples.meshes()[dense.groups.front().mesh];
   std::map<int, std::pair<float, float>> reach;
   const std::vector<GpuSampler::Count> counts = gpu.read_counts();
-  ASSERT_EQ(counts.size(), 2500u);
+  EXPECT_EQ(counts.size(), static_cast<std::size_t>(columns * rows));
   for (std::size_t i = 0; i < counts.size(); ++i) {
-    ASSERT_TRUE(counts[i].band) << "every fern is in view";
-    const glm::vec3 center(dense.groups.front().transforms[i] * glm::vec4(fern.center, 1.0f));
+    EXPECT_TRUE(counts[i].band) << "every plant is in view";
+    if (!counts[i].band) continue;
+    const glm::vec3 center(dense.groups.front().transforms[i] * glm::vec4(mesh.center, 1.0f));
     const float d = glm::distance(center, dense.camera.position);
     auto [at, fresh] = reach.try_emplace(*counts[i].band, d, d);
     at->second = {std::min(at->second.first, d), std::max(at->second.second, d)};
   }
-  EXPECT_GE(reach.size(), 3u) << "the ladder's band should be cut";
+  return reach;
+}
+
+void expect_ordered_by_distance(const std::map<int, std::pair<float, float>>& reach) {
   for (auto a = reach.begin(), b = std::next(a); b != reach.end(); ++a, ++b) {
     EXPECT_LT(a->first, b->first);
     EXPECT_LE(a->second.second, b->second.first) << "band " << a->first << " reaches past band " << b->first;
   }
+}
+
+// A band of the ladder that holds more than a few thousand plants in view is cut into bands by
+// distance (into the places of ladder bands with no plants): 2,500 ferns take several bands, each
+// one's plants nearer the eye than the next one's.
+TEST_F(GpuSampling, ADenseBandIsCutIntoBandsByDistance) {
+  const std::map<int, std::pair<float, float>> reach = band_reach(settings, "fern", 100, 25);
+  EXPECT_GE(reach.size(), 3u) << "the ladder's band should be cut";
+  expect_ordered_by_distance(reach);
+}
+
+// What weighs is what a band draws: 300 beeches near enough to be drawn as polygons (3,628
+// triangles each) are cut into bands, 300 ferns in the same places are not.
+TEST_F(GpuSampling, ABandOfPolygonPlantsIsCutSoonerThanOneOfAsManySmallPlants) {
+  const std::map<int, std::pair<float, float>> beeches = band_reach(settings, "beech", 30, 10);
+  EXPECT_GE(beeches.size(), 2u) << "the beeches' band should be cut";
+  expect_ordered_by_distance(beeches);
+  EXPECT_EQ(band_reach(settings, "fern", 30, 10).size(), 1u);
 }
 
 // Over a depth texture that changes between builds, build_if keeps the pyramid where its flag is

@@ -45,8 +45,9 @@ constexpr std::size_t max_planes = 96;                                    // pla
 // Bands: the first ends this far from the eye (metres), each next one this many times as far.
 // Finer bands hide more of what lies behind a near one, at a pyramid and a few passes each.
 constexpr float first_band_end = 12.0f, band_ratio = 1.5f;
-// A band of the ladder holding more plants in view than this is cut at its quarters, the far
-// bands merged to make room (shaders/band_ends.comp).
+// A band of the ladder whose plants in view weigh more than this (a plant drawn as polygons weighs
+// one per 128 of its triangles) is cut at its quarters, each cut in the place of a ladder band with
+// no plants in view (shaders/band_ends.comp).
 constexpr unsigned dense_band_plants = 2048;
 constexpr int most_distance_bands = 24;
 // The plants the frame hides go into the shadow maps from the bands within this distance (the
@@ -242,14 +243,16 @@ void GpuSampler::begin(const pointgen::SamplerView& view, const std::vector<glm:
     gl::set_uniform(*program, "ladder_count", static_cast<unsigned>(ladder_ends.size()));
   }
   gl::set_uniform(band_ends_program_, "dense_plants", dense_band_plants);
+  for (const gl::Program* program : {&count_program_, &histogram_program_}) {
+    gl::set_uniform(*program, "forward", view.forward);
+    gl::set_uniform(*program, "edge_cos", view.edge_cos);
+    gl::set_uniform(*program, "pixels_per_radian", view.density.pixels_per_radian);
+    gl::set_uniform(*program, "k", view.density.k);
+    gl::set_uniform(*program, "points_per_triangle", view.points_per_triangle);
+  }
   gl::set_uniform(count_program_, "view_projection", view.views.front());
   part_lists_->begin(view.views.front(), glm::vec2(view.pixels));
   gl::set_uniform(count_program_, "eye", view.eye);
-  gl::set_uniform(count_program_, "forward", view.forward);
-  gl::set_uniform(count_program_, "edge_cos", view.edge_cos);
-  gl::set_uniform(count_program_, "pixels_per_radian", view.density.pixels_per_radian);
-  gl::set_uniform(count_program_, "k", view.density.k);
-  gl::set_uniform(count_program_, "points_per_triangle", view.points_per_triangle);
   gl::set_uniform(hidden_keys_program_, "hidden_reach", hidden_casters_reach);
   gl::set_uniform(hidden_keys_program_, "k", view.density.k);
   gl::set_uniform(hidden_keys_program_, "points_per_triangle", view.points_per_triangle);

@@ -52,7 +52,7 @@ class GpuSampler {
   void begin(const pointgen::SamplerView& view, const std::vector<glm::vec2>& bands,
              const std::vector<shadow::Plane>& casters = {});
   // The bands of this frame, the casters' among them; those of distance, nearest first, as many
-  // as the ladder's from begin(): the GPU cuts a dense one into several and merges the farthest.
+  // as the ladder's from begin(): the GPU cuts a dense one into several in the places of empty ones.
   int band_count() const { return bands_used_; }
   int distance_band_count() const { return distance_bands_; }
   // The number of the casters' band in this frame; none without caster views.
