@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <exception>
 #include <limits>
+#include <mutex>
 #include <thread>
 
 namespace pointgen {
@@ -115,19 +117,28 @@ std::vector<glm::vec2> poisson_disk(const glm::vec2& min, const glm::vec2& max, 
       for (int tx = phase & 1; tx < tiles.x; tx += 2) todo.push_back(ty * tiles.x + tx);
     }
     std::atomic<std::size_t> next{0};
+    std::mutex failing;
+    std::exception_ptr failure;  // the first a thread met (out of memory), thrown after the join
     auto work = [&] {
-      for (std::size_t i = next++; i < todo.size(); i = next++) {
-        const int t = todo[i];
-        const glm::ivec2 tile(t % tiles.x, t / tiles.x);
-        const glm::vec2 lo = grid.corner(tile * tile_cells);
-        const glm::vec2 hi = glm::min(max, grid.corner((tile + 1) * tile_cells));
-        tile_points[static_cast<std::size_t>(t)] = fill_tile(grid, lo, hi, radius, attempts, derive_seed(tile_seeds, static_cast<std::uint64_t>(t)));
+      try {
+        for (std::size_t i = next++; i < todo.size(); i = next++) {
+          const int t = todo[i];
+          const glm::ivec2 tile(t % tiles.x, t / tiles.x);
+          const glm::vec2 lo = grid.corner(tile * tile_cells);
+          const glm::vec2 hi = glm::min(max, grid.corner((tile + 1) * tile_cells));
+          tile_points[static_cast<std::size_t>(t)] = fill_tile(grid, lo, hi, radius, attempts, derive_seed(tile_seeds, static_cast<std::uint64_t>(t)));
+        }
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(failing);
+        if (!failure) failure = std::current_exception();
+        next = todo.size();
       }
     };
     std::vector<std::thread> helpers;
     for (int k = 1; k < std::min<int>(threads, static_cast<int>(todo.size())); ++k) helpers.emplace_back(work);
     work();
     for (std::thread& helper : helpers) helper.join();
+    if (failure) std::rethrow_exception(failure);
   }
   std::vector<glm::vec2> points;
   for (const std::vector<glm::vec2>& some : tile_points) points.insert(points.end(), some.begin(), some.end());
