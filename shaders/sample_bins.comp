@@ -43,7 +43,7 @@ bool map_takes_points(uint i) {
   vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
   float scale = model_scale(model);
   float asked = points_a_map_asks(map_view_projection, map_texels, k, center, mesh.half_size_area.w * scale * scale);
-  return asked < band_low * points_per_triangle * float(mesh.sizes.x) && asked <= float(mesh.sizes.y);
+  return !as_polygons(asked, mesh, points_per_triangle);
 }
 // The plants in view that those bands left out as hidden (sample_count.comp) and the polygon
 // plants the map takes as points, into one band.
