@@ -492,7 +492,7 @@ TEST_F(GpuSampling, ACoarseMapTakesOfEachPlantKPointsATexel) {
   for (const pointgen::InstanceTable& table : ferns.groups) {
     const float area = fern_samples.meshes()[table.mesh].area;
     if (fern_samples.meshes()[table.mesh].samples == 0) continue;
-    for (const glm::mat4& model : table.transforms) {
+    for (const glm::mat4x3& model : table.transforms) {
       const float scale = std::cbrt(std::abs(glm::determinant(glm::mat3(model))));
       most += std::floor(settings.k * 0.5f * area * scale * scale * texels_per_square_metre) + 1.0;
     }

@@ -75,7 +75,7 @@ Image<float> cpu_splat(const std::vector<pointgen::PointDraw>& draws, const Scen
     const pointgen::InstanceTable& table = scene.groups[d.table];
     for (std::uint32_t i = 0; i < d.count; ++i) {
       const glm::vec4 local = positions[samples.first_sample(table.mesh) + d.first + i];
-      const glm::vec4 clip = view_projection * table.transforms[d.instance] * glm::vec4(glm::vec3(local), 1.0f);
+      const glm::vec4 clip = view_projection * table.transform(d.instance) * glm::vec4(glm::vec3(local), 1.0f);
       const glm::vec3 ndc = glm::vec3(clip) / clip.w;
       if (clip.w <= 0.0f || std::abs(ndc.x) > 1.0f || std::abs(ndc.y) > 1.0f || std::abs(ndc.z) > 1.0f) continue;
       const int x = std::min(width - 1, static_cast<int>(std::floor((ndc.x * 0.5f + 0.5f) * width)));

@@ -35,7 +35,7 @@ TEST(InstanceCells, HoldEveryInstanceOnceInBoxesAroundTheirSpheres) {
     float area = 0.0f;
     for (std::uint32_t i : cell.members) {
       members.push_back(i);
-      const glm::mat4& m = table.transforms[i];
+      const glm::mat4 m = table.transform(i);
       const float scale = m[0][0];
       const glm::vec3 center(m * glm::vec4(mesh.center, 1.0f));
       EXPECT_TRUE(glm::all(glm::lessThanEqual(cell.min, center - mesh.radius * scale + 1e-4f)));

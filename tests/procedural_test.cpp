@@ -189,7 +189,7 @@ TEST(Ecosystem, PlantsStandOnTheTerrainInsideTheArea) {
   std::size_t checked = 0;
   for (const InstanceTable& t : eco.tables) {
     if (eco.mesh_names[t.mesh] == "terrain") continue;
-    for (const glm::mat4& m : t.transforms) {
+    for (const glm::mat4x3& m : t.transforms) {
       const glm::vec3 p(m[3]);
       EXPECT_NEAR(p.y, eco.terrain.height(p.x, p.z), 1e-4f);
       EXPECT_TRUE(p.x >= min.x && p.x <= max.x && p.z >= min.y && p.z <= max.y);
@@ -202,7 +202,7 @@ TEST(Ecosystem, PlantsStandOnTheTerrainInsideTheArea) {
 std::vector<glm::vec3> torso_positions(const MovingSet& crowd, double t) {
   std::vector<glm::vec3> out;
   for (const InstanceTable& table : crowd.pose(t, 0)) {
-    for (const glm::mat4& m : table.transforms) out.emplace_back(m[3]);
+    for (const glm::mat4x3& m : table.transforms) out.emplace_back(m[3]);
   }
   return out;
 }
@@ -241,7 +241,7 @@ TEST(Herd, CowsWalkOnTheTerrain) {
   const MovingSet herd = make_herd(5, terrain, {{-30.0f, -30.0f}, {30.0f, 30.0f}}, 0.0f, 3);
   for (double t : {0.0, 3.3, 100.0}) {
     const std::vector<InstanceTable> tables = herd.pose(t, 0);
-    for (const glm::mat4& m : tables[0].transforms) EXPECT_NEAR(m[3].y, terrain.height(m[3].x, m[3].z), 1e-4f);
+    for (const glm::mat4x3& m : tables[0].transforms) EXPECT_NEAR(m[3].y, terrain.height(m[3].x, m[3].z), 1e-4f);
   }
 }
 

@@ -222,7 +222,7 @@ TEST(ViewSampler, AFarCellIsCountedWholeWithOnePointForEachOfAsManyInstancesAsIt
   SamplerView view = test_view();
   view.density.k = 0.6f;
   double expected = 0.0;
-  for (const glm::mat4& m : table.transforms) {
+  for (const glm::mat4x3& m : table.transforms) {
     const glm::vec3 p(m[3]);
     expected += points_needed(view.density, mesh.area, -p.z, glm::length(p));
   }

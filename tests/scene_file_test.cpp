@@ -227,7 +227,7 @@ TEST(SceneFileErrors, AScenePastTheMemoryBudgetIsRefusedBeforeItIsBuilt) {
     const std::string message = e.what();
     EXPECT_NE(message.find("objects[1]"), std::string::npos) << message;
     EXPECT_NE(message.find("memory budget of 1.00 GiB"), std::string::npos) << message;
-    EXPECT_NE(message.find("would need about 23.8"), std::string::npos) << message;  // 9e7 plants x 284 bytes
+    EXPECT_NE(message.find("would need about 22.1"), std::string::npos) << message;  // 9e7 plants x 264 bytes
   }
 }
 

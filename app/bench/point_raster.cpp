@@ -49,7 +49,7 @@ void PointRaster::upload(const std::vector<pointgen::PointDraw>& draws, const st
     const auto instance = static_cast<GLuint>(instances.size());
     gpu_draws.emplace_back(static_cast<GLuint>(first_point), d.count, samples.first_sample(table.mesh) + d.first, instance);
     commands.push_back({d.count, 1, samples.first_sample(table.mesh) + d.first, instance});
-    instances.push_back({table.transforms[d.instance], glm::vec4(table.tints[d.instance], 1.0f)});
+    instances.push_back({table.transform(d.instance), glm::vec4(table.tints[d.instance], 1.0f)});
     first_point += d.count;
   }
   if (first_point > 0x7FFFFFFFu) throw RuntimeFailure("the point raster draws at most 2^31 points at once");

@@ -16,7 +16,7 @@ namespace {
 constexpr float surface_window = 1e-2f;
 constexpr float origin_offset = 2e-4f;
 
-glm::mat3 normal_matrix(const glm::mat4& transform) { return glm::transpose(glm::inverse(glm::mat3(transform))); }
+glm::mat3 normal_matrix(const glm::mat4x3& transform) { return glm::transpose(glm::inverse(glm::mat3(transform))); }
 
 RTCScene mesh_scene(RTCDevice device, const pointgen::TriangleMesh& mesh) {
   if (mesh.triangle_count() == 0) return nullptr;
@@ -36,9 +36,10 @@ RTCScene mesh_scene(RTCDevice device, const pointgen::TriangleMesh& mesh) {
   return scene;
 }
 
-void set_transform(RTCScene scene, unsigned id, const glm::mat4& transform) {
+// A table's transform as it keeps it: four columns of three floats.
+void set_transform(RTCScene scene, unsigned id, const glm::mat4x3& transform) {
   RTCGeometry instance = rtcGetGeometry(scene, id);
-  rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &transform[0][0]);
+  rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, &transform[0][0]);
   rtcCommitGeometry(instance);
 }
 
@@ -53,14 +54,14 @@ ExactVisibility::ExactVisibility(const std::vector<pointgen::TriangleMesh>& mesh
   for (const pointgen::InstanceTable& table : tables) {
     std::vector<unsigned>& ids = geometry_ids_.emplace_back();
     transforms_.push_back(table.transforms);
-    for (const glm::mat4& transform : table.transforms) {
+    for (const glm::mat4x3& transform : table.transforms) {
       if (mesh_scenes_[table.mesh] == nullptr) {
         ids.push_back(RTC_INVALID_GEOMETRY_ID);
         continue;
       }
       RTCGeometry instance = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
       rtcSetGeometryInstancedScene(instance, mesh_scenes_[table.mesh]);
-      rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &transform[0][0]);
+      rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, &transform[0][0]);
       rtcCommitGeometry(instance);
       ids.push_back(rtcAttachGeometry(scene_, instance));
       rtcReleaseGeometry(instance);

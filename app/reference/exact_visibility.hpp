@@ -44,7 +44,7 @@ class ExactVisibility {
   // Per table and instance, its instance geometry (RTC_INVALID_GEOMETRY_ID for empty meshes) and
   // the transform it has.
   std::vector<std::vector<unsigned>> geometry_ids_;
-  std::vector<std::vector<glm::mat4>> transforms_;
+  std::vector<std::vector<glm::mat4x3>> transforms_;
   // By instance geometry ID: its mesh, and the matrix taking its object-space normals to world
   // space.
   struct Instance {

@@ -58,7 +58,7 @@ constexpr float hidden_casters_reach = 41.0f;
 std::vector<GpuInstance> instances_of(const pointgen::InstanceTable& table) {
   std::vector<GpuInstance> instances;
   instances.reserve(table.size());
-  for (std::size_t i = 0; i < table.size(); ++i) instances.push_back({table.transforms[i], glm::vec4(table.tints[i], 1.0f)});
+  for (std::size_t i = 0; i < table.size(); ++i) instances.push_back({table.transform(i), glm::vec4(table.tints[i], 1.0f)});
   return instances;
 }
 

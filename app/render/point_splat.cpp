@@ -89,7 +89,7 @@ void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std
     const auto draw = static_cast<std::uint32_t>(gpu_draws.size());
     gpu_draws.emplace_back(static_cast<std::uint32_t>(first_point), d.count, samples.first_sample(table.mesh) + d.first,
                            static_cast<std::uint32_t>(instances.size()));
-    instances.push_back({table.transforms[d.instance], glm::vec4(table.tints[d.instance], 1.0f)});
+    instances.push_back({table.transform(d.instance), glm::vec4(table.tints[d.instance], 1.0f)});
     first_point += d.count;
     while (block_draws.size() * points_per_block < first_point) block_draws.push_back(draw);
   }

@@ -7,11 +7,11 @@ shadow::Box Scene::bounds() const {
   for (const pointgen::InstanceTable& group : groups) {
     const pointgen::Bounds local = meshes[group.mesh].bounds();
     if (local.empty()) continue;
-    for (const glm::mat4& transform : group.transforms) {
+    for (const glm::mat4x3& transform : group.transforms) {
       for (int i = 0; i < 8; ++i) {
         const glm::vec3 corner((i & 1) ? local.max.x : local.min.x, (i & 2) ? local.max.y : local.min.y,
                                (i & 4) ? local.max.z : local.min.z);
-        box.add(glm::vec3(transform * glm::vec4(corner, 1.0f)));
+        box.add(transform * glm::vec4(corner, 1.0f));
       }
     }
   }

@@ -152,7 +152,7 @@ class SceneBuilder {
     for (pointgen::InstanceTable& table : eco.tables) {
       if (table.size() == 0) continue;
       table.mesh += first;
-      for (glm::mat4& t : table.transforms) t[3].y += base;
+      for (glm::mat4x3& t : table.transforms) t[3].y += base;
       scene_.groups.push_back(std::move(table));
     }
     if (auto animals = object.optional("animals")) {
@@ -193,7 +193,7 @@ class SceneBuilder {
   }
 
   // A mover's part records (table rows and GPU instances), about.
-  static constexpr double bytes_per_mover = 10 * (84 + 128);
+  static constexpr double bytes_per_mover = 10 * (64 + 128);
 
   void mark_point_meshes(std::size_t begin, std::size_t end) {
     scene_.point_meshes.resize(scene_.meshes.size(), false);

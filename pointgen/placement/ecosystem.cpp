@@ -109,7 +109,7 @@ int placement_layer(PlantKind kind) {
 std::size_t estimated_bytes(const EcosystemSpec& spec) {
   // Per instance: its table row, its GPU instance record, placement scratch (the Poisson-disk
   // grid's four cells of 8 bytes, the points twice, the picks' keys).
-  constexpr std::size_t per_instance = 84 + 128 + 72;
+  constexpr std::size_t per_instance = 64 + 128 + 72;
   constexpr std::size_t per_triangle = 3 * 36 + 12;  // CPU and GPU copies of vertices and indices, about
   std::size_t bytes = static_cast<std::size_t>(spec.terrain.resolution) * static_cast<std::size_t>(spec.terrain.resolution) * 2 * per_triangle;
   for (const PlantRequest& r : spec.plants) {
@@ -169,6 +169,7 @@ Ecosystem grow_ecosystem(const EcosystemSpec& spec) {
       }
     }
   }
+  for (InstanceTable& table : eco.tables) table.shrink_to_fit();
   return eco;
 }
 

@@ -29,7 +29,7 @@ std::vector<std::uint32_t> instances_in_view(const ViewFrusta& frusta, const std
   for (const InstanceCell& cell : cells) {
     if (!frusta.hold(0.5f * (cell.min + cell.max), 0.5f * glm::length(cell.max - cell.min))) continue;
     for (std::uint32_t i : cell.members) {
-      const glm::mat4& m = table.transforms[i];
+      const glm::mat4 m = table.transform(i);
       if (frusta.hold(glm::vec3(m * glm::vec4(mesh.center, 1.0f)), mesh.radius * uniform_scale(m))) seen.push_back(i);
     }
   }

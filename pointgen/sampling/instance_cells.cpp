@@ -66,7 +66,7 @@ void InstanceCells::update(std::size_t table, const InstanceTable& instances, co
   std::vector<Placed> placed;
   placed.reserve(instances.size());
   for (std::size_t i = 0; i < instances.size(); ++i) {
-    const glm::mat4& m = instances.transforms[i];
+    const glm::mat4 m = instances.transform(i);
     const float scale = uniform_scale(m);
     placed.push_back({static_cast<std::uint32_t>(i), glm::vec3(m * glm::vec4(mesh.center, 1.0f)), mesh.radius * scale,
                       mesh.area * scale * scale});

@@ -220,7 +220,7 @@ class ViewSampling {
     const SampledMesh& mesh = meshes_[table.mesh];
     OpenCell open;
     for (std::uint32_t i : cell.members) {
-      const glm::mat4& m = table.transforms[i];
+      const glm::mat4 m = table.transform(i);
       const float scale = uniform_scale(m);
       Candidate whole{cell.table, i, nullptr, glm::vec3(m * glm::vec4(mesh.center, 1.0f)), mesh.radius * scale,
                       mesh.area * scale * scale};
@@ -262,7 +262,7 @@ class ViewSampling {
     const float radius = 0.5f * glm::length(cell.max - cell.min);
     if (!(radius < aggregate_radius * glm::distance(view_.eye, center))) return false;
     const Candidate all{cell.table, cell.members.front(), nullptr, center, radius, cell.area};
-    float needed = unoccluded_count(view_, coverage_ ? &*coverage_ : nullptr, all, mesh, table.transforms[cell.members.front()]);
+    float needed = unoccluded_count(view_, coverage_ ? &*coverage_ : nullptr, all, mesh, table.transform(cell.members.front()));
     if (!(needed < static_cast<float>(cell.members.size()))) return false;
     needed *= visible_share(transmittance, view_.full_count_transmittance);
     const std::uint64_t seed = table.seeds.size() > cell.members.front() ? table.seeds[cell.members.front()] : cell.members.front();
@@ -273,7 +273,7 @@ class ViewSampling {
       const std::uint32_t first = Random(derive_seed(instance_seed, 0x6f6e65u)).below(static_cast<std::uint32_t>(mesh.samples));
       frame_.points.push_back({cell.table, instance, 1, first});
       ++frame_.point_count;
-      if (rect) occlusion_->cover(std::span(mesh.sample_positions).subspan(first, 1), table.transforms[instance]);
+      if (rect) occlusion_->cover(std::span(mesh.sample_positions).subspan(first, 1), table.transform(instance));
     }
     return true;
   }
@@ -338,7 +338,7 @@ class ViewSampling {
   // count is scaled by `thinning` (in the band, over its instance's polygons).
   void add(const Candidate& c, float thinning = 1.0f) {
     const SampledMesh& mesh = meshes_[tables_[c.table].mesh];
-    const glm::mat4& transform = tables_[c.table].transforms[c.instance];
+    const glm::mat4 transform = tables_[c.table].transform(c.instance);
     const std::optional<Counted> counted = count(c, mesh, transform);
     if (!counted) return;
     const std::optional<CoverageGrid::Rect>& rect = counted->rect;
