@@ -10,7 +10,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 MARKERS = {"uniform": "o", "psm": "s", "lispsm": "^", "cascades": "v", "dpsm": "D", "ipsm": "P", "volumes": "*",
-           "auto": "X"}
+           "reference": "h", "auto": "X"}
 
 
 def runs(results, sweep, **params):
@@ -20,6 +20,25 @@ def runs(results, sweep, **params):
 
 def methods(rs):
     return sorted({r["params"]["method"] for r in rs}, key=lambda m: list(MARKERS).index(m) if m in MARKERS else 99)
+
+
+def plot_lines(ax, lines, note=lambda ys: ""):
+    """Each method's line (a dict method -> (xs, ys)). Where a line has another's values of y (auto
+    where it chose the PSM: its times differ a little) it would hide under it: it is drawn dashed
+    with open markers and labelled "auto = psm here", or "auto (= psm at 5 of 6)" where it has most of
+    them."""
+    drawn = {}
+    for m, (xs, ys) in lines.items():
+        shared = {o: sum(a == b for a, b in zip(ys, oys)) for o, oys in drawn.items() if len(oys) == len(ys)}
+        same = max(shared, key=shared.get, default=None)
+        label = m
+        if same and shared[same] == len(ys):
+            label = f"{m} = {same} here"
+        elif same and 2 * shared[same] > len(ys):  # a line of its own that meets another now and then stays solid
+            label = f"{m} (= {same} at {shared[same]} of {len(ys)})"
+        style = dict(ls="--", mfc="none", ms=9) if label != m else {}
+        ax.plot(xs, ys, marker=MARKERS.get(m, "o"), label=label + note(ys), **style)
+        drawn[m] = ys
 
 
 def pareto(points):
@@ -37,14 +56,15 @@ def tradeoff_chart(results, out):
     fig, axes = plt.subplots(1, len(scenes), figsize=(6 * len(scenes), 4.5), squeeze=False)
     for ax, scene in zip(axes[0], scenes):
         rs = runs(results, "tradeoff", scene=scene)
+        lines = {}
         for m in methods(rs):
             line = sorted((r for r in rs if r["params"]["method"] == m), key=lambda r: r["params"]["shadow_size"])
-            ax.plot([r["figures"]["frame_ms"] for r in line], [100 * r["figures"]["err"] for r in line],
-                    marker=MARKERS.get(m, "o"), label=m)
+            lines[m] = ([r["figures"]["frame_ms"] for r in line], [100 * r["figures"]["err"] for r in line])
             for r in line:
                 if r["params"]["shadow_size"]:
                     ax.annotate(str(r["params"]["shadow_size"]), (r["figures"]["frame_ms"], 100 * r["figures"]["err"]),
                                 fontsize=6)
+        plot_lines(ax, lines)
         front = pareto([(r["figures"]["frame_ms"], 100 * r["figures"]["err"]) for r in rs])
         ax.plot([p[0] for p in front], [p[1] for p in front], color="gray", lw=6, alpha=0.25, label="Pareto front")
         ax.set(xscale="log", xlabel="frame_ms", ylabel="err (%)", title=f"Speed against accuracy: {scene}")
@@ -56,20 +76,24 @@ def tradeoff_chart(results, out):
 def stability_chart(results, out):
     fig, (err_ax, alias_ax, cross_ax) = plt.subplots(1, 3, figsize=(16, 4.5))
     rs = runs(results, "stability")
+    errs, aliasing = {}, {}
     for m in methods(rs):
         line = sorted((r for r in rs if r["params"]["method"] == m), key=lambda r: r["params"]["light_view_deg"])
         deg = [r["params"]["light_view_deg"] for r in line]
-        err_ax.plot(deg, [100 * r["figures"]["err"] for r in line], marker=MARKERS.get(m, "o"), label=m)
+        errs[m] = (deg, [100 * r["figures"]["err"] for r in line])
         lit = [(d, r["figures"]["alias_p95"]) for d, r in zip(deg, line) if r["figures"]["alias_p95"] > 0]
-        alias_ax.plot([d for d, _ in lit], [a for _, a in lit], marker=MARKERS.get(m, "o"), label=m)
+        aliasing[m] = ([d for d, _ in lit], [a for _, a in lit])
+    plot_lines(err_ax, errs)
+    plot_lines(alias_ax, aliasing)
     err_ax.set(xlabel="light-view angle (deg)", ylabel="err (%)", title="Error against the light direction (field)")
     alias_ax.set(xlabel="light-view angle (deg)", ylabel="alias_p95", yscale="log",
                  title="Aliasing against the light direction (field; none where nothing is lit)")
     rs = runs(results, "crossing")
+    crossing = {}
     for m in methods(rs):
         line = sorted((r for r in rs if r["params"]["method"] == m), key=lambda r: r["params"]["light_offset_m"])
-        cross_ax.plot([r["params"]["light_offset_m"] for r in line], [100 * r["figures"]["err"] for r in line],
-                      marker=MARKERS.get(m, "o"), label=m)
+        crossing[m] = ([r["params"]["light_offset_m"] for r in line], [100 * r["figures"]["err"] for r in line])
+    plot_lines(cross_ax, crossing)
     cross_ax.axvline(0, color="gray", ls=":")
     cross_ax.set_xscale("symlog", linthresh=1)
     offsets = sorted({r["params"]["light_offset_m"] for r in rs})
@@ -85,10 +109,11 @@ def stability_chart(results, out):
 def flythrough_chart(results, out):
     fig, ax = plt.subplots(figsize=(7, 4.5))
     rs = runs(results, "flythrough")
+    lines = {}
     for m in methods(rs):
         line = sorted((r for r in rs if r["params"]["method"] == m), key=lambda r: r["params"]["frame"])
-        ax.plot([r["params"]["t"] for r in line], [100 * r["figures"]["err"] for r in line], marker=MARKERS.get(m, "o"),
-                label=f"{m} (worst {100 * max(r['figures']['err'] for r in line):.2f} %)")
+        lines[m] = ([r["params"]["t"] for r in line], [100 * r["figures"]["err"] for r in line])
+    plot_lines(ax, lines, note=lambda ys: f" (worst {max(ys):.2f} %)")
     scene = rs[0]["params"]["scene"] if rs else ""
     ax.set(xlabel="t (s)", ylabel="err (%)", title=f"Error along the {scene} path")
     ax.legend(fontsize=7)
