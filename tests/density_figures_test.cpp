@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace ecoview {
 namespace {
 
@@ -17,6 +19,7 @@ DensityRenders eight_pixels() {
   r.polygons = frame({5, 1, 3, 9, -1, 2, 6, 4});
   r.occluders = frame({-1, -1, -1, 8, -1, -1, -1, -1});
   r.points = frame({-1, 1, 3, 8, -1, 2, 6, 4});
+  r.reference = r.polygons.color;
   return r;
 }
 
@@ -38,6 +41,20 @@ TEST(DensityFigures, ThirdsSplitTheCoveredPixelsByDepth) {
   EXPECT_FLOAT_EQ(f.third_depths[1], 3.0f);
   EXPECT_FLOAT_EQ(f.third_depths[2], 5.0f);
   EXPECT_FLOAT_EQ(f.third_depths[3], 6.0f);
+}
+
+TEST(DensityFigures, QualityIsMeasuredWhereEitherRenderShowsAPointObject) {
+  // The points alone show pixel 4 (empty in the polygon render), in another colour than the
+  // reference's there: the points lose PSNR, the polygons (equal to the reference) score 99 dB.
+  DensityRenders r = eight_pixels();
+  r.points.depth.samples[4] = 7.0f;
+  for (int c = 0; c < 3; ++c) r.points.color.samples[3 * 4 + c] = 200;
+  const DensityFigures f = density_figures(r, Image<std::uint32_t>{8, 1, 1, std::vector<std::uint32_t>(8, 1)});
+  EXPECT_DOUBLE_EQ(f.psnr_polygons, 99.0);
+  EXPECT_NEAR(f.ssim_polygons, 1.0, 1e-12);
+  // 7 measured pixels (6 covered by the polygons, 1 by the points alone), one off by 100.
+  EXPECT_NEAR(f.psnr, 10.0 * std::log10(255.0 * 255.0 * 7.0 / (100.0 * 100.0)), 1e-9);
+  EXPECT_LT(f.ssim, 1.0);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "app/bench/charts.hpp"
 #include "app/bench/density_figures.hpp"
 #include "app/bench/frame_timing.hpp"
+#include "app/bench/image_similarity.hpp"
 #include "app/bench/results.hpp"
 #include "app/bench/splat_paths.hpp"
 #include "app/capture/png.hpp"
@@ -11,8 +12,6 @@
 #include "app/file_io.hpp"
 #include "app/gl/context.hpp"
 #include "app/scene/scene_file.hpp"
-
-#include <glm/gtc/quaternion.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -32,6 +31,9 @@ struct Plan {
   bool temporal_reference;  // the moving camera's change also with every plant as polygons (two slow frames)
 };
 
+// The reference of the quality runs: the polygons at this many samples a pixel each way.
+constexpr int reference_samples = 4;
+
 // k at half, at and at twice the default.
 Plan plan_for(bool quick) {
   const double k = RenderSettings{}.k;
@@ -50,15 +52,6 @@ std::string stand_scene(int count) {
   for (int i = 0; i < 5; ++i) s << (i ? ", " : "") << R"({"species": ")" << species[i] << R"(", "count": )" << count / 5 << "}";
   s << "]}]}";
   return s.str();
-}
-
-// The camera turned sideways by half a pixel at the image centre.
-shadow::Camera turned_half_a_pixel(shadow::Camera camera, int height) {
-  const float half_pixel = std::tan(glm::radians(camera.fov_y_deg) / 2.0f) / static_cast<float>(height);
-  const glm::vec3 forward = camera.target - camera.position;
-  const glm::vec3 up = glm::normalize(glm::cross(glm::cross(forward, camera.up), forward));
-  camera.target = camera.position + glm::angleAxis(half_pixel, up) * forward;
-  return camera;
 }
 
 RenderedFrame grab(Renderer& renderer) { return {renderer.frame().read_color(), renderer.frame().read_depth()}; }
@@ -90,9 +83,9 @@ class DensityBench {
   DensityBench(const DensityOptions& o, const Plan& plan) : o_(o), plan_(plan), out_(o.run.out), base_(benchmark_settings(o.run)) {}
 
   // Quality against time: the scene's point-rendered objects, points against their polygons, with
-  // the plants the sampler draws as polygons in both. The polygons against themselves turned by
-  // half a pixel give the PSNR an exact renderer scores from that shift alone: the floor below
-  // which the figure measures aliasing, not the sampler.
+  // the plants the sampler draws as polygons in both, each against the polygons at 4 × 4 samples a
+  // pixel resolved: the true image, which the polygons at one sample a pixel miss too (sub-pixel
+  // leaves alias), so their figures are the floor the points are held to.
   void quality(const Scene& scene, const std::string& scene_name, Progress& progress) {
     RenderSettings settings = base_;
     settings.method = ShadowMethod::none;  // the sampler's quality alone; shadows are bench's
@@ -100,18 +93,20 @@ class DensityBench {
     // The measures (the plants drawn as polygons, what the rest hides) are the CPU sampler's
     // choice, so the points measured against them are its points too.
     settings.gpu_sampler = false;
+    // Every plant is polygons in this render, whatever k: one serves every k.
+    RenderSettings fine = settings;
+    fine.width *= reference_samples;
+    fine.height *= reference_samples;
+    fine.measure = RenderSettings::Measure::their_polygons;
+    const Image8 reference = box_filtered(render_once(scene, fine).color, reference_samples);
     for (double k : plan_.ks) {
       settings.k = static_cast<float>(k);
       DensityRenders renders;
+      renders.reference = reference;
       settings.measure = RenderSettings::Measure::without_them;
       renders.occluders = render_once(scene, settings);
       settings.measure = RenderSettings::Measure::their_polygons;
-      Renderer reference(scene, settings);
-      reference.render(scene.camera, scene.lights[0]);
-      renders.polygons = grab(reference);
-      reference.render(turned_half_a_pixel(scene.camera, settings.height), scene.lights[0]);
-      const double psnr_floor = psnr_over(point_object_pixels(renders.polygons, renders.occluders), renders.polygons.color,
-                                          reference.frame().read_color());
+      renders.polygons = render_once(scene, settings);
       for (int splat : plan_.splats) {
         settings.splat_size = splat;
         settings.measure = RenderSettings::Measure::off;
@@ -122,7 +117,8 @@ class DensityBench {
         BenchRun run;
         run.params = {{"sweep", "quality"}, {"scene", scene_name}, {"k", k}, {"splat", splat}, {"geometry", "points"},
                       {"width", settings.width}, {"height", settings.height}, {"frames", timing.frames}};
-        run.figures = {{"holes", f.holes}, {"psnr", f.psnr}, {"psnr_floor", psnr_floor}, {"pts_per_px", f.pts_per_px},
+        run.figures = {{"holes", f.holes}, {"psnr", f.psnr}, {"ssim", f.ssim}, {"psnr_polygons", f.psnr_polygons},
+                       {"ssim_polygons", f.ssim_polygons}, {"pts_per_px", f.pts_per_px},
                        {"pts_per_px_cv", f.pts_per_px_cv}, {"pts_per_px_near", f.pts_per_px_near},
                        {"pts_per_px_middle", f.pts_per_px_middle}, {"pts_per_px_far", f.pts_per_px_far},
                        {"depth_nearest", f.third_depths[0]}, {"depth_middle_from", f.third_depths[1]},
@@ -199,8 +195,8 @@ class DensityBench {
     draw_charts(out_, "density_charts.py");
     write_report(out_, "ecoview density",
                  "<h2>Charts</h2><img src=\"chart_quality.png\"><img src=\"chart_scale.png\"><img src=\"chart_thirds.png\">\n"
-                 "<h2>Images (" + defaults.str() + ": the defaults)</h2><table><tr><th>polygons</th><th>points</th><th>difference × 4</th><th>measured pixels (holes red)</th></tr>"
-                 "<tr><td><img src=\"images/polygons.png\"></td><td><img src=\"images/points.png\"></td>"
+                 "<h2>Images (" + defaults.str() + ": the defaults)</h2><table><tr><th>reference (polygons, 4 × 4 samples a pixel)</th><th>polygons</th><th>points</th><th>difference × 4</th><th>measured pixels (holes red)</th></tr>"
+                 "<tr><td><img src=\"images/reference.png\"></td><td><img src=\"images/polygons.png\"></td><td><img src=\"images/points.png\"></td>"
                  "<td><img src=\"images/difference.png\"></td><td><img src=\"images/coverage.png\"></td></tr></table>\n",
                  results_);
   }
@@ -235,6 +231,7 @@ class DensityBench {
     fs::create_directories(out_ / "images");
     const Image8& polygons = renders.polygons.color;
     const Image8& points = renders.points.color;
+    write_file_atomically(out_ / "images" / "reference.png", encode_png(renders.reference));
     write_file_atomically(out_ / "images" / "polygons.png", encode_png(polygons));
     write_file_atomically(out_ / "images" / "points.png", encode_png(points));
     write_file_atomically(out_ / "images" / "difference.png", encode_png(difference(polygons, points)));

@@ -1,5 +1,7 @@
 #include "app/bench/density_figures.hpp"
 
+#include "app/bench/image_similarity.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -16,21 +18,6 @@ std::vector<bool> point_object_pixels(const RenderedFrame& polygons, const Rende
   std::vector<bool> pixels(polygons.depth.samples.size());
   for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = in_front(polygons.depth.samples[i], occluders.depth.samples[i]);
   return pixels;
-}
-
-double psnr_over(const std::vector<bool>& pixels, const Image8& reference, const Image8& image) {
-  double squared_error = 0.0;
-  std::size_t samples = 0;
-  for (std::size_t i = 0; i < pixels.size(); ++i) {
-    if (!pixels[i]) continue;
-    for (std::size_t c = 3 * i; c < 3 * i + 3; ++c) {
-      const double e = static_cast<double>(reference.samples[c]) - static_cast<double>(image.samples[c]);
-      squared_error += e * e;
-    }
-    samples += 3;
-  }
-  if (samples == 0) return 0.0;
-  return squared_error > 0.0 ? 10.0 * std::log10(255.0 * 255.0 * static_cast<double>(samples) / squared_error) : 99.0;
 }
 
 Image8 coverage_map(const DensityRenders& renders) {
@@ -68,7 +55,12 @@ DensityFigures density_figures(const DensityRenders& renders, const Image<std::u
   }
   const auto n_covered = static_cast<double>(f.covered);
   f.holes = static_cast<double>(holes) / n_covered;
-  f.psnr = psnr_over(covered, renders.polygons.color, renders.points.color);
+  std::vector<bool> either = point_object_pixels(renders.points, renders.occluders);
+  for (std::size_t i = 0; i < either.size(); ++i) either[i] = either[i] || covered[i];
+  f.psnr = psnr_over(either, renders.reference, renders.points.color);
+  f.ssim = ssim_over(either, renders.reference, renders.points.color);
+  f.psnr_polygons = psnr_over(either, renders.reference, renders.polygons.color);
+  f.ssim_polygons = ssim_over(either, renders.reference, renders.polygons.color);
   f.pts_per_px = sum / n_covered;
   f.pts_per_px_cv = f.pts_per_px > 0.0 ? std::sqrt(std::max(0.0, sum_squares / n_covered - f.pts_per_px * f.pts_per_px)) / f.pts_per_px : 0.0;
   // Thirds of the pixels, not of the depth range: a few far pixels seen through a gap stretch the

@@ -11,7 +11,11 @@ namespace ecoview {
 // object, and the point render's points per pixel there.
 struct DensityFigures {
   double holes = 0.0;            // covered by polygons, not by points, over covered pixels
-  double psnr = 0.0;             // colour PSNR (dB) of points against polygons over covered pixels
+  // Colour PSNR (dB) and SSIM against the resolved reference, over the pixels where the points or
+  // the polygons show an object drawn as points: of the points, and of the polygons at one sample
+  // a pixel (what an exact renderer without antialiasing scores).
+  double psnr = 0.0, ssim = 0.0;
+  double psnr_polygons = 0.0, ssim_polygons = 0.0;
   double pts_per_px = 0.0;       // points per covered pixel (the counts given): mean
   double pts_per_px_cv = 0.0;    // and coefficient of variation over pixels
   double pts_per_px_near = 0.0;  // mean over the nearest third of the covered pixels, by depth
@@ -26,19 +30,18 @@ struct RenderedFrame {
   Image<float> depth;  // linear view depth, negative where nothing is drawn
 };
 
-// The three renders the figures compare, all with the instances the sampler draws as polygons:
-// the frame (the rest as points), the reference (the rest as polygons), and those polygons alone.
-// The plants drawn as polygons hide what lies behind them in both renders alike.
+// The renders the figures compare, all with the instances the sampler draws as polygons: the
+// frame (the rest as points), the polygon render (the rest as polygons), and those polygons alone.
+// The plants drawn as polygons hide what lies behind them in both renders alike. `reference`: the
+// polygon render at 4 × 4 samples a pixel, resolved to the frame's size (box_filtered).
 struct DensityRenders {
   RenderedFrame points, polygons, occluders;
+  Image8 reference;
 };
 
 // The pixels where the reference shows an object the frame draws as points: in front of the
 // polygons drawn alone.
 std::vector<bool> point_object_pixels(const RenderedFrame& polygons, const RenderedFrame& occluders);
-
-// Colour PSNR (dB) of an image against a reference over the given pixels.
-double psnr_over(const std::vector<bool>& pixels, const Image8& reference, const Image8& image);
 
 // Where the figures are taken: the polygon render dimmed to a third, covered pixels in it at full
 // brightness, holes among them red.
