@@ -19,6 +19,8 @@ DensityRenders eight_pixels() {
   r.polygons = frame({5, 1, 3, 9, -1, 2, 6, 4});
   r.occluders = frame({-1, -1, -1, 8, -1, -1, -1, -1});
   r.points = frame({-1, 1, 3, 8, -1, 2, 6, 4});
+  r.points_in_scene = r.points;
+  r.polygons_in_scene = r.polygons;
   r.reference = r.polygons.color;
   return r;
 }
@@ -47,14 +49,24 @@ TEST(DensityFigures, QualityIsMeasuredWhereEitherRenderShowsAPointObject) {
   // The points alone show pixel 4 (empty in the polygon render), in another colour than the
   // reference's there: the points lose PSNR, the polygons (equal to the reference) score 99 dB.
   DensityRenders r = eight_pixels();
-  r.points.depth.samples[4] = 7.0f;
-  for (int c = 0; c < 3; ++c) r.points.color.samples[3 * 4 + c] = 200;
+  r.points.depth.samples[4] = r.points_in_scene.depth.samples[4] = 7.0f;
+  for (int c = 0; c < 3; ++c) r.points_in_scene.color.samples[3 * 4 + c] = 200;
   const DensityFigures f = density_figures(r, Image<std::uint32_t>{8, 1, 1, std::vector<std::uint32_t>(8, 1)});
   EXPECT_DOUBLE_EQ(f.psnr_polygons, 99.0);
   EXPECT_NEAR(f.ssim_polygons, 1.0, 1e-12);
   // 7 measured pixels (6 covered by the polygons, 1 by the points alone), one off by 100.
   EXPECT_NEAR(f.psnr, 10.0 * std::log10(255.0 * 255.0 * 7.0 / (100.0 * 100.0)), 1e-9);
   EXPECT_LT(f.ssim, 1.0);
+}
+
+TEST(DensityFigures, QualityLeavesOutPixelsWhereTheGroundHidesThePlants) {
+  // Ground before the plant at pixel 1 in the whole scene (depth 0.5 against the plant's 1): the
+  // points' wrong colour there is not counted, as the frame does not show the plant.
+  DensityRenders r = eight_pixels();
+  r.points_in_scene.depth.samples[1] = r.polygons_in_scene.depth.samples[1] = 0.5f;
+  for (int c = 0; c < 3; ++c) r.points_in_scene.color.samples[3 * 1 + c] = 0;
+  const DensityFigures f = density_figures(r, Image<std::uint32_t>{8, 1, 1, std::vector<std::uint32_t>(8, 1)});
+  EXPECT_DOUBLE_EQ(f.psnr, 99.0);
 }
 
 }  // namespace

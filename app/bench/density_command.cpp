@@ -83,9 +83,10 @@ class DensityBench {
   DensityBench(const DensityOptions& o, const Plan& plan) : o_(o), plan_(plan), out_(o.run.out), base_(benchmark_settings(o.run)) {}
 
   // Quality against time: the scene's point-rendered objects, points against their polygons, with
-  // the plants the sampler draws as polygons in both, each against the polygons at 4 × 4 samples a
-  // pixel resolved: the true image, which the polygons at one sample a pixel miss too (sub-pixel
-  // leaves alias), so their figures are the floor the points are held to.
+  // the plants the sampler draws as polygons in both; and the whole frame, points and polygons at
+  // one sample a pixel, each against the polygons at 4 × 4 samples a pixel resolved: the true
+  // image, which the polygons miss too (sub-pixel leaves alias), so their figures are the floor
+  // the points are held to.
   void quality(const Scene& scene, const std::string& scene_name, Progress& progress) {
     RenderSettings settings = base_;
     settings.method = ShadowMethod::none;  // the sampler's quality alone; shadows are bench's
@@ -93,15 +94,18 @@ class DensityBench {
     // The measures (the plants drawn as polygons, what the rest hides) are the CPU sampler's
     // choice, so the points measured against them are its points too.
     settings.gpu_sampler = false;
-    // Every plant is polygons in this render, whatever k: one serves every k.
-    RenderSettings fine = settings;
-    fine.width *= reference_samples;
-    fine.height *= reference_samples;
-    fine.measure = RenderSettings::Measure::their_polygons;
-    const Image8 reference = box_filtered(render_once(scene, fine).color, reference_samples);
+    // The whole scene, every plant as polygons, whatever k: one render of each serves every k.
+    RenderSettings whole = settings;
+    whole.point_meshes_only = false;
+    whole.measure = RenderSettings::Measure::their_polygons;
+    const RenderedFrame polygons_in_scene = render_once(scene, whole);
+    whole.width *= reference_samples;
+    whole.height *= reference_samples;
+    const Image8 reference = box_filtered(render_once(scene, whole).color, reference_samples);
     for (double k : plan_.ks) {
       settings.k = static_cast<float>(k);
       DensityRenders renders;
+      renders.polygons_in_scene = polygons_in_scene;
       renders.reference = reference;
       settings.measure = RenderSettings::Measure::without_them;
       renders.occluders = render_once(scene, settings);
@@ -113,6 +117,9 @@ class DensityBench {
         Renderer points(scene, settings);
         const FrameTiming timing = time_frames(points, scene.camera, scene.lights[0], 0.0, plan_.warmup, plan_.frames);
         renders.points = grab(points);
+        RenderSettings points_in_scene = settings;
+        points_in_scene.point_meshes_only = false;
+        renders.points_in_scene = render_once(scene, points_in_scene);
         const DensityFigures f = density_figures(renders, points.count_points_on(renders.polygons.depth));
         BenchRun run;
         run.params = {{"sweep", "quality"}, {"scene", scene_name}, {"k", k}, {"splat", splat}, {"geometry", "points"},
@@ -195,8 +202,12 @@ class DensityBench {
     draw_charts(out_, "density_charts.py");
     write_report(out_, "ecoview density",
                  "<h2>Charts</h2><img src=\"chart_quality.png\"><img src=\"chart_scale.png\"><img src=\"chart_thirds.png\">\n"
-                 "<h2>Images (" + defaults.str() + ": the defaults)</h2><table><tr><th>reference (polygons, 4 × 4 samples a pixel)</th><th>polygons</th><th>points</th><th>difference × 4</th><th>measured pixels (holes red)</th></tr>"
-                 "<tr><td><img src=\"images/reference.png\"></td><td><img src=\"images/polygons.png\"></td><td><img src=\"images/points.png\"></td>"
+                 "<h2>Images (" + defaults.str() + ": the defaults)</h2>"
+                 "<table><tr><th>reference: polygons, 4 × 4 samples a pixel</th><th>polygons, 1 sample a pixel</th><th>points</th></tr>"
+                 "<tr><td><img src=\"images/reference.png\"></td><td><img src=\"images/polygons_in_scene.png\"></td>"
+                 "<td><img src=\"images/points_in_scene.png\"></td></tr></table>\n"
+                 "<table><tr><th>the objects drawn as points: polygons</th><th>points</th><th>difference × 4</th><th>measured pixels (holes red)</th></tr>"
+                 "<tr><td><img src=\"images/polygons.png\"></td><td><img src=\"images/points.png\"></td>"
                  "<td><img src=\"images/difference.png\"></td><td><img src=\"images/coverage.png\"></td></tr></table>\n",
                  results_);
   }
@@ -232,6 +243,8 @@ class DensityBench {
     const Image8& polygons = renders.polygons.color;
     const Image8& points = renders.points.color;
     write_file_atomically(out_ / "images" / "reference.png", encode_png(renders.reference));
+    write_file_atomically(out_ / "images" / "polygons_in_scene.png", encode_png(renders.polygons_in_scene.color));
+    write_file_atomically(out_ / "images" / "points_in_scene.png", encode_png(renders.points_in_scene.color));
     write_file_atomically(out_ / "images" / "polygons.png", encode_png(polygons));
     write_file_atomically(out_ / "images" / "points.png", encode_png(points));
     write_file_atomically(out_ / "images" / "difference.png", encode_png(difference(polygons, points)));

@@ -12,6 +12,25 @@ namespace {
 // Whether depth a is drawn and nearer than depth b (negative: nothing drawn).
 bool in_front(float a, float b) { return a >= 0.0f && (b < 0.0f || a < b); }
 
+// Depths of one surface in two renders: the same geometry, or the sampler's points of a plant in
+// a render with and without the ground, which may choose a little differently.
+constexpr float same_depth = 0.01f;
+
+// Where the points or the polygons show an object drawn as points in the whole scene: it shows
+// in the render of those objects, and the scene's render has the same depth there (no ground
+// before it).
+std::vector<bool> shown_by_either(const DensityRenders& renders) {
+  const std::vector<bool> by_points = point_object_pixels(renders.points, renders.occluders);
+  const std::vector<bool> by_polygons = point_object_pixels(renders.polygons, renders.occluders);
+  auto same_surface = [](float object, float scene) { return std::abs(object - scene) <= same_depth * object; };
+  std::vector<bool> either(by_points.size());
+  for (std::size_t i = 0; i < either.size(); ++i) {
+    either[i] = (by_points[i] && same_surface(renders.points.depth.samples[i], renders.points_in_scene.depth.samples[i])) ||
+                (by_polygons[i] && same_surface(renders.polygons.depth.samples[i], renders.polygons_in_scene.depth.samples[i]));
+  }
+  return either;
+}
+
 }  // namespace
 
 std::vector<bool> point_object_pixels(const RenderedFrame& polygons, const RenderedFrame& occluders) {
@@ -55,12 +74,11 @@ DensityFigures density_figures(const DensityRenders& renders, const Image<std::u
   }
   const auto n_covered = static_cast<double>(f.covered);
   f.holes = static_cast<double>(holes) / n_covered;
-  std::vector<bool> either = point_object_pixels(renders.points, renders.occluders);
-  for (std::size_t i = 0; i < either.size(); ++i) either[i] = either[i] || covered[i];
-  f.psnr = psnr_over(either, renders.reference, renders.points.color);
-  f.ssim = ssim_over(either, renders.reference, renders.points.color);
-  f.psnr_polygons = psnr_over(either, renders.reference, renders.polygons.color);
-  f.ssim_polygons = ssim_over(either, renders.reference, renders.polygons.color);
+  const std::vector<bool> either = shown_by_either(renders);
+  f.psnr = psnr_over(either, renders.reference, renders.points_in_scene.color);
+  f.ssim = ssim_over(either, renders.reference, renders.points_in_scene.color);
+  f.psnr_polygons = psnr_over(either, renders.reference, renders.polygons_in_scene.color);
+  f.ssim_polygons = ssim_over(either, renders.reference, renders.polygons_in_scene.color);
   f.pts_per_px = sum / n_covered;
   f.pts_per_px_cv = f.pts_per_px > 0.0 ? std::sqrt(std::max(0.0, sum_squares / n_covered - f.pts_per_px * f.pts_per_px)) / f.pts_per_px : 0.0;
   // Thirds of the pixels, not of the depth range: a few far pixels seen through a gap stretch the

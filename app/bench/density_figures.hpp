@@ -11,9 +11,9 @@ namespace ecoview {
 // object, and the point render's points per pixel there.
 struct DensityFigures {
   double holes = 0.0;            // covered by polygons, not by points, over covered pixels
-  // Colour PSNR (dB) and SSIM against the resolved reference, over the pixels where the points or
-  // the polygons show an object drawn as points: of the points, and of the polygons at one sample
-  // a pixel (what an exact renderer without antialiasing scores).
+  // Colour PSNR (dB) and SSIM of the whole frame against the resolved reference, over the pixels
+  // where the points or the polygons show an object drawn as points: of the points, and of the
+  // polygons at one sample a pixel (what an exact renderer without antialiasing scores).
   double psnr = 0.0, ssim = 0.0;
   double psnr_polygons = 0.0, ssim_polygons = 0.0;
   double pts_per_px = 0.0;       // points per covered pixel (the counts given): mean
@@ -31,11 +31,14 @@ struct RenderedFrame {
 };
 
 // The renders the figures compare, all with the instances the sampler draws as polygons: the
-// frame (the rest as points), the polygon render (the rest as polygons), and those polygons alone.
-// The plants drawn as polygons hide what lies behind them in both renders alike. `reference`: the
-// polygon render at 4 × 4 samples a pixel, resolved to the frame's size (box_filtered).
+// frame (the rest as points), the polygon render (the rest as polygons), and those polygons alone,
+// each of the objects drawn as points alone. The plants drawn as polygons hide what lies behind
+// them in both renders alike. And the frame and the polygon render of the whole scene (its ground
+// and sky behind the plants, as a user sees them), with `reference`: that polygon render at 4 × 4
+// samples a pixel, resolved to the frame's size (box_filtered).
 struct DensityRenders {
   RenderedFrame points, polygons, occluders;
+  RenderedFrame points_in_scene, polygons_in_scene;
   Image8 reference;
 };
 
