@@ -1,5 +1,5 @@
 // The lighting of shade.frag: Blinn-Phong with one shadowing light. The shadow term dims the
-// diffuse light instead of removing it (seed 003):
+// diffuse light instead of removing it (Kilgard 2001):
 // (ambient + diffuse_shade * diffuse) * albedo + visibility * specular.
 #include "shadow_views.glsl"
 

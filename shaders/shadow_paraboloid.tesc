@@ -1,6 +1,6 @@
 #version 450 core
 // Cuts each edge into pieces of at most 2 degrees as the light sees them (Osman et al. 2006,
-// seed 004 Sect. 4): a piece's midpoint then strays well under a texel from the curve the
+// Vanek et al. 2011, Sect. 4): a piece's midpoint then strays well under a texel from the curve the
 // paraboloid bends the edge into, in a 2048 map.
 layout(vertices = 3) out;
 

@@ -1,5 +1,5 @@
 #version 450 core
-// Per-triangle shadow volumes (Crow 1977; seed 001): each triangle, turned to face the light,
+// Per-triangle shadow volumes (Crow 1977): each triangle, turned to face the light,
 // becomes a closed prism — itself as the near cap, its projection away from the light at infinity
 // as the far cap, and a quad along each edge — every face wound to face out. Open and two-sided
 // meshes (leaves, planes) cast correctly this way, at the price of fill.

@@ -23,7 +23,7 @@ Cone cone_around(const glm::vec3& apex, const std::vector<glm::vec3>& points);
 glm::vec3 light_up(const glm::vec3& axis, const glm::vec3& forward);
 
 // The light's view of the focus bodies as one projective map, for a light at a finite point, at
-// infinity, or beyond infinity (an inverted light, whose rays converge on it: seed 000, Sect. 3),
+// infinity, or beyond infinity (an inverted light, whose rays converge on it: Stamminger and Drettakis 2002, Sect. 3),
 // with no switch between the cases. `light` is the homogeneous point the light shines from:
 // (position, 1) for a point light, (-direction, 0) for a directional one, any w in post-perspective
 // space. The map's axis runs through the receivers' centre the way the light travels there, and

@@ -15,7 +15,7 @@ namespace shadow {
 // stays inside one map.
 ShadowSetup dual_paraboloid_map(const Camera& camera, float aspect, const Light& light, const Box& scene, int map_size);
 
-// Improved paraboloid map (seed 004, Sect. 3): one paraboloid turned to the axis of the cone from
+// Improved paraboloid map (Vanek et al. 2011, Sect. 3): one paraboloid turned to the axis of the cone from
 // the light around the receivers and cut to that cone (zoom); where the cone is wider than a
 // hemisphere (the light among the receivers), a dual map along that axis.
 ShadowSetup improved_paraboloid_map(const Camera& camera, float aspect, const Light& light, const Box& scene, int map_size);

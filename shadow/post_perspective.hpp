@@ -3,7 +3,7 @@
 #include "shadow/convex_body.hpp"
 #include "shadow/light.hpp"
 
-// The camera's post-perspective space as the perspective shadow map uses it (seed 000, Sects. 3
+// The camera's post-perspective space as the perspective shadow map uses it (Stamminger and Drettakis 2002, Sects. 3
 // and 4.2), and what a light becomes there.
 namespace shadow {
 

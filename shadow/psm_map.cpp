@@ -33,7 +33,7 @@ ShadowSetup perspective_shadow_map(const Camera& camera, float aspect, const Lig
   pushed.near = std::clamp(nearest_visible, camera.near, 0.5f * camera.far);
   const FocusBodies bodies = focus_bodies(pushed.projection(aspect) * pushed.view(), light, scene);
   // Receivers all around a point light need the uniform cube: one warped map spreads its texels
-  // too thin over them (a case of seed 000, Sect. 3.3: a near point light).
+  // too thin over them (a case of Stamminger and Drettakis 2002, Sect. 3.3: a near point light).
   ShadowSetup uniform = focused_uniform_map(camera, aspect, light, scene, map_size);
   if (bodies.receivers.empty() || uniform.selection == ViewSelection::cube_faces) return uniform;
 

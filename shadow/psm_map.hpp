@@ -6,7 +6,7 @@
 
 namespace shadow {
 
-// The perspective shadow map (seed 000): the shadow map rendered in the camera's post-perspective
+// The perspective shadow map (Stamminger and Drettakis 2002): the shadow map rendered in the camera's post-perspective
 // space, where what is near the eye is large, so the map spends its texels where the eye looks
 // closely.
 //   near plane pushed → focus bodies → virtual camera → light in post-perspective space → fit,

@@ -8,7 +8,7 @@
 
 namespace shadow {
 
-// A paraboloid map (Brabec et al. 2002; seed 004) maps a light-space point q by the direction
+// A paraboloid map (Brabec et al. 2002) maps a light-space point q by the direction
 // d = q / |q|, in place of a projection matrix: the stereographic projection around the axis -z,
 //   map xy = d.xy / (1 - d.z) / zoom,   depth = 2 |q| / range - 1,
 // puts the cone of half-angle 2 atan(zoom) into the unit disc (zoom 1: the hemisphere), with

@@ -13,7 +13,7 @@ glm::vec3 random_unit(pointgen::Random& rng);
 Box scene_box();
 Camera random_camera(pointgen::Random& rng);
 Light random_light(pointgen::Random& rng, LightType type);
-// The PSM paper's best case (seed 000, Sect. 3.3): a camera 2 m up looking far along the ground,
+// The PSM paper's best case (Stamminger and Drettakis 2002, Sect. 3.3): a camera 2 m up looking far along the ground,
 // for a light across the view.
 Camera deep_view_camera();
 Camera camera_looking(const glm::vec3& position, const glm::vec3& target, float near, float far);

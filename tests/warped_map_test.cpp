@@ -180,7 +180,7 @@ TEST(WarpedMap, NearTexelsAreSmallerThanTheUniformMapsForALightAcrossTheView) {
   EXPECT_LT(lispsm, uniform / 4.0f);
 }
 
-// PSM, seed 000, Sect. 6: post-perspective depth is z_ndc = A - B n / z, so the depth range a
+// PSM, Stamminger and Drettakis 2002, Sect. 6: post-perspective depth is z_ndc = A - B n / z, so the depth range a
 // ground element at depth z takes grows with the near plane n; for a light across the view the
 // map resolves that depth, so pushing the near plane out to just before the point refines its
 // texels.

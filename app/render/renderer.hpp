@@ -185,7 +185,7 @@ class Renderer {
   shadow::Light light_;                              // of the last frame
   shadow::ShadowSetup setup_;  // of the last frame
   // PSM: the nearest depth the camera saw in the last frame, pushing the near plane of the next
-  // (seed 000, Sect. 6); 0 until a frame was drawn.
+  // (Stamminger and Drettakis 2002, Sect. 6); 0 until a frame was drawn.
   float nearest_visible_ = 0.0f;
   std::vector<glm::vec3> last_receivers_;           // culls_casters: sampled from the last frame
   bool has_last_frame_ = false;

@@ -6,7 +6,7 @@
 namespace ecoview {
 
 // Exact shadows of polygon casters by shadow volumes with the z-fail stencil test (Carmack's
-// reverse; seed 001): against the depth of a drawn frame, every triangle's volume (see
+// reverse, 2000): against the depth of a drawn frame, every triangle's volume (see
 // shaders/shadow_volume.geom) counts +1 behind the surface where it leaves and -1 where it
 // enters, so a count of 0 means lit. The result is a mask of the frame's pixels, 1 where the light
 // reaches the surface. Point splats receive through the mask but cast nothing.
