@@ -414,7 +414,9 @@ INSTANTIATE_TEST_SUITE_P(
                  {}, {"bad.json", "objects[0]", "memory budget"}},
         // A string from the file with a line break in it: still one line, the break escaped.
         BadInput{"newline_in_a_value", good_start + R"({"type": "laser\nsecond line"}]})", {}, {"objects[0].type", "laser\\nsecond"}},
-        BadInput{"stats_is_a_folder", "", {"--stats", "/"}, {"--stats", "is a folder"}}),
+        BadInput{"stats_is_a_folder", "", {"--stats", "/"}, {"--stats", "is a folder"}},
+        BadInput{"negative_bias", "", {"--bias-slope", "-1"}, {"--bias-slope", "between 0 and"}},
+        BadInput{"bias_not_a_number", "", {"--bias-constant", "nan"}, {"--bias-constant", "between 0 and"}}),
     [](const testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -121,6 +122,30 @@ TEST(RendererChange, FramesAfterAChangeAreThoseOfAFreshRenderer) {
     EXPECT_EQ(changed.frame().read_color().samples, fresh.frame().read_color().samples) << shadow_method_name(method);
     EXPECT_EQ(changed.shadow_setup().description, fresh.shadow_setup().description);
   }
+}
+
+// --bias-constant: polygon offset units, which for a float depth buffer are steps of 2^(e - 23)
+// at a depth of exponent e (the GL specification, 14.6.5). A ground plane under a light straight
+// above faces the map: no slope, so its depth in the map moves by the constant term alone.
+TEST(ShadowBias, TheConstantBiasMovesAFlatCasterByThatManyStepsOfItsDepth) {
+  const auto context = create_headless_context("egl");
+  const Scene scene = load_scene({"ground.json", R"({"camera": {"position": [0, 10, 20], "target": [0, 0, 0]},
+      "lights": [{"type": "directional", "direction": [0, -1, 0]}],
+      "objects": [{"type": "plane", "center": [0, 0, 0], "size": [40, 40]}]})",
+                                  [](const std::string&) { return std::nullopt; }});
+  auto centre_depth = [&](float constant) {
+    RenderSettings settings{320, 240, 256, ShadowMethod::uniform};
+    settings.shadow_bias = {0.0f, constant};
+    Renderer renderer(scene, settings);
+    renderer.render(scene.camera, scene.lights[0]);
+    return renderer.shadow_map().read_layer(0).at(128, 128);
+  };
+  const float unbiased = centre_depth(0.0f);
+  ASSERT_GT(unbiased, 0.0f);
+  ASSERT_LT(unbiased, 1.0f);
+  const float step = std::ldexp(1.0f, std::ilogb(unbiased) - 23);
+  EXPECT_NEAR(centre_depth(1000.0f) - unbiased, 1000.0f * step, 2.0f * step);
+  EXPECT_NEAR(centre_depth(100000.0f) - unbiased, 100000.0f * step, 2.0f * step);
 }
 
 // The frame's nearest depth, reduced on the GPU in blocks of 8 × 8 pixels, is the least positive

@@ -52,6 +52,15 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
       ->capture_default_str();
 }
 
+namespace {
+
+float check_bias(const char* option, double bias) {
+  if (!std::isfinite(bias) || bias < 0.0 || bias > 1e6) throw InputError(std::string(option) + ": must be between 0 and 1000000");
+  return static_cast<float>(bias);
+}
+
+}  // namespace
+
 void add_render_options(CLI::App& command, RenderOptions& o) {
   command.add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
   command.add_option("--shadow-size", o.shadow_size, "Shadow map size in texels (square)")->capture_default_str();
@@ -75,6 +84,12 @@ void add_render_options(CLI::App& command, RenderOptions& o) {
                                              "occlusion by coverage, again for each shadow view: the GPU sampler's oracle)")->capture_default_str();
   command.add_option("--k", o.k, "Point density: points per pixel of projected surface")->capture_default_str();
   command.add_option("--splat", o.splat, "Splat size in pixels (per side)")->capture_default_str();
+  command.add_option("--bias-slope", o.bias_slope, "Shadow maps' depth bias that grows with a polygon's depth slope as the "
+                                                   "light sees it (glPolygonOffset factor): too little leaves acne where the "
+                                                   "light grazes a surface")->capture_default_str();
+  command.add_option("--bias-constant", o.bias_constant, "Shadow maps' constant depth bias, in the depth buffer's smallest "
+                                                         "steps (glPolygonOffset units): too much lifts shadows off their casters")
+      ->capture_default_str();
 }
 
 RenderSettings render_settings(const RenderOptions& o) {
@@ -94,6 +109,7 @@ RenderSettings render_settings(const RenderOptions& o) {
   settings.k = static_cast<float>(o.k);
   if (o.splat < 1 || o.splat > 16) throw InputError("--splat: must be between 1 and 16 pixels");
   settings.splat_size = o.splat;
+  settings.shadow_bias = {check_bias("--bias-slope", o.bias_slope), check_bias("--bias-constant", o.bias_constant)};
   return settings;
 }
 

@@ -40,6 +40,7 @@ struct RenderSettings {
   // Texels per side in the shadow map. One: with k points per texel a splat of 2 x 2 closes the
   // gaps between leaves, and the plants' shadows grow (docs/benchmarks.md, "`ecoview bench`").
   int shadow_splat_size = 1;
+  ShadowPass::DepthBias shadow_bias{};  // the shadow pass's polygon offset (--bias-slope, --bias-constant)
   float points_per_triangle = 4.0f;  // a point costs 1/this of a triangle (the point-or-polygon choice)
   bool point_meshes_only = false;    // draw nothing else (for the density figures)
   // For the density figures: draw the instances the sampler makes points as polygons instead

@@ -5,18 +5,14 @@
 namespace ecoview {
 namespace {
 
-// glPolygonOffset(factor, units): the factor scales with the depth slope of each triangle, which
-// removes acne on surfaces the light grazes; the units add a few depth steps everywhere.
-constexpr float offset_factor = 2.0f;
-constexpr float offset_units = 4.0f;
-
 const std::vector<std::string> paraboloid_stages{"world_position.vert", "shadow_paraboloid.tesc", "shadow_paraboloid.tese", "shadow_depth.frag"};
 const std::string plant_index = "#define PLANT_INDEX\n";
 
 }  // namespace
 
-ShadowPass::ShadowPass(int size)
+ShadowPass::ShadowPass(int size, DepthBias bias)
     : size_(size),
+      bias_(bias),
       program_(gl::build_program({"shadow_depth.vert", "shadow_depth.frag"})),
       plant_program_(gl::build_program({"shadow_depth.vert", "shadow_depth.frag"}, plant_index)),
       paraboloid_program_(gl::build_program(paraboloid_stages)),
@@ -52,7 +48,7 @@ void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup,
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);  // planes are single-sided but cast shadows from both sides
   glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(offset_factor, offset_units);
+  glPolygonOffset(bias_.slope, bias_.constant);
   glNamedFramebufferTextureLayer(fb, GL_DEPTH_ATTACHMENT, depth_.name(), 0, layer);
   const float far_depth = 1.0f;
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);

@@ -11,7 +11,14 @@ namespace ecoview {
 // PCF), with slope-scaled polygon offset against acne. Paraboloid views tessellate the scene.
 class ShadowPass {
  public:
-  explicit ShadowPass(int size);
+  // glPolygonOffset(slope, constant): `slope` scales with each triangle's depth slope, which
+  // removes acne on surfaces the light grazes; `constant` adds that many depth steps everywhere.
+  // Too little leaves acne, too much lifts shadows off their casters (leak).
+  struct DepthBias {
+    float slope = 2.0f;
+    float constant = 4.0f;
+  };
+  ShadowPass(int size, DepthBias bias);
   // Draws one view of the setup into its layer.
   // With `plants`, also those polygon plants of a GPU sampler.
   void render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const GpuScene::PlantDraws* plants = nullptr);
@@ -24,6 +31,7 @@ class ShadowPass {
   void allocate(int layers);
 
   int size_;
+  DepthBias bias_;
   int layers_ = 0;
   gl::Texture depth_{GL_TEXTURE_2D_ARRAY};
   gl::Framebuffer framebuffer_;
