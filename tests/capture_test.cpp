@@ -135,9 +135,14 @@ TEST(Density, QuickRunWritesResultsChartsAndReport) {
   const CommandResult r = run_ecoview({"density", "--quick", "--scene", "square", "--size", "320x180", "--out", dir.path().string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* file : {"results.json", "results.csv", "chart_quality.png", "chart_scale.png", "chart_thirds.png",
-                           "report.html", "images/polygons.png", "images/points.png", "images/difference.png"}) {
+                           "report.html", "images/polygons.png", "images/points.png", "images/difference.png",
+                           "images/reference.png", "images/points_in_scene.png", "images/polygons_in_scene.png"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
   }
+  // The report says the run was quick, and shows the machine as a table.
+  const std::string report = read_bytes(dir / "report.html");
+  EXPECT_NE(report.find("(quick run)"), std::string::npos);
+  EXPECT_NE(report.find("<th>cores</th>"), std::string::npos);
   const nlohmann::json results = nlohmann::json::parse(read_bytes(dir / "results.json"));
   EXPECT_EQ(results["machine"]["cores"].get<int>() > 0, true);
   ASSERT_GE(results["runs"].size(), 6u);
@@ -152,6 +157,15 @@ TEST(Density, QuickRunWritesResultsChartsAndReport) {
                                      [](const nlohmann::json& run) { return run["params"]["sweep"] == "temporal"; });
   ASSERT_NE(temporal, results["runs"].end());
   EXPECT_EQ((*temporal)["figures"]["still_changed"].get<double>(), 0.0);
+  // The points' and the polygons' fidelity to the 4 × 4-sample reference, in their ranges.
+  for (const auto& run : results["runs"]) {
+    if (run["params"]["sweep"] != "quality") continue;
+    for (const char* ssim : {"ssim", "ssim_polygons"}) {
+      EXPECT_GT(run["figures"][ssim].get<double>(), 0.0) << ssim;
+      EXPECT_LE(run["figures"][ssim].get<double>(), 1.0) << ssim;
+    }
+    EXPECT_GT(run["figures"]["psnr_polygons"].get<double>(), 10.0);
+  }
 }
 
 TEST(Bench, QuickRunWritesResultsChartsCropsAndReportAndVolumesMatchTheReference) {
@@ -177,6 +191,13 @@ TEST(Bench, QuickRunWritesResultsChartsCropsAndReportAndVolumesMatchTheReference
     }
   }
   EXPECT_GT(volumes, 0);
+  // The ray-traced reference is timed and on the chart, with no error against itself to speak of.
+  const auto reference = std::find_if(results["runs"].begin(), results["runs"].end(), [](const nlohmann::json& run) {
+    return run["params"]["sweep"] == "tradeoff" && run["params"]["method"] == "reference";
+  });
+  ASSERT_NE(reference, results["runs"].end());
+  EXPECT_GT((*reference)["figures"]["frame_ms"].get<double>(), 0.0);
+  EXPECT_LT((*reference)["figures"]["err"].get<double>(), 1e-4);
   EXPECT_EQ(sweeps, (std::set<std::string>{"tradeoff", "stability", "crossing", "flythrough", "flicker"}));
 }
 

@@ -159,7 +159,7 @@ class ShadowBench {
     results_.machine = machine_info(renderer_name, o_.run.backend);
     write_results(out_, results_);
     draw_charts(out_, "bench_charts.py");
-    write_report(out_, "ecoview bench", report_body(), results_);
+    write_report(out_, "ecoview bench", report_body(), results_, o_.run.quick);
   }
 
  private:

@@ -39,6 +39,13 @@ std::string run_table(const BenchResults& results) {
   return html.str() + "</table>\n";
 }
 
+std::string machine_table(const nlohmann::json& machine) {
+  std::ostringstream html;
+  html << "<table>\n";
+  for (const auto& item : machine.items()) html << "<tr><th>" << item.key() << "</th><td>" << cell(item.value()) << "</td></tr>\n";
+  return html.str() + "</table>\n";
+}
+
 }  // namespace
 
 void draw_charts(const std::filesystem::path& folder, const std::string& script) {
@@ -56,13 +63,14 @@ void draw_charts(const std::filesystem::path& folder, const std::string& script)
 }
 
 void write_report(const std::filesystem::path& folder, const std::string& title, const std::string& body,
-                  const BenchResults& results) {
+                  const BenchResults& results, bool quick) {
   std::ostringstream html;
   html << "<!doctype html><html><head><meta charset=\"utf-8\"><title>" << title << "</title><style>"
           "body{font-family:sans-serif;margin:2em}td,th{border:1px solid #ccc;padding:3px;font-size:12px}"
-          "table{border-collapse:collapse}img{max-width:100%}</style></head><body>\n"
-       << "<h1>" << title << "</h1><p>" << results.machine.dump() << "</p>\n"
-       << body << "<h2>Runs</h2>\n" << run_table(results) << "</body></html>\n";
+          "table{border-collapse:collapse}img{max-width:100%}.quick{background:#fe9;padding:0.5em}</style></head><body>\n"
+       << "<h1>" << title << (quick ? " (quick run)" : "") << "</h1>\n";
+  if (quick) html << "<p class=\"quick\">A quick run (--quick): small scenes and few frames, to check that everything works. Its numbers are not for comparison.</p>\n";
+  html << "<h2>Machine</h2>\n" << machine_table(results.machine) << body << "<h2>Runs</h2>\n" << run_table(results) << "</body></html>\n";
   write_file_atomically(folder / "report.html", html.str());
 }
 

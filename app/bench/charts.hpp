@@ -11,9 +11,10 @@ namespace ecoview {
 // RuntimeFailure when python3-matplotlib is missing.
 void draw_charts(const std::filesystem::path& folder, const std::string& script);
 
-// folder/report.html: the title, the machine, `body` (HTML: charts, images) and every run's
-// parameters and figures.
+// folder/report.html: the title (marked when the run was `quick`: its numbers are not for
+// comparison), the machine as a table, `body` (HTML: charts, images) and every run's parameters
+// and figures.
 void write_report(const std::filesystem::path& folder, const std::string& title, const std::string& body,
-                  const BenchResults& results);
+                  const BenchResults& results, bool quick);
 
 }  // namespace ecoview

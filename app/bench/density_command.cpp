@@ -209,7 +209,7 @@ class DensityBench {
                  "<table><tr><th>the objects drawn as points: polygons</th><th>points</th><th>difference × 4</th><th>measured pixels (holes red)</th></tr>"
                  "<tr><td><img src=\"images/polygons.png\"></td><td><img src=\"images/points.png\"></td>"
                  "<td><img src=\"images/difference.png\"></td><td><img src=\"images/coverage.png\"></td></tr></table>\n",
-                 results_);
+                 results_, o_.run.quick);
   }
 
  private:
