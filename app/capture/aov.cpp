@@ -1,5 +1,6 @@
 #include "app/capture/aov.hpp"
 
+#include "app/capture/aliasing_colours.hpp"
 #include "app/capture/png.hpp"
 #include "app/errors.hpp"
 
@@ -43,18 +44,6 @@ std::filesystem::path aov_file(const std::filesystem::path& out, Aov aov, int fr
   char name[64];
   std::snprintf(name, sizeof name, "%s_%05d.png", aov_name(aov).c_str(), frame);
   return out / name;
-}
-
-Image8 aliasing_heat_map(const Image<float>& aliasing) {
-  Image8 image{aliasing.width, aliasing.height, 3, {}};
-  image.samples.reserve(aliasing.samples.size() * 3);
-  for (float a : aliasing.samples) {
-    const float t = a > 0.0f ? std::clamp((std::log2(a) + 3.0f) / 6.0f, 0.0f, 1.0f) : -1.0f;
-    const float red = std::clamp(2.0f * t - 1.0f, 0.0f, 1.0f), blue = std::clamp(1.0f - 2.0f * t, 0.0f, 1.0f);
-    const float green = t < 0.0f ? 0.0f : 1.0f - red - blue;
-    for (float c : {t < 0.0f ? 0.0f : red, green, t < 0.0f ? 0.0f : blue}) image.samples.push_back(static_cast<std::uint8_t>(std::lround(255.0f * c)));
-  }
-  return image;
 }
 
 namespace {

@@ -18,14 +18,10 @@ std::string aov_name(Aov aov);
 std::vector<Aov> parse_aov_list(const std::string& list);
 
 // The AOV of the last rendered frame as a PNG file. Depth is stored as
-// round(65534 × view depth / far), 65535 where no surface was drawn. The aliasing heat map goes
-// from blue (a texel 1/8 of a pixel) through green (1 pixel) to red (8 pixels and more), black
-// where no surface was drawn or there is no shadow map.
+// round(65534 × view depth / far), 65535 where no surface was drawn. The aliasing heat map:
+// app/capture/aliasing_colours.hpp.
 std::string encode_aov(Aov aov, Renderer& renderer, float far);
 // Where capture writes an AOV of a frame: DIR/<aov>_<frame, 5 digits>.png.
 std::filesystem::path aov_file(const std::filesystem::path& out, Aov aov, int frame);
-
-// The aliasing heat map as above, RGB.
-Image8 aliasing_heat_map(const Image<float>& aliasing);
 
 }  // namespace ecoview

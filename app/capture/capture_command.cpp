@@ -1,7 +1,9 @@
 #include "app/capture/capture_command.hpp"
 
 #include "app/bench/shadow_figures.hpp"
+#include "app/capture/aliasing_colours.hpp"
 #include "app/capture/aov.hpp"
+#include "app/capture/png.hpp"
 #include "app/cli/options.hpp"
 #include "app/cli/progress.hpp"
 #include "app/cli/scene_info.hpp"
@@ -135,6 +137,9 @@ int run_capture(const CaptureOptions& o) {
   const std::unique_ptr<GlContext> context = create_headless_context(o.backend);
   Renderer renderer(scene, settings);
   make_out_folder(o.out);  // once the driver has taken the settings
+  if (std::find(aovs.begin(), aovs.end(), Aov::aliasing) != aovs.end()) {
+    write_file_atomically(out / "aliasing_legend.png", encode_png(aliasing_legend()));
+  }
   // A process killed while writing a file left its temporary one; the files written again here
   // take theirs away.
   remove_stale_temporaries(out, frame_files(out, aovs, todo));

@@ -1,6 +1,6 @@
 #include "app/view/hud.hpp"
 
-#include "app/capture/aov.hpp"
+#include "app/capture/aliasing_colours.hpp"
 #include "app/errors.hpp"
 
 #include <backends/imgui_impl_glfw.h>
