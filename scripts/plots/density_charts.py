@@ -53,6 +53,10 @@ def scale_chart(results, out):
         drawn = [r["figures"]["points"] if geometry == "points" else r["figures"]["triangles"] for r in line]
         left.loglog(n, drawn, marker, label=f"{geometry}: {'points' if geometry == 'points' else 'triangles'} drawn")
         right.loglog(n, [r["figures"]["frame_ms"] for r in line], marker, label=geometry)
+        if geometry == "points" and line:
+            # The targets: from the fewest plants to the most, points at most 1.5 times, frame time 2 times.
+            left.axhline(1.5 * drawn[0], color="gray", ls=":", label="target: 1.5 × the points at the fewest")
+            right.axhline(2 * line[0]["figures"]["frame_ms"], color="gray", ls=":", label="target: 2 × the frame at the fewest")
     left.set(xlabel="instances", ylabel="drawn per frame", title="Points and polygons against instances")
     right.set(xlabel="instances", ylabel="frame_ms", title="Frame time against instances")
     left.legend()
