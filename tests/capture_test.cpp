@@ -172,7 +172,7 @@ TEST(Bench, QuickRunWritesResultsChartsCropsAndReportAndVolumesMatchTheReference
   const TempDir dir;
   const CommandResult r = run_ecoview({"bench", "--quick", "--size", "320x180", "--out", dir.path().string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* file : {"results.json", "results.csv", "chart_tradeoff.png", "chart_stability.png", "chart_flythrough.png",
+  for (const char* file : {"results.json", "results.csv", "chart_tradeoff.png", "chart_equal_err.png", "chart_stability.png", "chart_flythrough.png",
                            "report.html", "images/crop_field_psm.png", "images/crop_field_reference.png"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
   }
@@ -198,7 +198,7 @@ TEST(Bench, QuickRunWritesResultsChartsCropsAndReportAndVolumesMatchTheReference
   ASSERT_NE(reference, results["runs"].end());
   EXPECT_GT((*reference)["figures"]["frame_ms"].get<double>(), 0.0);
   EXPECT_LT((*reference)["figures"]["err"].get<double>(), 1e-4);
-  EXPECT_EQ(sweeps, (std::set<std::string>{"tradeoff", "stability", "crossing", "flythrough", "flicker"}));
+  EXPECT_EQ(sweeps, (std::set<std::string>{"tradeoff", "equal_err", "stability", "crossing", "flythrough", "flicker"}));
 }
 
 TEST(Capture, RendersARealGltfFile) {

@@ -91,22 +91,27 @@ pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSet
   return view;
 }
 
-// The settings, checked against what this driver can allocate before anything is.
-static RenderSettings within_limits(const RenderSettings& s) {
+std::string driver_refusal(const RenderSettings& s) {
   GLint max_texture = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
   const auto max_storage_block = static_cast<GLint64>(gl::max_storage_block_bytes());
   auto bytes = [](int w, int h) { return 4 * static_cast<GLint64>(w) * h; };  // one uint per pixel (PointSplat)
   if (std::max(s.width, s.height) > max_texture || (s.points && bytes(s.width, s.height) > max_storage_block)) {
-    throw InputError("--size: " + std::to_string(s.width) + "x" + std::to_string(s.height) + " is more than this driver "
-                     "renders (textures up to " + std::to_string(max_texture) + ", point buffers up to " +
-                     std::to_string(max_storage_block >> 20) + " MiB); use a smaller size");
+    return "--size: " + std::to_string(s.width) + "x" + std::to_string(s.height) + " is more than this driver "
+           "renders (textures up to " + std::to_string(max_texture) + ", point buffers up to " +
+           std::to_string(max_storage_block >> 20) + " MiB); use a smaller size";
   }
   if (s.shadow_size > max_texture || (s.points && bytes(s.shadow_size, s.shadow_size) > max_storage_block)) {
-    throw InputError("--shadow-size: " + std::to_string(s.shadow_size) + " is more than this driver renders (textures up to " +
-                     std::to_string(max_texture) + ", point buffers up to " + std::to_string(max_storage_block >> 20) +
-                     " MiB); use a smaller map");
+    return "--shadow-size: " + std::to_string(s.shadow_size) + " is more than this driver renders (textures up to " +
+           std::to_string(max_texture) + ", point buffers up to " + std::to_string(max_storage_block >> 20) +
+           " MiB); use a smaller map";
   }
+  return {};
+}
+
+// The settings, checked against what this driver can allocate before anything is.
+static RenderSettings within_limits(const RenderSettings& s) {
+  if (const std::string refusal = driver_refusal(s); !refusal.empty()) throw InputError(refusal);
   return s;
 }
 

@@ -55,6 +55,10 @@ struct RenderSettings {
   bool gpu_sampler = true;
 };
 
+// Why this driver cannot render a frame or a shadow map of the settings' sizes (its textures or
+// the point buffers would be too large); empty where it can. The Renderer throws it as InputError.
+std::string driver_refusal(const RenderSettings& settings);
+
 // What a frame drew, and how long its parts took.
 struct FrameStats {
   std::size_t points = 0;     // in the frame pass

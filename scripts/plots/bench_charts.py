@@ -73,6 +73,37 @@ def tradeoff_chart(results, out):
     fig.savefig(f"{out}/chart_tradeoff.png", dpi=100)
 
 
+def equal_err_chart(results, out):
+    """Per scene, each warped method's speed-up and texel ratio over the uniform map at its error;
+    open markers where the uniform map's sizes only bound them."""
+    rs = runs(results, "equal_err")
+    fig, (speed_ax, texel_ax) = plt.subplots(1, 2, figsize=(12, 4.5))
+    for scene in sorted({r["params"]["scene"] for r in rs}):
+        for m in methods([r for r in rs if r["params"]["scene"] == scene]):
+            line = sorted((r for r in rs if r["params"]["scene"] == scene and r["params"]["method"] == m),
+                          key=lambda r: -r["figures"]["err"])
+            errs = [100 * r["figures"]["err"] for r in line]
+            for ax, key in ((speed_ax, "equal_err_speedup"), (texel_ax, "equal_err_texels")):
+                drawn = ax.plot(errs, [r["figures"][key] for r in line], "-", label=f"{scene}: {m}")
+                for r, e in zip(line, errs):
+                    exact = r["params"]["bound"] == "equal"
+                    ax.plot([e], [r["figures"][key]], marker=MARKERS.get(m, "o"), color=drawn[0].get_color(),
+                            mfc=None if exact else "none")
+                    ax.annotate(str(r["params"]["shadow_size"]) + ("" if exact else " (" + r["params"]["bound"] + ")"),
+                                (e, r["figures"][key]), fontsize=6)
+    speed_ax.axhline(1, color="gray", ls=":", label="target: 1 (as fast as uniform)")
+    texel_ax.axhline(16, color="gray", ls=":", label="target on the field: 16")
+    speed_ax.set(xscale="log", yscale="log", xlabel="err (%) the method reaches (its map size marked)",
+                 ylabel="uniform's frame_ms / the method's", title="Speed-up at equal error")
+    texel_ax.set(xscale="log", yscale="log", xlabel="err (%) the method reaches (its map size marked)",
+                 ylabel="uniform's texels / the method's", title="Texels saved at equal error")
+    for ax in (speed_ax, texel_ax):
+        ax.invert_xaxis()
+        ax.legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(f"{out}/chart_equal_err.png", dpi=100)
+
+
 def stability_chart(results, out):
     fig, (err_ax, alias_ax, cross_ax) = plt.subplots(1, 3, figsize=(16, 4.5))
     rs = runs(results, "stability")
@@ -125,6 +156,7 @@ def main():
     results = json.load(open(sys.argv[1]))
     out = sys.argv[2]
     tradeoff_chart(results, out)
+    equal_err_chart(results, out)
     stability_chart(results, out)
     flythrough_chart(results, out)
 
