@@ -51,7 +51,7 @@ TEST(DensityFigures, QualityIsMeasuredWhereEitherRenderShowsAPointObject) {
   DensityRenders r = eight_pixels();
   r.points.depth.samples[4] = r.points_in_scene.depth.samples[4] = 7.0f;
   for (int c = 0; c < 3; ++c) r.points_in_scene.color.samples[3 * 4 + c] = 200;
-  const DensityFigures f = density_figures(r, Image<std::uint32_t>{8, 1, 1, std::vector<std::uint32_t>(8, 1)});
+  const FidelityFigures f = fidelity_figures(r);
   EXPECT_DOUBLE_EQ(f.psnr_polygons, 99.0);
   EXPECT_NEAR(f.ssim_polygons, 1.0, 1e-12);
   // 7 measured pixels (6 covered by the polygons, 1 by the points alone), one off by 100.
@@ -65,8 +65,7 @@ TEST(DensityFigures, QualityLeavesOutPixelsWhereTheGroundHidesThePlants) {
   DensityRenders r = eight_pixels();
   r.points_in_scene.depth.samples[1] = r.polygons_in_scene.depth.samples[1] = 0.5f;
   for (int c = 0; c < 3; ++c) r.points_in_scene.color.samples[3 * 1 + c] = 0;
-  const DensityFigures f = density_figures(r, Image<std::uint32_t>{8, 1, 1, std::vector<std::uint32_t>(8, 1)});
-  EXPECT_DOUBLE_EQ(f.psnr, 99.0);
+  EXPECT_DOUBLE_EQ(fidelity_figures(r).psnr, 99.0);
 }
 
 }  // namespace

@@ -121,11 +121,12 @@ class DensityBench {
         points_in_scene.point_meshes_only = false;
         renders.points_in_scene = render_once(scene, points_in_scene);
         const DensityFigures f = density_figures(renders, points.count_points_on(renders.polygons.depth));
+        const FidelityFigures fidelity = fidelity_figures(renders);
         BenchRun run;
         run.params = {{"sweep", "quality"}, {"scene", scene_name}, {"k", k}, {"splat", splat}, {"geometry", "points"},
                       {"width", settings.width}, {"height", settings.height}, {"frames", timing.frames}};
-        run.figures = {{"holes", f.holes}, {"psnr", f.psnr}, {"ssim", f.ssim}, {"psnr_polygons", f.psnr_polygons},
-                       {"ssim_polygons", f.ssim_polygons}, {"pts_per_px", f.pts_per_px},
+        run.figures = {{"holes", f.holes}, {"psnr", fidelity.psnr}, {"ssim", fidelity.ssim}, {"psnr_polygons", fidelity.psnr_polygons},
+                       {"ssim_polygons", fidelity.ssim_polygons}, {"pts_per_px", f.pts_per_px},
                        {"pts_per_px_cv", f.pts_per_px_cv}, {"pts_per_px_near", f.pts_per_px_near},
                        {"pts_per_px_middle", f.pts_per_px_middle}, {"pts_per_px_far", f.pts_per_px_far},
                        {"depth_nearest", f.third_depths[0]}, {"depth_middle_from", f.third_depths[1]},

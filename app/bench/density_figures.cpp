@@ -74,11 +74,6 @@ DensityFigures density_figures(const DensityRenders& renders, const Image<std::u
   }
   const auto n_covered = static_cast<double>(f.covered);
   f.holes = static_cast<double>(holes) / n_covered;
-  const std::vector<bool> either = shown_by_either(renders);
-  f.psnr = psnr_over(either, renders.reference, renders.points_in_scene.color);
-  f.ssim = ssim_over(either, renders.reference, renders.points_in_scene.color);
-  f.psnr_polygons = psnr_over(either, renders.reference, renders.polygons_in_scene.color);
-  f.ssim_polygons = ssim_over(either, renders.reference, renders.polygons_in_scene.color);
   f.pts_per_px = sum / n_covered;
   f.pts_per_px_cv = f.pts_per_px > 0.0 ? std::sqrt(std::max(0.0, sum_squares / n_covered - f.pts_per_px * f.pts_per_px)) / f.pts_per_px : 0.0;
   // Thirds of the pixels, not of the depth range: a few far pixels seen through a gap stretch the
@@ -96,6 +91,14 @@ DensityFigures density_figures(const DensityRenders& renders, const Image<std::u
   f.pts_per_px_middle = third_means[1];
   f.pts_per_px_far = third_means[2];
   return f;
+}
+
+FidelityFigures fidelity_figures(const DensityRenders& renders) {
+  const std::vector<bool> either = shown_by_either(renders);
+  return {psnr_over(either, renders.reference, renders.points_in_scene.color),
+          ssim_over(either, renders.reference, renders.points_in_scene.color),
+          psnr_over(either, renders.reference, renders.polygons_in_scene.color),
+          ssim_over(either, renders.reference, renders.polygons_in_scene.color)};
 }
 
 }  // namespace ecoview

@@ -11,11 +11,6 @@ namespace ecoview {
 // object, and the point render's points per pixel there.
 struct DensityFigures {
   double holes = 0.0;            // covered by polygons, not by points, over covered pixels
-  // Colour PSNR (dB) and SSIM of the whole frame against the resolved reference, over the pixels
-  // where the points or the polygons show an object drawn as points: of the points, and of the
-  // polygons at one sample a pixel (what an exact renderer without antialiasing scores).
-  double psnr = 0.0, ssim = 0.0;
-  double psnr_polygons = 0.0, ssim_polygons = 0.0;
   double pts_per_px = 0.0;       // points per covered pixel (the counts given): mean
   double pts_per_px_cv = 0.0;    // and coefficient of variation over pixels
   double pts_per_px_near = 0.0;  // mean over the nearest third of the covered pixels, by depth
@@ -50,7 +45,18 @@ std::vector<bool> point_object_pixels(const RenderedFrame& polygons, const Rende
 // brightness, holes among them red.
 Image8 coverage_map(const DensityRenders& renders);
 
-// `counts`: the point render's points per pixel (Renderer::count_points_on).
+// `counts`: the point render's points per pixel (Renderer::count_points_on). Of the renders, the
+// points, polygons and occluders.
 DensityFigures density_figures(const DensityRenders& renders, const Image<std::uint32_t>& counts);
+
+// Colour PSNR (dB) and SSIM of the whole frame against the resolved reference, over the pixels
+// where the points or the polygons show an object drawn as points (and the ground does not hide
+// it): of the points, and of the polygons at one sample a pixel (what an exact renderer without
+// antialiasing scores). Of the renders, all.
+struct FidelityFigures {
+  double psnr = 0.0, ssim = 0.0;
+  double psnr_polygons = 0.0, ssim_polygons = 0.0;
+};
+FidelityFigures fidelity_figures(const DensityRenders& renders);
 
 }  // namespace ecoview
