@@ -168,6 +168,17 @@ TEST(Density, QuickRunWritesResultsChartsAndReport) {
   }
 }
 
+// The quality runs' reference is drawn at 4 × 4 samples a pixel: a frame size whose reference the
+// driver cannot draw is refused with that reason, before any run.
+TEST(Density, ASizeWhoseReferenceIsTooLargeIsRefused) {
+  const TempDir dir;
+  const CommandResult r = run_ecoview({"density", "--quick", "--scene", "square", "--size", "4200x200", "--out", dir.path().string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--size"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("4 × 4 samples"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "results.json"));
+}
+
 TEST(Bench, QuickRunWritesResultsChartsCropsAndReportAndVolumesMatchTheReference) {
   const TempDir dir;
   const CommandResult r = run_ecoview({"bench", "--quick", "--size", "320x180", "--out", dir.path().string()});

@@ -94,14 +94,20 @@ class DensityBench {
     // The measures (the plants drawn as polygons, what the rest hides) are the CPU sampler's
     // choice, so the points measured against them are its points too.
     settings.gpu_sampler = false;
-    // The whole scene, every plant as polygons, whatever k: one render of each serves every k.
+    // The whole scene with every plant in view as polygons, whatever k: one render of each serves
+    // every k.
     RenderSettings whole = settings;
     whole.point_meshes_only = false;
-    whole.measure = RenderSettings::Measure::their_polygons;
+    whole.points = false;
+    RenderSettings fine = whole;
+    fine.width *= reference_samples;
+    fine.height *= reference_samples;
+    if (const std::string refusal = driver_refusal(fine); !refusal.empty()) {
+      throw InputError("--size: the quality runs' reference renders " + std::to_string(reference_samples) + " × " +
+                       std::to_string(reference_samples) + " samples a pixel, and " + refusal.substr(refusal.find(": ") + 2));
+    }
     const RenderedFrame polygons_in_scene = render_once(scene, whole);
-    whole.width *= reference_samples;
-    whole.height *= reference_samples;
-    const Image8 reference = box_filtered(render_once(scene, whole).color, reference_samples);
+    const Image8 reference = box_filtered(render_once(scene, fine).color, reference_samples);
     for (double k : plan_.ks) {
       settings.k = static_cast<float>(k);
       DensityRenders renders;
