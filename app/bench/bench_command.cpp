@@ -2,6 +2,7 @@
 
 #include "app/bench/charts.hpp"
 #include "app/bench/equal_error.hpp"
+#include "app/bench/measured_view.hpp"
 #include "app/bench/frame_timing.hpp"
 #include "app/bench/results.hpp"
 #include "app/bench/shadow_figures.hpp"
@@ -12,7 +13,6 @@
 #include "app/reference/exact_visibility.hpp"
 #include "app/scene/camera_path.hpp"
 #include "app/scene/scene_file.hpp"
-#include "shadow/aliasing.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -57,14 +57,6 @@ constexpr int favourable_light = 6;       // field: 90° between light and view
 constexpr float field_light_step_deg = 15.0f;
 constexpr int crop_size = 1024;           // the trade-off map size whose frames are cropped
 
-// One view of a scene: where the figures are taken.
-struct View {
-  const Scene& scene;
-  ExactVisibility& exact;
-  shadow::Camera camera;
-  shadow::Light light;
-  double t = 0.0;
-};
 
 class ShadowBench {
  public:
@@ -73,7 +65,7 @@ class ShadowBench {
   }
 
   // Speed against accuracy: every method at every map size, the methods of one size timed in turn.
-  void trade_off(const View& view, const std::string& scene_name, bool small, Progress& progress) {
+  void trade_off(const MeasuredView& view, const std::string& scene_name, bool small, Progress& progress) {
     const std::vector<ShadowMethod>& methods =
         view.light.type == shadow::LightType::directional ? directional_methods : point_methods;
     for (int size : plan_.sizes) {
@@ -91,7 +83,7 @@ class ShadowBench {
           time_frames_in_turn(timed, view.camera, view.light, view.t, small ? plan_.warmup : plan_.big_warmup,
                               small ? plan_.frames : plan_.big_frames);
       for (std::size_t m = 0; m < methods.size(); ++m) {
-        BenchRun run = measure(*renderers[m], view, timings[m]);
+        BenchRun run = measure_view(*renderers[m], view, timings[m]);
         run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", shadow_method_name(methods[m])}, {"shadow_size", size}});
         results_.runs.push_back(run);
         if (size == crop_size) crop(*renderers[m], scene_name, shadow_method_name(methods[m]));
@@ -105,7 +97,7 @@ class ShadowBench {
     // The exact methods are points on the chart too: what exactness costs here, one frame each.
     for (ShadowMethod exact : {ShadowMethod::volumes, ShadowMethod::reference}) {
       Renderer renderer(view.scene, settings(view.scene, exact, 0));
-      BenchRun run = measure(renderer, view, time_frames(renderer, view.camera, view.light, view.t, 0, 1));
+      BenchRun run = measure_view(renderer, view, time_frames(renderer, view.camera, view.light, view.t, 0, 1));
       run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", shadow_method_name(exact)}, {"shadow_size", 0}});
       results_.runs.push_back(run);
       crop(renderer, scene_name, shadow_method_name(exact));
@@ -119,7 +111,7 @@ class ShadowBench {
     for (std::size_t l = 0; l < field.lights.size(); l += static_cast<std::size_t>(plan_.angle_step)) {
       for (ShadowMethod method : directional_methods) {
         Renderer renderer(field, settings(field, method, crop_size));
-        BenchRun run = measure(renderer, {field, exact, field.camera, field.lights[l]});
+        BenchRun run = measure_view(renderer, {field, exact, field.camera, field.lights[l]});
         run.params.update({{"sweep", "stability"}, {"scene", "field"}, {"method", shadow_method_name(method)},
                            {"shadow_size", crop_size}, {"light_view_deg", field_light_step_deg * static_cast<float>(l)}});
         results_.runs.push_back(run);
@@ -137,7 +129,7 @@ class ShadowBench {
       lamp.position = field.camera.position + offset * field.camera.forward() + glm::vec3(0.0f, 8.0f, 0.0f);
       for (ShadowMethod method : point_methods) {
         Renderer renderer(field, settings(field, method, crop_size));
-        BenchRun run = measure(renderer, {field, exact, field.camera, lamp});
+        BenchRun run = measure_view(renderer, {field, exact, field.camera, lamp});
         run.params.update({{"sweep", "crossing"}, {"scene", "field"}, {"method", shadow_method_name(method)},
                            {"shadow_size", crop_size}, {"light_offset_m", offset}});
         results_.runs.push_back(run);
@@ -154,7 +146,7 @@ class ShadowBench {
       Renderer renderer(scene, settings(scene, method, crop_size));
       for (int f = 0; f < plan_.flight_frames; ++f) {
         const double t = path.duration() * f / std::max(1, plan_.flight_frames - 1);
-        BenchRun run = measure(renderer, {scene, exact, path.at(t, scene.camera), light, t});
+        BenchRun run = measure_view(renderer, {scene, exact, path.at(t, scene.camera), light, t});
         run.params.update({{"sweep", "flythrough"}, {"scene", scene_name}, {"method", shadow_method_name(method)},
                            {"shadow_size", crop_size}, {"frame", f}, {"t", t}});
         results_.runs.push_back(run);
@@ -183,36 +175,6 @@ class ShadowBench {
     return s;
   }
 
-  // The figures of one frame with the aliasing factor, against the exact reference, after a frame
-  // at the same place (the PSM takes its near plane from the last frame), and the times if taken.
-  BenchRun measure(Renderer& renderer, const View& view, const std::optional<FrameTiming>& timing = std::nullopt) {
-    BenchRun run;
-    if (timing) {
-      run.figures.update({{"frame_ms", timing->frame_ms}, {"sample_ms", timing->sample_ms}, {"host_ms", timing->host_ms},
-                          {"shadow_pass_ms", timing->shadow_pass_ms}, {"frame_pass_ms", timing->frame_pass_ms}});
-      run.params["frames"] = timing->frames;
-    } else {
-      renderer.render(view.camera, view.light, view.t);
-    }
-    renderer.set_aliasing(true);
-    renderer.render(view.camera, view.light, view.t);
-    renderer.set_aliasing(false);
-    const Image<float> depth = renderer.frame().read_depth();
-    const Image8 visibility = renderer.frame().read_visibility();
-    const ShadowErrors e = shadow_errors(visibility, reference(renderer, view, depth), depth);
-    run.figures.update({{"err", e.err}, {"err_near", e.err_near}, {"acne", e.acne}, {"leak", e.leak},
-                        {"alias_p95", alias_percentile(renderer.frame().read_aliasing(), visibility, shadow::p95_fraction)},
-                        {"points", renderer.stats().points}, {"triangles", renderer.stats().triangles},
-                        {"shadow_points", renderer.stats().shadow_points}, {"shadow_triangles", renderer.stats().shadow_triangles}});
-    run.params["shadow_setup"] = renderer.shadow_setup().description;
-    return run;
-  }
-
-  Image8 reference(const Renderer& renderer, const View& view, const Image<float>& depth) const {
-    view.exact.pose(renderer.tables());
-    return view.exact.trace(view.camera, view.light, depth);
-  }
-
   // flicker (DESIGN.md): the mean share of pixels whose shadow state changes between consecutive
   // frames at 30 per second from the middle of the path, less the same for the reference.
   BenchRun flicker(Renderer& renderer, const Scene& scene, ExactVisibility& exact, const CameraPath& path,
@@ -223,16 +185,16 @@ class ShadowBench {
     renderer.render(path.at(start, scene.camera), scene.lights[0], start);  // a last frame for the PSM
     for (int f = 0; f < plan_.flicker_frames; ++f) {
       const double t = start + f / 30.0;
-      const View view{scene, exact, path.at(t, scene.camera), scene.lights[0], t};
+      const MeasuredView view{scene, exact, path.at(t, scene.camera), scene.lights[0], t};
       renderer.render(view.camera, view.light, t);
       const Image<float> depth = renderer.frame().read_depth();
-      Image8 frame = renderer.frame().read_visibility(), exact_frame = reference(renderer, view, depth);
+      Image8 frame = renderer.frame().read_visibility(), exact = exact_frame(renderer, view, depth);
       if (f > 0) {
         changed += changed_shadow(last_frame, frame, depth);
-        reference_changed += changed_shadow(last_reference, exact_frame, depth);
+        reference_changed += changed_shadow(last_reference, exact, depth);
       }
       last_frame = std::move(frame);
-      last_reference = std::move(exact_frame);
+      last_reference = std::move(exact);
     }
     const double pairs = std::max(1, plan_.flicker_frames - 1);
     BenchRun run;
