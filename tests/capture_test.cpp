@@ -168,6 +168,35 @@ TEST(Density, QuickRunWritesResultsChartsAndReport) {
   }
 }
 
+// The paper suite renders each of its figures, measured against the exact reference; in its bias
+// sweep a large constant bias lifts the shadows off their casters (more leak than the default).
+TEST(Bench, PaperSuiteQuickRunRendersEveryFigure) {
+  const TempDir dir;
+  const CommandResult r = run_ecoview({"bench", "--suite", "paper", "--quick", "--size", "320x180", "--out", dir.path().string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* file : {"results.json", "results.csv", "report.html", "images/paper_fig1_psm_map.png", "images/paper_fig8_halves.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+  }
+  const nlohmann::json results = nlohmann::json::parse(read_bytes(dir / "results.json"));
+  std::set<std::string> figures;
+  double default_leak = -1.0, large_bias_leak = -1.0;
+  for (const auto& run : results["runs"]) {
+    figures.insert(run["params"]["figure"].get<std::string>());
+    for (const auto& figure : run["figures"].items()) {
+      EXPECT_TRUE(figure.value().is_number() && std::isfinite(figure.value().get<double>())) << figure.key();
+    }
+    if (run["params"]["figure"] == "bias" && run["params"]["bias_slope"] == 2.0) {
+      const double constant = run["params"]["bias_constant"].get<double>();
+      if (constant == 4.0) default_leak = run["figures"]["leak"].get<double>();
+      if (constant == 1e7) large_bias_leak = run["figures"]["leak"].get<double>();
+    }
+  }
+  EXPECT_EQ(figures, (std::set<std::string>{"fig1", "fig8", "fig9", "fig10", "ipsm", "overhead", "bias"}));
+  ASSERT_GE(default_leak, 0.0);
+  EXPECT_GT(large_bias_leak, default_leak);
+  EXPECT_EQ(run_ecoview({"bench", "--suite", "papers", "--quick", "--out", (dir / "other").string()}).exit_code, 2);
+}
+
 // The quality runs' reference is drawn at 4 × 4 samples a pixel: a frame size whose reference the
 // driver cannot draw is refused with that reason, before any run.
 TEST(Density, ASizeWhoseReferenceIsTooLargeIsRefused) {

@@ -3,11 +3,13 @@
 #include "app/bench/charts.hpp"
 #include "app/bench/equal_error.hpp"
 #include "app/bench/measured_view.hpp"
+#include "app/bench/paper_suite.hpp"
 #include "app/bench/frame_timing.hpp"
 #include "app/bench/results.hpp"
 #include "app/bench/shadow_figures.hpp"
 #include "app/capture/png.hpp"
 #include "app/cli/progress.hpp"
+#include "app/errors.hpp"
 #include "app/file_io.hpp"
 #include "app/gl/context.hpp"
 #include "app/reference/exact_visibility.hpp"
@@ -254,12 +256,21 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
                                               "plane, a flythrough; writes results.json, results.csv, charts, image "
                                               "crops and report.html");
   add_benchmark_options(*cmd, o.run, "Small scenes and a few configurations, to check that everything works");
+  cmd->add_option("--suite", o.suite, "methods: the sweeps above; paper: the PSM paper's figures 1, 8, 9 and 10, the "
+                                      "uniform, DPSM and IPSM table of Vanek et al. 2011, an overhead light at 128² and "
+                                      "the inverted light's depth-bias sweep, each timed and against the exact reference")
+      ->capture_default_str();
   return cmd;
 }
 
 int run_bench(const BenchOptions& o) {
   parse_size(o.run.size);
   check_backend(o.run.backend);
+  if (o.suite != "methods" && o.suite != "paper") throw InputError("--suite: expected methods or paper, got '" + o.suite + "'");
+  if (o.suite == "paper") {
+    run_paper_suite(o.run);
+    return 0;
+  }
   make_out_folder(o.run.out);
   const Plan plan = plan_for(o.run.quick);
   const Scene field = load_scene_option("field", o.run.memory_budget_gib);

@@ -9,6 +9,7 @@ namespace ecoview {
 
 struct BenchOptions {
   BenchmarkOptions run{"640x360"};  // --quick: small scenes and a few configurations
+  std::string suite = "methods";    // or "paper" (app/bench/paper_suite.hpp)
 };
 
 // Registers `ecoview bench`: shadow methods, speed against accuracy against the exact reference
