@@ -173,7 +173,7 @@ class ShadowBench {
     RenderSettings s = base_;
     s.method = method;
     if (shadow_size > 0) s.shadow_size = shadow_size;
-    s.points = s.points && std::find(scene.point_meshes.begin(), scene.point_meshes.end(), true) != scene.point_meshes.end();
+    s.points = s.points && scene.has_point_meshes();
     return s;
   }
 

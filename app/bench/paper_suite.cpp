@@ -55,7 +55,7 @@ class PaperSuite {
   void fig1(Progress& progress) {
     const Loaded chess = load("chess");
     for (ShadowMethod m : {ShadowMethod::uniform, ShadowMethod::psm}) {
-      Renderer renderer(chess.scene, settings(m, 512));
+      Renderer renderer(chess.scene, settings(chess, m, 512));
       add("fig1", "chess", renderer, chess.view(chess.scene.lights[0]), small_timing());
       write_png("paper_fig1_" + shadow_method_name(m) + "_map.png", encode_aov(Aov::shadowmap, renderer, chess.scene.camera.far));
       progress.step();
@@ -67,7 +67,7 @@ class PaperSuite {
     const Loaded square = load("square");
     Image8 halves;
     for (ShadowMethod m : {ShadowMethod::uniform, ShadowMethod::psm}) {
-      Renderer renderer(square.scene, settings(m, 1024));
+      Renderer renderer(square.scene, settings(square, m, 1024));
       add("fig8", "square", renderer, square.view(square.scene.lights[0]), small_timing());
       const Image8 color = renderer.frame().read_color();
       if (m == ShadowMethod::uniform) {
@@ -88,7 +88,7 @@ class PaperSuite {
   void fig9(Progress& progress) {
     const Loaded street = load("street");
     const CameraPath path = CameraPath::load(open_input("street", "paths"));
-    Renderer renderer(street.scene, settings(ShadowMethod::psm, 1024));
+    Renderer renderer(street.scene, settings(street, ShadowMethod::psm, 1024));
     const int frames = quick_ ? 2 : 6;
     for (int f = 0; f < frames; ++f) {
       const double t = path.duration() * f / (frames - 1);
@@ -106,7 +106,7 @@ class PaperSuite {
     const std::string name = quick_ ? "courtyard" : default_scene_name;
     const Loaded eco = load(name);
     for (ShadowMethod m : {ShadowMethod::none, ShadowMethod::uniform, ShadowMethod::psm}) {
-      Renderer renderer(eco.scene, settings(m, 1024));
+      Renderer renderer(eco.scene, settings(eco, m, 1024));
       add("fig10", name, renderer, eco.view(eco.scene.lights[0]), quick_ ? small_timing() : Timing{1, 3});
       progress.step();
     }
@@ -119,7 +119,7 @@ class PaperSuite {
       const Loaded scene = load(name);
       for (int size : {512, 2048}) {
         for (ShadowMethod m : {ShadowMethod::uniform, ShadowMethod::dpsm, ShadowMethod::ipsm}) {
-          Renderer renderer(scene.scene, settings(m, size));
+          Renderer renderer(scene.scene, settings(scene, m, size));
           add("ipsm", name, renderer, scene.view(scene.scene.lights[static_cast<std::size_t>(light)]), small_timing(), size == 512);
           progress.step();
         }
@@ -134,7 +134,7 @@ class PaperSuite {
   void implementation_note(Progress& progress) {
     const Loaded field = load("field");
     for (ShadowMethod m : {ShadowMethod::uniform, ShadowMethod::psm}) {
-      Renderer renderer(field.scene, settings(m, 128));
+      Renderer renderer(field.scene, settings(field, m, 128));
       add("overhead", "field", renderer, field.view(field.scene.lights[across_the_view]), small_timing());
       progress.step();
     }
@@ -164,10 +164,12 @@ class PaperSuite {
     return loaded;
   }
 
-  RenderSettings settings(ShadowMethod method, int shadow_size) const {
+  // As `bench` sets them: points off in a scene without point meshes.
+  RenderSettings settings(const Loaded& loaded, ShadowMethod method, int shadow_size) const {
     RenderSettings s = base_;
     s.method = method;
     s.shadow_size = shadow_size;
+    s.points = s.points && loaded.scene.has_point_meshes();
     return s;
   }
 
@@ -190,7 +192,7 @@ class PaperSuite {
   }
 
   void bias_run(const Loaded& field, ShadowPass::DepthBias bias, Progress& progress) {
-    RenderSettings s = settings(ShadowMethod::psm, 1024);
+    RenderSettings s = settings(field, ShadowMethod::psm, 1024);
     s.shadow_bias = bias;
     Renderer renderer(field.scene, s);
     BenchRun& run = add("bias", "field", renderer, field.view(field.scene.lights[0]), small_timing(), false);

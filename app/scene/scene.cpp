@@ -1,5 +1,7 @@
 #include "app/scene/scene.hpp"
 
+#include <algorithm>
+
 namespace ecoview {
 
 shadow::Box Scene::bounds() const {
@@ -30,6 +32,8 @@ std::size_t Scene::triangle_count() const {
   for (const pointgen::InstanceTable& group : groups) count += meshes[group.mesh].triangle_count() * group.transforms.size();
   return count;
 }
+
+bool Scene::has_point_meshes() const { return std::find(point_meshes.begin(), point_meshes.end(), true) != point_meshes.end(); }
 
 std::size_t Scene::instance_count() const {
   std::size_t count = 0;

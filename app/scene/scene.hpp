@@ -36,6 +36,8 @@ struct Scene {
   // Triangles drawn when every instance is drawn as polygons.
   std::size_t triangle_count() const;
   std::size_t instance_count() const;
+  // Whether any mesh may be drawn as points (a scene without one renders the same with points off).
+  bool has_point_meshes() const;
 };
 
 }  // namespace ecoview
