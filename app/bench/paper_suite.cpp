@@ -47,7 +47,7 @@ struct Timing {
 
 class PaperSuite {
  public:
-  PaperSuite(const BenchmarkOptions& o) : o_(o), out_(o.out), base_(benchmark_settings(o)), quick_(o.quick) {
+  explicit PaperSuite(const BenchmarkOptions& o) : o_(o), out_(o.out), base_(benchmark_settings(o)), quick_(o.quick) {
     fs::create_directories(out_ / "images");
   }
 
