@@ -174,7 +174,8 @@ TEST(Bench, PaperSuiteQuickRunRendersEveryFigure) {
   const TempDir dir;
   const CommandResult r = run_ecoview({"bench", "--suite", "paper", "--quick", "--size", "320x180", "--out", dir.path().string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* file : {"results.json", "results.csv", "report.html", "images/paper_fig1_psm_map.png", "images/paper_fig8_halves.png"}) {
+  for (const char* file : {"results.json", "results.csv", "report.html", "chart_bias.png", "images/paper_fig1_psm_map.png",
+                           "images/paper_fig8_halves.png"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
   }
   const nlohmann::json results = nlohmann::json::parse(read_bytes(dir / "results.json"));

@@ -148,6 +148,7 @@ class PaperSuite {
   void finish(const std::string& renderer_name) {
     results_.machine = machine_info(renderer_name, o_.backend);
     write_results(out_, results_);
+    draw_charts(out_, "paper_charts.py");
     write_report(out_, "ecoview bench --suite paper", report_body(), results_, quick_);
   }
 
@@ -225,6 +226,7 @@ class PaperSuite {
       }
       if (figure == "fig1") html << "<img src=\"images/paper_fig1_uniform_map.png\"><img src=\"images/paper_fig1_psm_map.png\">";
       if (figure == "fig8") html << "<img src=\"images/paper_fig8_halves.png\">";
+      if (figure == "bias") html << "<img src=\"chart_bias.png\">";
       html << "\n";
     }
     return html.str();
