@@ -62,6 +62,19 @@ TEST(Capture, SameFrameGivesSameBytes) {
   }
 }
 
+// A scene with no mesh drawn as points renders to the same bytes with points on and off (the
+// benchmarks turn them off there: for_scene).
+TEST(Capture, ASceneWithoutPointMeshesRendersTheSameWithPointsOnOrOff) {
+  const TempDir dir;
+  for (const char* geometry : {"points", "polygons"}) {
+    ASSERT_EQ(run_ecoview({"capture", "--scene", "field", "--geometry", geometry, "--method", "psm", "--size", "160x90",
+                           "--frames", "0:2", "--aov", "color,shadow", "--out", (dir / geometry).string()}).exit_code, 0);
+  }
+  for (const char* file : {"color_00001.png", "shadow_00001.png"}) {
+    EXPECT_EQ(read_bytes(dir / "points" / file), read_bytes(dir / "polygons" / file)) << file;
+  }
+}
+
 TEST(Capture, FramesAlongAPathDiffer) {
   const TempDir dir;
   ASSERT_EQ(run_ecoview({"capture", "--scene", "courtyard", "--path", "courtyard", "--frames", "0:31:", "--out", dir.path()}).exit_code, 2);

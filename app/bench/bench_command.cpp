@@ -71,14 +71,14 @@ class ShadowBench {
     const std::vector<ShadowMethod>& methods =
         view.light.type == shadow::LightType::directional ? directional_methods : point_methods;
     for (int size : plan_.sizes) {
-      if (!driver_refusal(settings(view.scene, methods.front(), size)).empty()) {  // where the driver allows
+      if (!driver_refusal(for_scene(settings(methods.front(), size), view.scene)).empty()) {  // where the driver allows
         for (std::size_t m = 0; m < methods.size(); ++m) progress.step();
         continue;
       }
       std::vector<std::unique_ptr<Renderer>> renderers;
       std::vector<Renderer*> timed;
       for (ShadowMethod method : methods) {
-        renderers.push_back(std::make_unique<Renderer>(view.scene, settings(view.scene, method, size)));
+        renderers.push_back(std::make_unique<Renderer>(view.scene, for_scene(settings(method, size), view.scene)));
         timed.push_back(renderers.back().get());
       }
       const std::vector<FrameTiming> timings =
@@ -98,7 +98,7 @@ class ShadowBench {
     }
     // The exact methods are points on the chart too: what exactness costs here, one frame each.
     for (ShadowMethod exact : {ShadowMethod::volumes, ShadowMethod::reference}) {
-      Renderer renderer(view.scene, settings(view.scene, exact, 0));
+      Renderer renderer(view.scene, for_scene(settings(exact, 0), view.scene));
       BenchRun run = measure_view(renderer, view, time_frames(renderer, view.camera, view.light, view.t, 0, 1));
       run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", shadow_method_name(exact)}, {"shadow_size", 0}});
       results_.runs.push_back(run);
@@ -112,7 +112,7 @@ class ShadowBench {
   void stability(const Scene& field, ExactVisibility& exact, Progress& progress) {
     for (std::size_t l = 0; l < field.lights.size(); l += static_cast<std::size_t>(plan_.angle_step)) {
       for (ShadowMethod method : directional_methods) {
-        Renderer renderer(field, settings(field, method, crop_size));
+        Renderer renderer(field, for_scene(settings(method, crop_size), field));
         BenchRun run = measure_view(renderer, {field, exact, field.camera, field.lights[l]});
         run.params.update({{"sweep", "stability"}, {"scene", "field"}, {"method", shadow_method_name(method)},
                            {"shadow_size", crop_size}, {"light_view_deg", field_light_step_deg * static_cast<float>(l)}});
@@ -130,7 +130,7 @@ class ShadowBench {
       lamp.type = shadow::LightType::point;
       lamp.position = field.camera.position + offset * field.camera.forward() + glm::vec3(0.0f, 8.0f, 0.0f);
       for (ShadowMethod method : point_methods) {
-        Renderer renderer(field, settings(field, method, crop_size));
+        Renderer renderer(field, for_scene(settings(method, crop_size), field));
         BenchRun run = measure_view(renderer, {field, exact, field.camera, lamp});
         run.params.update({{"sweep", "crossing"}, {"scene", "field"}, {"method", shadow_method_name(method)},
                            {"shadow_size", crop_size}, {"light_offset_m", offset}});
@@ -145,7 +145,7 @@ class ShadowBench {
                   Progress& progress) {
     const shadow::Light& light = scene.lights[0];
     for (ShadowMethod method : directional_methods) {
-      Renderer renderer(scene, settings(scene, method, crop_size));
+      Renderer renderer(scene, for_scene(settings(method, crop_size), scene));
       for (int f = 0; f < plan_.flight_frames; ++f) {
         const double t = path.duration() * f / std::max(1, plan_.flight_frames - 1);
         BenchRun run = measure_view(renderer, {scene, exact, path.at(t, scene.camera), light, t});
@@ -167,13 +167,10 @@ class ShadowBench {
   }
 
  private:
-  // A scene without point meshes renders with points off: the same frames, and its maps may then
-  // be as large as the driver's textures (the point buffers cap them at 4096² on llvmpipe).
-  RenderSettings settings(const Scene& scene, ShadowMethod method, int shadow_size) const {
+  RenderSettings settings(ShadowMethod method, int shadow_size) const {
     RenderSettings s = base_;
     s.method = method;
     if (shadow_size > 0) s.shadow_size = shadow_size;
-    s.points = s.points && scene.has_point_meshes();
     return s;
   }
 

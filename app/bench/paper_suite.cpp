@@ -10,6 +10,7 @@
 #include "app/scene/camera_path.hpp"
 #include "app/scene/scene_file.hpp"
 
+#include <array>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -40,6 +41,10 @@ const std::vector<std::pair<std::string, std::string>> claims = {
 };
 
 constexpr std::size_t across_the_view = 6;  // the field's light at 90° to the view
+// The bias sweep: constants with the default slope, then slopes with the default constant.
+constexpr std::array<float, 6> bias_constants = {0.0f, 4.0f, 1e3f, 1e5f, 1e6f, 1e7f};
+constexpr std::array<float, 4> bias_slopes = {0.0f, 8.0f, 64.0f, 512.0f};
+constexpr int street_frames = 6, quick_street_frames = 2;
 
 struct Timing {
   int warmup, frames;
@@ -89,7 +94,7 @@ class PaperSuite {
     const Loaded street = load("street");
     const CameraPath path = CameraPath::load(open_input("street", "paths"));
     Renderer renderer(street.scene, settings(street, ShadowMethod::psm, 1024));
-    const int frames = quick_ ? 2 : 6;
+    const int frames = quick_ ? quick_street_frames : street_frames;
     for (int f = 0; f < frames; ++f) {
       const double t = path.duration() * f / (frames - 1);
       MeasuredView view = street.view(street.scene.lights[0]);
@@ -139,11 +144,16 @@ class PaperSuite {
       progress.step();
     }
     const ShadowPass::DepthBias defaults;
-    for (float constant : {0.0f, 4.0f, 1e3f, 1e5f, 1e6f, 1e7f}) bias_run(field, {defaults.slope, constant}, progress);
-    for (float slope : {0.0f, 8.0f, 64.0f, 512.0f}) bias_run(field, {slope, defaults.constant}, progress);
+    for (float constant : bias_constants) bias_run(field, {defaults.slope, constant}, progress);
+    for (float slope : bias_slopes) bias_run(field, {slope, defaults.constant}, progress);
   }
 
-  static std::size_t steps(bool quick) { return 2 + 2 + (quick ? 2 : 6) + 3 + 12 + 2 + 10; }
+  // Fig. 1, 8: two methods; Fig. 9: its frames; Fig. 10: three methods; the table: two scenes, two
+  // sizes, three methods; the overhead light: two methods; the bias sweep.
+  static std::size_t steps(bool quick) {
+    return 2 + 2 + static_cast<std::size_t>(quick ? quick_street_frames : street_frames) + 3 + 12 + 2 + bias_constants.size() +
+           bias_slopes.size();
+  }
 
   void finish(const std::string& renderer_name) {
     results_.machine = machine_info(renderer_name, o_.backend);
@@ -165,13 +175,12 @@ class PaperSuite {
     return loaded;
   }
 
-  // As `bench` sets them: points off in a scene without point meshes.
+  // As bench sets them (for_scene: points off where the scene has no point meshes).
   RenderSettings settings(const Loaded& loaded, ShadowMethod method, int shadow_size) const {
     RenderSettings s = base_;
     s.method = method;
     s.shadow_size = shadow_size;
-    s.points = s.points && loaded.scene.has_point_meshes();
-    return s;
+    return for_scene(s, loaded.scene);
   }
 
   Timing small_timing() const { return quick_ ? Timing{0, 1} : Timing{2, 8}; }

@@ -91,6 +91,11 @@ pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSet
   return view;
 }
 
+RenderSettings for_scene(RenderSettings settings, const Scene& scene) {
+  settings.points = settings.points && scene.has_point_meshes();
+  return settings;
+}
+
 std::string driver_refusal(const RenderSettings& s) {
   GLint max_texture = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
@@ -121,7 +126,7 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       scene_bounds_(scene.bounds()),
       tables_(scene.groups),
       gpu_scene_(scene),
-      samples_(scene, settings.points_per_triangle, settings.points),
+      samples_(scene, settings_.points_per_triangle, settings_.points),
       cells_(tables_, samples_.meshes()),
       shadow_pass_(settings.shadow_size, settings.shadow_bias),
       frame_pass_(settings.width, settings.height, settings.aliasing),
@@ -134,7 +139,7 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       cells_.update(g, tables_[g], samples_.meshes()[tables_[g].mesh]);
     }
   }
-  if (settings.points && settings.gpu_sampler && settings.measure == RenderSettings::Measure::off) {
+  if (settings_.points && settings_.gpu_sampler && settings_.measure == RenderSettings::Measure::off) {
     gpu_sampler_ = std::make_unique<GpuSampler>(tables_, samples_, gpu_scene_.point_mesh_places());
     occluders_ = std::make_unique<DepthPyramid>(glm::ivec2(settings.width, settings.height));
     receivers_ = std::make_unique<DepthPyramid>(glm::ivec2(receiver_mask_size));

@@ -55,6 +55,10 @@ struct RenderSettings {
   bool gpu_sampler = true;
 };
 
+// The settings with points off where the scene has no mesh that may be drawn as points: the same
+// frames, without the point passes over nothing and their buffers' size limits (the benchmarks'
+// settings; capture and view keep what they are given).
+RenderSettings for_scene(RenderSettings settings, const Scene& scene);
 // Why this driver cannot render a frame or a shadow map of the settings' sizes (its textures or
 // the point buffers would be too large); empty where it can. The Renderer throws it as InputError.
 std::string driver_refusal(const RenderSettings& settings);
