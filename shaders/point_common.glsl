@@ -1,6 +1,6 @@
 // The buffers of a point splat (app/render/point_splat.hpp): the frame's draws (first point,
 // point count, first sample, instance), the drawn instances, the surface samples, and per pixel
-// the nearest point's depth and the point that has it.
+// the nearest point's depth, the point that has it and the splats in front of the polygons.
 struct Instance {
   mat4 model;
   vec4 tint;
@@ -12,6 +12,7 @@ layout(std430, binding = 4) readonly buffer Normals { vec4 normals[]; };
 layout(std430, binding = 5) readonly buffer Colors { vec4 colors[]; };
 layout(std430, binding = 6) buffer Depths { uint depths[]; };
 layout(std430, binding = 7) buffer Winners { uint winners[]; };
+layout(std430, binding = 36) buffer Coverage { uint coverage[]; };
 // Per block of points_per_block points, the draw holding its first point.
 layout(std430, binding = 8) readonly buffer BlockDraws { uint block_draws[]; };
 const uint points_per_block = 16u;  // app/render/point_splat.cpp

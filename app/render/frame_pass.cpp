@@ -2,6 +2,7 @@
 
 #include "app/errors.hpp"
 #include "app/gl/shader_program.hpp"
+#include "app/scene/scene_fields.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -110,7 +111,23 @@ void FramePass::start_surfaces(const gl::Program& program, const shadow::Camera&
   set_camera(program, camera);
 }
 
+void FramePass::keep_polygon_surfaces() const {
+  if (!polygon_surfaces_) {
+    polygon_surfaces_ = std::make_unique<Surfaces>();
+    glTextureStorage2D(polygon_surfaces_->normals.name(), 1, GL_RGBA32F, width_, height_);
+    glTextureStorage2D(polygon_surfaces_->albedos.name(), 1, GL_RGBA32F, width_, height_);
+    glTextureStorage2D(polygon_surfaces_->depth.name(), 1, GL_R32F, width_, height_);
+  }
+  const auto copy = [&](const gl::Texture& from, const gl::Texture& to) {
+    glCopyImageSubData(from.name(), GL_TEXTURE_2D, 0, 0, 0, 0, to.name(), GL_TEXTURE_2D, 0, 0, 0, 0, width_, height_, 1);
+  };
+  copy(normals_, polygon_surfaces_->normals);
+  copy(albedos_, polygon_surfaces_->albedos);
+  copy(depth_, polygon_surfaces_->depth);
+}
+
 void FramePass::add_points(const PointSplat& points, const shadow::Camera& camera) const {
+  keep_polygon_surfaces();
   glBindFramebuffer(GL_FRAMEBUFFER, surfaces_.name());
   glViewport(0, 0, width_, height_);
   glEnable(GL_DEPTH_TEST);
@@ -233,6 +250,12 @@ void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,
   glBindTextureUnit(2, normals_.name());
   glBindTextureUnit(3, albedos_.name());
   glBindTextureUnit(4, depth_.name());
+  if (polygon_surfaces_) {
+    glBindTextureUnit(5, polygon_surfaces_->normals.name());
+    glBindTextureUnit(6, polygon_surfaces_->albedos.name());
+    glBindTextureUnit(7, polygon_surfaces_->depth.name());
+  }
+  gl::set_uniform(program, "sky", srgb_to_linear(sky_color));
   draw_fullscreen();
   glEnable(GL_DEPTH_TEST);
 }

@@ -9,6 +9,7 @@
 #include "shadow/shadow_setup.hpp"
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,7 +30,9 @@ class FramePass {
   void draw_surfaces(const GpuScene& scene, const shadow::Camera& camera) const;
   // Adds the surfaces of the plants a band of the GPU sampler chose as polygons.
   void add_chosen_surfaces(const GpuScene& scene, const GpuSampler& sampler, int band, const shadow::Camera& camera) const;
-  // Adds the nearest splatted point of each pixel, depth-tested against the polygons.
+  // Adds the nearest splatted point of each pixel, depth-tested against the polygons, covering the
+  // share of the pixel the points cover there (PointSplat::resolve); shading blends the polygons
+  // behind into the rest.
   void add_points(const PointSplat& points, const shadow::Camera& camera) const;
 
   // `shadow_map`: the depth-texture array with one layer per view of `setup`, or for
@@ -104,6 +107,12 @@ class FramePass {
   gl::Texture depth_{GL_TEXTURE_2D};
   gl::Texture depth_buffer_{GL_TEXTURE_2D};
   gl::Framebuffer surfaces_;
+  // The polygons' surfaces as they were before the points were added, made when first needed.
+  struct Surfaces {
+    gl::Texture normals{GL_TEXTURE_2D}, albedos{GL_TEXTURE_2D}, depth{GL_TEXTURE_2D};
+  };
+  mutable std::unique_ptr<Surfaces> polygon_surfaces_;
+  void keep_polygon_surfaces() const;
   // Their lighting: written by shade.
   gl::Texture color_{GL_TEXTURE_2D};
   gl::Texture visibility_{GL_TEXTURE_2D};

@@ -45,15 +45,20 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle, bool p
       pointgen::MeshSplit split = pointgen::split_into_parts(info.sample_positions, sample_normals, info.area);
       info.parts = std::move(split.parts);
       info.polygon_parts = pointgen::split_triangles(mesh).parts;  // as GpuScene orders the triangles
-      const auto add = [&](const pointgen::SurfaceSample& s) {
+      // A normal's w is the area of the list its sample is in: n points of a list stand for
+      // that area over n each (point_resolve.comp).
+      const auto add = [&](const pointgen::SurfaceSample& s, float list_area) {
         positions.emplace_back(s.position, 1.0f);
-        normals.emplace_back(s.normal, 0.0f);
+        normals.emplace_back(s.normal, list_area);
         colors.emplace_back(s.color, 1.0f);
       };
-      for (const pointgen::SurfaceSample& s : samples) add(s);
-      for (std::uint32_t i : split.order) {
-        add(samples[i]);
-        info.sample_positions.push_back(samples[i].position);
+      for (const pointgen::SurfaceSample& s : samples) add(s, info.area);
+      for (const pointgen::MeshPart& part : info.parts) {
+        for (std::uint32_t j = 0; j < part.samples; ++j) {
+          const std::uint32_t i = split.order[part.first - samples.size() + j];
+          add(samples[i], part.area);
+          info.sample_positions.push_back(samples[i].position);
+        }
       }
     }
     meshes_.push_back(std::move(info));

@@ -14,7 +14,7 @@ struct GpuInstance {
 };
 
 constexpr GLuint draws_binding = 1, instances_binding = 2, positions_binding = 3, normals_binding = 4,
-                 colors_binding = 5, depths_binding = 6, winners_binding = 7, block_draws_binding = 8,
+                 colors_binding = 5, depths_binding = 6, winners_binding = 7, coverage_binding = 36, block_draws_binding = 8,
                  projected_binding = 9, totals_binding = 15, dispatch_binding = 16, points_drawn_binding = 30,
                  map_caps_binding = 35;
 constexpr std::uint64_t points_per_thread = 16;  // point_threads.glsl
@@ -67,6 +67,7 @@ PointSplat::PointSplat(glm::ivec2 size)
   const auto pixels = static_cast<GLsizeiptr>(size.x) * size.y * static_cast<GLsizeiptr>(sizeof(GLuint));
   glNamedBufferStorage(depths_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(winners_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(coverage_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(totals_.name(), 4 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(dispatch_.name(), 3 * sizeof(GLuint), nullptr, 0);
   glNamedBufferStorage(points_drawn_onto_.name(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -121,6 +122,7 @@ void PointSplat::bind_for(const gl::Program& program) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, totals_binding, list_.totals);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, depths_binding, depths_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, winners_binding, winners_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, coverage_binding, coverage_.name());
   if (projected_capacity_ > 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, projected_binding, projected_.name());
   if (samples_ != nullptr) samples_->bind(positions_binding, normals_binding, colors_binding);
   gl::set_uniform(program, "target_size", size_);
@@ -156,13 +158,14 @@ void PointSplat::dispatch(const gl::Program& program, const glm::mat4& view_proj
 void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float depth_bias) {
   begin();
   add(view_projection, splat_size, depth_bias, false);
-  resolve(view_projection, splat_size, depth_bias);
+  resolve(view_projection, splat_size, depth_bias, {});
 }
 
 void PointSplat::begin() {
   overwrite_barrier();
   clear(depths_, 0xFFFFFFFFu);
   clear(winners_, 0xFFFFFFFFu);
+  clear(coverage_, 0u);
   // Only the frame's splat keeps where points went; pass 1 writes every point's entry.
   if (list_.most_points > 0) reserve<glm::uvec2>(projected_, projected_capacity_, list_.most_points);
 }
@@ -173,8 +176,13 @@ void PointSplat::add(const glm::mat4& view_projection, int splat_size, float dep
            band_only ? Points::last_band : Points::frame);
 }
 
-void PointSplat::resolve(const glm::mat4& view_projection, int splat_size, float depth_bias) {
+void PointSplat::resolve(const glm::mat4& view_projection, int splat_size, float depth_bias, const CoverageView& seen) {
   if (list_.most_points == 0) return;
+  gl::set_uniform(resolve_program_, "eye", seen.eye);
+  gl::set_uniform(resolve_program_, "forward", seen.forward);
+  gl::set_uniform(resolve_program_, "pixels_per_radian", seen.pixels_per_radian);
+  gl::set_uniform(resolve_program_, "polygons_drawn", seen.polygon_depth != 0 ? 1 : 0);
+  if (seen.polygon_depth != 0) glBindTextureUnit(5, seen.polygon_depth);
   dispatch(resolve_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f), Points::frame);
 }
 

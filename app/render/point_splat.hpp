@@ -37,10 +37,17 @@ class PointSplat {
   // Passes 1 and 2, with splats of splat_size x splat_size pixels, for shading.
   void splat(const glm::mat4& view_projection, int splat_size, float depth_bias);
   // The same in steps, for a list made band by band (GpuSampler): clear; pass 1 over the band
-  // last added, or over the whole list; then pass 2 over the whole list.
+  // last added, or over the whole list; then pass 2 over the whole list, which also sums per pixel
+  // the image area of the points in front of the polygons (the share of it they cover) as `seen`
+  // sees them.
+  struct CoverageView {
+    glm::vec3 eye{0.0f}, forward{0.0f, 0.0f, -1.0f};
+    float pixels_per_radian = 0.0f;  // the frame's height over 2 tan(fov_y / 2)
+    GLuint polygon_depth = 0;        // a depth texture of the target's size; 0: none hides a point
+  };
   void begin();
   void add(const glm::mat4& view_projection, int splat_size, float depth_bias, bool band_only);
-  void resolve(const glm::mat4& view_projection, int splat_size, float depth_bias);
+  void resolve(const glm::mat4& view_projection, int splat_size, float depth_bias, const CoverageView& seen);
   // Per pixel the nearest point's window depth (float bits; all ones where none), after pass 1.
   GLuint depth_buffer() const { return depths_.name(); }
   // Pass 1 onto one layer of a depth-texture array of the target's size (a shadow map): each
@@ -65,7 +72,7 @@ class PointSplat {
  private:
   glm::ivec2 size_;
   PointDrawList list_;  // the one drawn: uploaded_ or another's
-  gl::Buffer draws_, instances_, block_draws_, totals_, depths_, winners_, projected_, dispatch_, points_drawn_onto_;
+  gl::Buffer draws_, instances_, block_draws_, totals_, depths_, winners_, coverage_, projected_, dispatch_, points_drawn_onto_;
   std::size_t draws_capacity_ = 0, instances_capacity_ = 0, block_draws_capacity_ = 0, projected_capacity_ = 0;
   // Which of the list's points a pass takes: the frame's, those of the band last added, or every
   // one, the shadow maps' alone too.

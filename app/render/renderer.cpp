@@ -365,7 +365,9 @@ void Renderer::draw_surfaces(const shadow::Camera& camera, const std::vector<sha
 void Renderer::finish_frame(const shadow::Camera& camera, const shadow::Light& light,
                             const std::optional<FramePass::ShadowLookup>& lookup) {
   if (settings_.points) {
-    frame_points_.resolve(view_projection_, settings_.splat_size, 0.0f);
+    const float pixels_per_radian = 0.5f * static_cast<float>(settings_.height) / std::tan(glm::radians(camera.fov_y_deg) / 2.0f);
+    frame_points_.resolve(view_projection_, settings_.splat_size, 0.0f,
+                          {camera.position, camera.forward(), pixels_per_radian, frame_pass_.depth_stencil_texture()});
     frame_pass_.add_points(frame_points_, camera);
   }
   frame_pass_.shade(camera, light, lookup);
