@@ -1,6 +1,7 @@
 // The buffers of a point splat (app/render/point_splat.hpp): the frame's draws (first point,
 // point count, first sample, instance), the drawn instances, the surface samples, and per pixel
-// the nearest point's depth, the point that has it and the splats in front of the polygons.
+// the nearest point's depth, the point that has it and how much of it the points cover
+// (point_coverage.glsl).
 struct Instance {
   mat4 model;
   vec4 tint;
@@ -13,6 +14,7 @@ layout(std430, binding = 5) readonly buffer Colors { vec4 colors[]; };
 layout(std430, binding = 6) buffer Depths { uint depths[]; };
 layout(std430, binding = 7) buffer Winners { uint winners[]; };
 layout(std430, binding = 36) buffer Coverage { uint coverage[]; };
+const float coverage_steps = 256.0;
 // Per block of points_per_block points, the draw holding its first point.
 layout(std430, binding = 8) readonly buffer BlockDraws { uint block_draws[]; };
 const uint points_per_block = 16u;  // app/render/point_splat.cpp

@@ -2,7 +2,7 @@
 // Pass 3 of point splatting: each pixel's nearest point becomes the frame's surface there (as
 // surface.frag writes a polygon's), at the point's depth, so the depth test composites points and
 // polygons. Its albedo's alpha is the share of the pixel the points' surfaces cover
-// (point_resolve.comp); shade.frag blends the surface behind into the rest.
+// (point_coverage.glsl); shade.frag blends the surface behind into the rest.
 #include "point_common.glsl"
 
 layout(location = 0) out vec4 out_normal;
@@ -11,12 +11,26 @@ layout(location = 2) out float out_depth;
 
 uniform mat4 view;
 uniform vec3 camera_position;
+uniform int splat_size;
 
-// A pixel's image area of point surfaces (point_resolve.comp) as the share of it they cover, taking
-// them as leaves strewn independently (Beer-Lambert, as for a canopy's leaf area): a surface
-// covers a pixel's area a with gaps e^-a. Summing shares instead (capped at 1) counted the leaves
-// behind others again and drew foliage denser than it is (docs/point_density.md, "Coverage").
-float covered_share(uint area) { return 1.0 - exp(-float(area) / 256.0); }
+// The image area of the point surfaces in this pixel: the entries of the splats that reach it,
+// each spread over its splat's pixels (point_coverage.glsl).
+float image_area(ivec2 pixel) {
+  float sum = 0.0;
+  for (int y = 0; y < splat_size; ++y) {
+    for (int x = 0; x < splat_size; ++x) {
+      ivec2 entry = pixel - ivec2(x, y) + 1;
+      if (all(greaterThanEqual(entry, ivec2(0)))) sum += float(coverage[entry.y * (target_size.x + 1) + entry.x]);
+    }
+  }
+  return sum / (coverage_steps * float(splat_size * splat_size));
+}
+
+// That area as the share of the pixel it covers, taking the surfaces as leaves strewn
+// independently (Beer-Lambert, as for a canopy's leaf area): area a leaves gaps e^-a. Summing
+// areas instead (capped at 1) counted the leaves behind others again and drew foliage denser than
+// it is (docs/point_density.md, "Coverage").
+float covered_share(ivec2 pixel) { return 1.0 - exp(-image_area(pixel)); }
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -31,6 +45,6 @@ void main() {
   if (dot(n, camera_position - position) < 0.0) n = -n;
   gl_FragDepth = uintBitsToFloat(depths[index]);
   out_normal = vec4(n, 0.0);
-  out_albedo = vec4(colors[s].rgb * instance.tint.rgb, covered_share(coverage[index]));
+  out_albedo = vec4(colors[s].rgb * instance.tint.rgb, covered_share(pixel));
   out_depth = -(view * vec4(position, 1.0)).z;
 }

@@ -1,12 +1,13 @@
 // The body of the splat compute passes that project points: each thread projects its points and
 // calls VISIT(pixel index, depth, point) for the pixels of each one's splat (with MAP_CAP, only of
 // the points a shadow map takes). The including shader defines VISIT first, and may define
-// PROJECTED(point, corner, depth), called once per point on the target with its splat's lower-left
-// pixel, and OUTSIDE(point) once per point off it.
+// PROJECTED(point, draw, world, ndc, corner, depth), called once per point on the target with its
+// draw, world position, normalized device coordinates and splat's lower-left pixel, and
+// OUTSIDE(point) once per point off it.
 #include "point_threads.glsl"
 
 #ifndef PROJECTED
-#define PROJECTED(point, corner, depth)
+#define PROJECTED(point, draw, world, ndc, corner, depth)
 #endif
 #ifndef OUTSIDE
 #define OUTSIDE(point)
@@ -55,7 +56,7 @@ void main() {
     // Window depth is a non-negative float, whose bits order like the values: atomicMin on uint.
     uint depth = floatBitsToUint(clamp(ndc.z * 0.5 + 0.5 + depth_bias, 0.0, 1.0));
     ivec2 corner = ivec2(floor((ndc.xy * 0.5 + 0.5) * vec2(target_size) - 0.5 * float(splat_size - 1)));
-    PROJECTED(p, corner, depth);
+    PROJECTED(p, d, world.xyz, ndc.xy, corner, depth);
     for (int y = 0; y < splat_size; ++y) {
       for (int x = 0; x < splat_size; ++x) {
         uint pixel = splat_pixel(corner, x, y);

@@ -29,19 +29,31 @@ std::string grove(int nearest = 40, const std::string& species = "beech") {
   return s.str();
 }
 
+// The scene at 480 × 270 with `settings`, rendered once with every plant as polygons and once with
+// points.
+struct PolygonsAndPoints {
+  std::unique_ptr<Renderer> polygons, points;
+};
+PolygonsAndPoints render_both_ways(const Scene& scene, RenderSettings settings) {
+  settings.width = 480;
+  settings.height = 270;
+  PolygonsAndPoints both;
+  settings.points = false;
+  both.polygons = std::make_unique<Renderer>(scene, settings);
+  both.polygons->render(scene.camera, scene.lights[0]);
+  settings.points = true;
+  both.points = std::make_unique<Renderer>(scene, settings);
+  both.points->render(scene.camera, scene.lights[0]);
+  return both;
+}
+
 // The grove rendered at the default density as polygons and as points.
 class PointRendering : public testing::Test {
  protected:
   void SetUp() override {
-    RenderSettings settings;
-    settings.width = 480;
-    settings.height = 270;
-    settings.points = false;
-    polygons = std::make_unique<Renderer>(scene, settings);
-    polygons->render(scene.camera, scene.lights[0]);
-    settings.points = true;
-    points = std::make_unique<Renderer>(scene, settings);
-    points->render(scene.camera, scene.lights[0]);
+    PolygonsAndPoints both = render_both_ways(scene, {});
+    polygons = std::move(both.polygons);
+    points = std::move(both.points);
     ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
   }
 
@@ -95,17 +107,9 @@ TEST(PointCoverage, FarBirchesOfPointsHideAsMuchOfTheSkyAsTheirPolygons) {
   // over two pixels' width).
   std::unique_ptr<GlContext> context = create_headless_context("egl");
   const Scene scene = load_scene({"grove.json", grove(80, "birch"), [](const std::string&) { return std::nullopt; }});
-  RenderSettings settings;
-  settings.width = 480;
-  settings.height = 270;
-  settings.points = false;
-  Renderer polygons(scene, settings);
-  polygons.render(scene.camera, scene.lights[0]);
-  settings.points = true;
-  Renderer points(scene, settings);
-  points.render(scene.camera, scene.lights[0]);
-  ASSERT_GT(points.stats().points, 50000u) << "the birches should be points";
-  const double ratio = sky_hidden(points.frame().read_color()) / sky_hidden(polygons.frame().read_color());
+  const PolygonsAndPoints both = render_both_ways(scene, {});
+  ASSERT_GT(both.points->stats().points, 50000u) << "the birches should be points";
+  const double ratio = sky_hidden(both.points->frame().read_color()) / sky_hidden(both.polygons->frame().read_color());
   std::cout << "sky hidden by points / polygons: " << ratio << "\n";
   EXPECT_GT(ratio, 0.8);
   EXPECT_LT(ratio, 1.25);
@@ -178,15 +182,10 @@ TEST(PointDensity, PointsPerPixelOfTheSeenSurfaceDoNotFollowDistance) {
   const std::unique_ptr<GlContext> context = create_headless_context("egl");
   const Scene scene = load_scene({"grove.json", grove(80, "saguaro"), [](const std::string&) { return std::nullopt; }});
   RenderSettings settings;
-  settings.width = 480;
-  settings.height = 270;
   settings.k = 1.5f;  // low enough that every cactus is points
-  settings.points = false;
-  Renderer polygons(scene, settings);
-  polygons.render(scene.camera, scene.lights[0]);
-  settings.points = true;
-  Renderer points(scene, settings);
-  points.render(scene.camera, scene.lights[0]);
+  PolygonsAndPoints both = render_both_ways(scene, settings);
+  const Renderer& polygons = *both.polygons;
+  Renderer& points = *both.points;
   ASSERT_EQ(points.stats().triangles, 0u) << "every cactus should be points";
   DensityRenders renders;
   renders.polygons = {polygons.frame().read_color(), polygons.frame().read_depth()};

@@ -67,7 +67,9 @@ PointSplat::PointSplat(glm::ivec2 size)
   const auto pixels = static_cast<GLsizeiptr>(size.x) * size.y * static_cast<GLsizeiptr>(sizeof(GLuint));
   glNamedBufferStorage(depths_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(winners_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
-  glNamedBufferStorage(coverage_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  // A row and a column more: point_coverage.glsl.
+  glNamedBufferStorage(coverage_.name(), static_cast<GLsizeiptr>(size.x + 1) * (size.y + 1) * static_cast<GLsizeiptr>(sizeof(GLuint)),
+                       nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(totals_.name(), 4 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(dispatch_.name(), 3 * sizeof(GLuint), nullptr, 0);
   glNamedBufferStorage(points_drawn_onto_.name(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -126,6 +128,7 @@ void PointSplat::bind_for(const gl::Program& program) const {
   if (projected_capacity_ > 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, projected_binding, projected_.name());
   if (samples_ != nullptr) samples_->bind(positions_binding, normals_binding, colors_binding);
   gl::set_uniform(program, "target_size", size_);
+  gl::set_uniform(program, "splat_size", frame_splat_size_);
 }
 
 void PointSplat::count_groups(Points points) const {
@@ -157,8 +160,8 @@ void PointSplat::dispatch(const gl::Program& program, const glm::mat4& view_proj
 
 void PointSplat::splat(const glm::mat4& view_projection, int splat_size, float depth_bias) {
   begin();
-  add(view_projection, splat_size, depth_bias, false);
-  resolve(view_projection, splat_size, depth_bias, {});
+  add(view_projection, splat_size, depth_bias, false, {});
+  resolve(view_projection, splat_size, depth_bias);
 }
 
 void PointSplat::begin() {
@@ -170,19 +173,20 @@ void PointSplat::begin() {
   if (list_.most_points > 0) reserve<glm::uvec2>(projected_, projected_capacity_, list_.most_points);
 }
 
-void PointSplat::add(const glm::mat4& view_projection, int splat_size, float depth_bias, bool band_only) {
+void PointSplat::add(const glm::mat4& view_projection, int splat_size, float depth_bias, bool band_only, const CoverageView& seen) {
   if (list_.most_points == 0) return;
+  frame_splat_size_ = splat_size;
+  gl::set_uniform(keeping_depth_program_, "eye", seen.eye);
+  gl::set_uniform(keeping_depth_program_, "forward", seen.forward);
+  gl::set_uniform(keeping_depth_program_, "pixels_per_radian", seen.pixels_per_radian);
+  gl::set_uniform(keeping_depth_program_, "polygons_drawn", seen.polygon_depth != 0 ? 1 : 0);
+  if (seen.polygon_depth != 0) glBindTextureUnit(5, seen.polygon_depth);
   dispatch(keeping_depth_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f),
            band_only ? Points::last_band : Points::frame);
 }
 
-void PointSplat::resolve(const glm::mat4& view_projection, int splat_size, float depth_bias, const CoverageView& seen) {
+void PointSplat::resolve(const glm::mat4& view_projection, int splat_size, float depth_bias) {
   if (list_.most_points == 0) return;
-  gl::set_uniform(resolve_program_, "eye", seen.eye);
-  gl::set_uniform(resolve_program_, "forward", seen.forward);
-  gl::set_uniform(resolve_program_, "pixels_per_radian", seen.pixels_per_radian);
-  gl::set_uniform(resolve_program_, "polygons_drawn", seen.polygon_depth != 0 ? 1 : 0);
-  if (seen.polygon_depth != 0) glBindTextureUnit(5, seen.polygon_depth);
   dispatch(resolve_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f), Points::frame);
 }
 

@@ -37,17 +37,17 @@ class PointSplat {
   // Passes 1 and 2, with splats of splat_size x splat_size pixels, for shading.
   void splat(const glm::mat4& view_projection, int splat_size, float depth_bias);
   // The same in steps, for a list made band by band (GpuSampler): clear; pass 1 over the band
-  // last added, or over the whole list; then pass 2 over the whole list, which also sums per pixel
-  // the image area of the points in front of the polygons (the share of it they cover) as `seen`
-  // sees them.
+  // last added, or over the whole list, which also adds per pixel the image area of the points in
+  // front of the polygons drawn so far (the share of it they cover) as `seen` sees them; then pass
+  // 2 over the whole list.
   struct CoverageView {
     glm::vec3 eye{0.0f}, forward{0.0f, 0.0f, -1.0f};
     float pixels_per_radian = 0.0f;  // the frame's height over 2 tan(fov_y / 2)
     GLuint polygon_depth = 0;        // a depth texture of the target's size; 0: none hides a point
   };
   void begin();
-  void add(const glm::mat4& view_projection, int splat_size, float depth_bias, bool band_only);
-  void resolve(const glm::mat4& view_projection, int splat_size, float depth_bias, const CoverageView& seen);
+  void add(const glm::mat4& view_projection, int splat_size, float depth_bias, bool band_only, const CoverageView& seen);
+  void resolve(const glm::mat4& view_projection, int splat_size, float depth_bias);
   // Per pixel the nearest point's window depth (float bits; all ones where none), after pass 1.
   GLuint depth_buffer() const { return depths_.name(); }
   // Pass 1 onto one layer of a depth-texture array of the target's size (a shadow map): each
@@ -65,7 +65,8 @@ class PointSplat {
   // Overwrites the nearest depths and points, so call it after the frame is shaded.
   Image<std::uint32_t> count_points_on(const Image<float>& surface_depth, const glm::mat4& view_projection,
                                        const glm::mat4& projection, float surface_gap);
-  // Binds the buffers and sets the draw count and target size a shading program reads.
+  // Binds the buffers and sets the target and splat size a shading program reads (the splat size
+  // of the last pass 1).
   void bind_for(const gl::Program& program) const;
 
 
@@ -86,6 +87,7 @@ class PointSplat {
   gl::Program dispatch_program_, depth_program_, keeping_depth_program_, capped_depth_program_, resolve_program_;
   std::unique_ptr<gl::Program> count_program_;  // made when first counting
   const PointSamples* samples_ = nullptr;
+  int frame_splat_size_ = 1;
 };
 
 }  // namespace ecoview

@@ -182,6 +182,11 @@ Image<std::uint32_t> Renderer::count_points_on(const Image<float>& surface_depth
                                        static_cast<float>(settings_.splat_size) * pixel_width);
 }
 
+PointSplat::CoverageView Renderer::coverage_view(const shadow::Camera& camera) const {
+  const float pixels_per_radian = 0.5f * static_cast<float>(settings_.height) / std::tan(glm::radians(camera.fov_y_deg) / 2.0f);
+  return {camera.position, camera.forward(), pixels_per_radian, frame_pass_.depth_stencil_texture()};
+}
+
 float Renderer::aspect() const { return static_cast<float>(settings_.width) / static_cast<float>(settings_.height); }
 
 
@@ -358,16 +363,14 @@ void Renderer::draw_surfaces(const shadow::Camera& camera, const std::vector<sha
     sample_on_gpu(camera, casters);
   } else if (settings_.points) {
     frame_points_.begin();
-    frame_points_.add(view_projection_, settings_.splat_size, 0.0f, false);
+    frame_points_.add(view_projection_, settings_.splat_size, 0.0f, false, coverage_view(camera));
   }
 }
 
 void Renderer::finish_frame(const shadow::Camera& camera, const shadow::Light& light,
                             const std::optional<FramePass::ShadowLookup>& lookup) {
   if (settings_.points) {
-    const float pixels_per_radian = 0.5f * static_cast<float>(settings_.height) / std::tan(glm::radians(camera.fov_y_deg) / 2.0f);
-    frame_points_.resolve(view_projection_, settings_.splat_size, 0.0f,
-                          {camera.position, camera.forward(), pixels_per_radian, frame_pass_.depth_stencil_texture()});
+    frame_points_.resolve(view_projection_, settings_.splat_size, 0.0f);
     frame_pass_.add_points(frame_points_, camera);
   }
   frame_pass_.shade(camera, light, lookup);
@@ -384,7 +387,7 @@ void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<sha
     if (b > 0) occluders_->build_if(gpu_sampler_->band_drawn(), static_cast<std::size_t>(b - 1), frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
     gpu_sampler_->add_band(b, occluders_.get());
     frame_pass_.add_chosen_surfaces(gpu_scene_, *gpu_sampler_, b, camera);
-    frame_points_.add(view_projection_, settings_.splat_size, 0.0f, true);
+    frame_points_.add(view_projection_, settings_.splat_size, 0.0f, true, coverage_view(camera));
   }
   // Casters out of view and near plants the frame hides: for the shadow map alone (the frame's
   // splat passes stop before their points).

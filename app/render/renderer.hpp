@@ -117,6 +117,8 @@ class Renderer {
 
  private:
   float aspect() const;
+  // How the frame sees its points, for the share of each pixel they cover.
+  PointSplat::CoverageView coverage_view(const shadow::Camera& camera) const;
   // What the method needs besides a shadow map: the volume pass, the reference's mask.
   void make_method_passes();
   // Moves the moving objects to time t.

@@ -1,0 +1,40 @@
+// How much of each pixel the frame's points cover, added by splatting pass 1 and read by
+// point_surface.frag.
+//
+// Each point stands for its share of its list's surface (the list's area, its samples' normals'
+// w, over the points drawn of it), which covers rho² share |n·v| d / z³ pixels of the image
+// (docs/point_density.md). A point in front of the polygons adds that to the entry of its splat's
+// lower-left pixel, one atomic a point; a pixel's image area is then the mean of the entries of the
+// splats that reach it. Entries are in 1/coverage_steps of a pixel (integer atomics), one row and
+// column more than the target, as a splat's corner may lie a pixel off its lower or left edge.
+layout(binding = 5) uniform sampler2D polygon_depths;  // window depth of the polygons drawn so far
+uniform bool polygons_drawn;  // otherwise no polygon hides a point
+uniform vec3 eye;
+uniform vec3 forward;
+uniform float pixels_per_radian;
+
+// The image area point p of draw d stands for, in pixels.
+float image_area(uint p, uvec4 d, vec3 world) {
+  uint s = d.z + (p - d.x);
+  mat4 model = instances[d.w].model;
+  vec3 to_eye = eye - world;
+  float distance = max(length(to_eye), 1e-6);
+  float z = max(-dot(to_eye, forward), 1e-3);
+  vec3 n = mat3(model) * normals[s].xyz;  // as long as the model's scale
+  float share = normals[s].w * dot(n, n) / float(d.y);
+  float facing = abs(dot(normalize(n), to_eye)) / distance;
+  return pixels_per_radian * pixels_per_radian * share * facing * distance / (z * z * z);
+}
+
+bool in_front_of_polygons(vec2 ndc, uint depth) {
+  if (!polygons_drawn) return true;
+  ivec2 pixel = min(ivec2((ndc * 0.5 + 0.5) * vec2(target_size)), target_size - 1);
+  return depth < floatBitsToUint(texelFetch(polygon_depths, pixel, 0).r);
+}
+
+void add_coverage(uint p, uvec4 d, vec3 world, vec2 ndc, ivec2 corner, uint depth) {
+  if (!in_front_of_polygons(ndc, depth)) return;
+  ivec2 entry = clamp(corner + 1, ivec2(0), target_size);
+  uint area = uint(round(min(image_area(p, d, world), 16.0) * coverage_steps));
+  atomicAdd(coverage[entry.y * (target_size.x + 1) + entry.x], area);
+}
