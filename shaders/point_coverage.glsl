@@ -26,14 +26,14 @@ float image_area(uint p, uvec4 d, vec3 world) {
   return pixels_per_radian * pixels_per_radian * share * facing * distance / (z * z * z);
 }
 
-bool in_front_of_polygons(vec2 ndc, uint depth) {
-  if (!polygons_drawn) return true;
-  ivec2 pixel = min(ivec2((ndc * 0.5 + 0.5) * vec2(target_size)), target_size - 1);
-  return depth < floatBitsToUint(texelFetch(polygon_depths, pixel, 0).r);
+// Whether a point of this depth in `pixel` is in front of the polygons there.
+bool in_front_of_polygons(ivec2 pixel, uint depth) {
+  return !polygons_drawn || depth < floatBitsToUint(texelFetch(polygon_depths, pixel, 0).r);
 }
 
-void add_coverage(uint p, uvec4 d, vec3 world, vec2 ndc, ivec2 corner, uint depth) {
-  if (!in_front_of_polygons(ndc, depth)) return;
+// Point p of draw d, in pixel `centre`, with a splat from `corner`.
+void add_coverage(uint p, uvec4 d, vec3 world, ivec2 centre, ivec2 corner, uint depth) {
+  if (!in_front_of_polygons(centre, depth)) return;
   ivec2 entry = clamp(corner + 1, ivec2(0), target_size);
   uint area = uint(round(min(image_area(p, d, world), 16.0) * coverage_steps));
   atomicAdd(coverage[entry.y * (target_size.x + 1) + entry.x], area);

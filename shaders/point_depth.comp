@@ -1,14 +1,22 @@
 #version 450 core
 // Pass 1 of point splatting: the nearest depth per pixel. With KEEP_PROJECTION (the frame's) it
-// also keeps where each point went, for pass 2, and adds the image area each point stands for
-// (point_coverage.glsl).
+// also keeps where each point went and the nearest depth of the points whose centre falls in each
+// pixel, for pass 2, and adds the image area each point stands for (point_coverage.glsl).
 #include "point_common.glsl"
 #define VISIT(pixel, depth, point) atomicMin(depths[pixel], depth)
 #ifdef KEEP_PROJECTION
 #include "point_coverage.glsl"
-#define PROJECTED(point, draw, world, ndc, corner, depth)                                 \
-  projected[point] = uvec2((uint(corner.x) & 0xFFFFu) | (uint(corner.y) << 16), depth); \
-  add_coverage(point, draw, world, ndc, corner, depth)
+void keep_projection(uint p, uvec4 d, vec3 world, vec2 ndc, ivec2 corner, uint depth);  // below
+#define PROJECTED(point, draw, world, ndc, corner, depth) keep_projection(point, draw, world, ndc, corner, depth)
 #define OUTSIDE(point) projected[point] = uvec2(0u, no_point)
 #endif
 #include "point_walk.glsl"
+
+#ifdef KEEP_PROJECTION
+void keep_projection(uint p, uvec4 d, vec3 world, vec2 ndc, ivec2 corner, uint depth) {
+  ivec2 centre = min(ivec2((ndc * 0.5 + 0.5) * vec2(target_size)), target_size - 1);
+  projected[p] = uvec2(pack_splat(corner, centre, splat_size), depth);
+  atomicMin(centre_depths[centre.y * target_size.x + centre.x], depth);
+  add_coverage(p, d, world, centre, corner, depth);
+}
+#endif

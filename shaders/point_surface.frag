@@ -1,7 +1,9 @@
 #version 450 core
-// Pass 3 of point splatting: each pixel's nearest point becomes the frame's surface there (as
-// surface.frag writes a polygon's), at the point's depth, so the depth test composites points and
-// polygons. Its albedo's alpha is the share of the pixel the points' surfaces cover
+// Pass 3 of point splatting: each pixel's point becomes the frame's surface there (as surface.frag
+// writes a polygon's), at the nearest splat's depth, so the depth test composites points and
+// polygons. The point is the nearest of those whose centre falls in the pixel, else the nearest
+// whose splat reaches it: a splat's nearest point shows the front of a tuft or crown over its
+// neighbours' pixels too, darker than the surface there on the default view (docs/point_density.md). Its albedo's alpha is the share of the pixel the points' surfaces cover
 // (point_coverage.glsl); shade.frag blends the surface behind into the rest.
 #include "point_common.glsl"
 
@@ -35,7 +37,7 @@ float covered_share(ivec2 pixel) { return 1.0 - exp(-image_area(pixel)); }
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   uint index = uint(pixel.y * target_size.x + pixel.x);
-  uint point = winners[index];
+  uint point = centre_winners[index] != no_point ? centre_winners[index] : winners[index];
   if (point == no_point) discard;
   uint draw = draw_of(point);
   uint s = sample_of(point, draw);

@@ -14,7 +14,7 @@ struct GpuInstance {
 };
 
 constexpr GLuint draws_binding = 1, instances_binding = 2, positions_binding = 3, normals_binding = 4,
-                 colors_binding = 5, depths_binding = 6, winners_binding = 7, coverage_binding = 36, block_draws_binding = 8,
+                 colors_binding = 5, depths_binding = 6, winners_binding = 7, coverage_binding = 36, centre_depths_binding = 37, centre_winners_binding = 38, block_draws_binding = 8,
                  projected_binding = 9, totals_binding = 15, dispatch_binding = 16, points_drawn_binding = 30,
                  map_caps_binding = 35;
 constexpr std::uint64_t points_per_thread = 16;  // point_threads.glsl
@@ -67,6 +67,8 @@ PointSplat::PointSplat(glm::ivec2 size)
   const auto pixels = static_cast<GLsizeiptr>(size.x) * size.y * static_cast<GLsizeiptr>(sizeof(GLuint));
   glNamedBufferStorage(depths_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(winners_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(centre_depths_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(centre_winners_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
   // A row and a column more: point_coverage.glsl.
   glNamedBufferStorage(coverage_.name(), static_cast<GLsizeiptr>(size.x + 1) * (size.y + 1) * static_cast<GLsizeiptr>(sizeof(GLuint)),
                        nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -125,6 +127,8 @@ void PointSplat::bind_for(const gl::Program& program) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, depths_binding, depths_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, winners_binding, winners_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, coverage_binding, coverage_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, centre_depths_binding, centre_depths_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, centre_winners_binding, centre_winners_.name());
   if (projected_capacity_ > 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, projected_binding, projected_.name());
   if (samples_ != nullptr) samples_->bind(positions_binding, normals_binding, colors_binding);
   gl::set_uniform(program, "target_size", size_);
@@ -169,6 +173,8 @@ void PointSplat::begin() {
   clear(depths_, 0xFFFFFFFFu);
   clear(winners_, 0xFFFFFFFFu);
   clear(coverage_, 0u);
+  clear(centre_depths_, 0xFFFFFFFFu);
+  clear(centre_winners_, 0xFFFFFFFFu);
   // Only the frame's splat keeps where points went; pass 1 writes every point's entry.
   if (list_.most_points > 0) reserve<glm::uvec2>(projected_, projected_capacity_, list_.most_points);
 }
