@@ -31,9 +31,8 @@ bool in_front_of_polygons(ivec2 pixel, uint depth) {
   return !polygons_drawn || depth < floatBitsToUint(texelFetch(polygon_depths, pixel, 0).r);
 }
 
-// Point p of draw d, in pixel `centre`, with a splat from `corner`.
-void add_coverage(uint p, uvec4 d, vec3 world, ivec2 centre, ivec2 corner, uint depth) {
-  if (!in_front_of_polygons(centre, depth)) return;
+// Point p of draw d, in front of the polygons, with a splat from `corner`.
+void add_coverage(uint p, uvec4 d, vec3 world, ivec2 corner) {
   ivec2 entry = clamp(corner + 1, ivec2(0), target_size);
   uint area = uint(round(min(image_area(p, d, world), 16.0) * coverage_steps));
   atomicAdd(coverage[entry.y * (target_size.x + 1) + entry.x], area);

@@ -1,8 +1,7 @@
 #version 450 core
 // Pass 3 of point splatting: each pixel's point becomes the frame's surface there (as surface.frag
-// writes a polygon's), at the nearest splat's depth, so the depth test composites points and
-// polygons. The point is the nearest of those whose centre falls in the pixel, else the nearest
-// whose splat reaches it: a splat's nearest point shows the front of a tuft or crown over its
+// writes a polygon's), at its depth, so the depth test composites points and polygons. The point
+// is the nearest of those whose centre falls in the pixel, else the nearest whose splat reaches it: a splat's nearest point shows the front of a tuft or crown over its
 // neighbours' pixels too, darker than the surface there on the default view (docs/point_density.md). Its albedo's alpha is the share of the pixel the points' surfaces cover
 // (point_coverage.glsl); shade.frag blends the surface behind into the rest.
 #include "point_common.glsl"
@@ -37,7 +36,8 @@ float covered_share(ivec2 pixel) { return 1.0 - exp(-image_area(pixel)); }
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   uint index = uint(pixel.y * target_size.x + pixel.x);
-  uint point = centre_winners[index] != no_point ? centre_winners[index] : winners[index];
+  bool centred = centre_winners[index] != no_point;
+  uint point = centred ? centre_winners[index] : winners[index];
   if (point == no_point) discard;
   uint draw = draw_of(point);
   uint s = sample_of(point, draw);
@@ -45,7 +45,7 @@ void main() {
   vec3 position = (instance.model * vec4(positions[s].xyz, 1.0)).xyz;
   vec3 n = normalize(mat3(instance.model) * normals[s].xyz);
   if (dot(n, camera_position - position) < 0.0) n = -n;
-  gl_FragDepth = uintBitsToFloat(depths[index]);
+  gl_FragDepth = uintBitsToFloat(centred ? centre_depths[index] : depths[index]);
   out_normal = vec4(n, 0.0);
   out_albedo = vec4(colors[s].rgb * instance.tint.rgb, covered_share(pixel));
   out_depth = -(view * vec4(position, 1.0)).z;
