@@ -47,6 +47,10 @@ layout(std430, binding = 15) readonly buffer Totals { uint total_points; uint dr
 const uint no_point = 0xFFFFFFFFu;
 uniform ivec2 target_size;
 
+const int coverage_margin = 8;  // a 16-pixel splat's corner lies up to 8 pixels off the target
+// The coverage entry of the splats whose corner is `entry` - coverage_margin.
+uint coverage_entry(ivec2 entry) { return uint(entry.y * (target_size.x + coverage_margin) + entry.x); }
+
 // The draw holding point p: the last one whose first point is at most p, found from the draw
 // holding the first point of p's block in a step or a few, where a binary search over a frame's
 // hundred thousand draws takes 17.

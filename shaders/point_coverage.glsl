@@ -4,9 +4,10 @@
 // Each point stands for its share of its list's surface (the list's area, its samples' normals'
 // w, over the points drawn of it), which covers rho² share |n·v| d / z³ pixels of the image
 // (docs/point_density.md). A point in front of the polygons adds that to the entry of its splat's
-// lower-left pixel, one atomic a point; a pixel's image area is then the mean of the entries of the
-// splats that reach it. Entries are in 1/coverage_steps of a pixel (integer atomics), one row and
-// column more than the target, as a splat's corner may lie a pixel off its lower or left edge.
+// lower-left pixel, one atomic a point; a pixel's image area is then the entries of the splats
+// that reach it, each over its splat's pixels. Entries are in 1/coverage_steps of a pixel (integer
+// atomics), with coverage_margin rows and columns more than the target, as a splat's corner may
+// lie that far off its lower or left edge.
 layout(binding = 5) uniform sampler2D polygon_depths;  // window depth of the polygons drawn so far
 uniform bool polygons_drawn;  // otherwise no polygon hides a point
 uniform vec3 eye;
@@ -33,7 +34,7 @@ bool in_front_of_polygons(ivec2 pixel, uint depth) {
 
 // Point p of draw d, in front of the polygons, with a splat from `corner`.
 void add_coverage(uint p, uvec4 d, vec3 world, ivec2 corner) {
-  ivec2 entry = clamp(corner + 1, ivec2(0), target_size);
+  ivec2 entry = corner + coverage_margin;
   uint area = uint(round(min(image_area(p, d, world), 16.0) * coverage_steps));
-  atomicAdd(coverage[entry.y * (target_size.x + 1) + entry.x], area);
+  atomicAdd(coverage[coverage_entry(entry)], area);
 }

@@ -20,8 +20,8 @@ float image_area(ivec2 pixel) {
   float sum = 0.0;
   for (int y = 0; y < splat_size; ++y) {
     for (int x = 0; x < splat_size; ++x) {
-      ivec2 entry = pixel - ivec2(x, y) + 1;
-      if (all(greaterThanEqual(entry, ivec2(0)))) sum += float(coverage[entry.y * (target_size.x + 1) + entry.x]);
+      ivec2 entry = pixel - ivec2(x, y) + coverage_margin;
+      if (all(greaterThanEqual(entry, ivec2(0)))) sum += float(coverage[coverage_entry(entry)]);
     }
   }
   return sum / (coverage_steps * float(splat_size * splat_size));

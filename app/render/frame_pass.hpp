@@ -31,7 +31,7 @@ class FramePass {
   // Adds the surfaces of the plants a band of the GPU sampler chose as polygons.
   void add_chosen_surfaces(const GpuScene& scene, const GpuSampler& sampler, int band, const shadow::Camera& camera) const;
   // Adds the nearest splatted point of each pixel, depth-tested against the polygons, covering the
-  // share of the pixel the points cover there (PointSplat::resolve); shading blends the polygons
+  // share of the pixel the points cover there (PointSplat::add); shading blends the polygons
   // behind into the rest.
   void add_points(const PointSplat& points, const shadow::Camera& camera) const;
 

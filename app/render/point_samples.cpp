@@ -46,7 +46,7 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle, bool p
       info.parts = std::move(split.parts);
       info.polygon_parts = pointgen::split_triangles(mesh).parts;  // as GpuScene orders the triangles
       // A normal's w is the area of the list its sample is in: n points of a list stand for
-      // that area over n each (point_resolve.comp).
+      // that area over n each (point_coverage.glsl).
       const auto add = [&](const pointgen::SurfaceSample& s, float list_area) {
         positions.emplace_back(s.position, 1.0f);
         normals.emplace_back(s.normal, list_area);

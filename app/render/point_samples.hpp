@@ -8,9 +8,9 @@
 namespace ecoview {
 
 // The surface samples of every point mesh in GL buffers (positions, normals with the area of the
-// sample's list as w, colours as vec4 arrays, one mesh after another), and what the view sampler needs to know of each mesh. A mesh's
-// list is its whole list, as long as the most points an instance takes before polygons are
-// cheaper, then the same samples again in its parts' lists.
+// sample's list as w, colours as vec4 arrays, one mesh after another), and what the view sampler
+// needs to know of each mesh. A mesh's list is its whole list, as long as the most points an
+// instance takes before polygons are cheaper, then the same samples again in its parts' lists.
 class PointSamples {
  public:
   // Without `points` (every plant drawn as polygons) no lists are made: the meshes' bounds, area

@@ -14,9 +14,10 @@ struct GpuInstance {
 };
 
 constexpr GLuint draws_binding = 1, instances_binding = 2, positions_binding = 3, normals_binding = 4,
-                 colors_binding = 5, depths_binding = 6, winners_binding = 7, coverage_binding = 36, centre_depths_binding = 37, centre_winners_binding = 38, block_draws_binding = 8,
+                 colors_binding = 5, depths_binding = 6, winners_binding = 7, block_draws_binding = 8,
                  projected_binding = 9, totals_binding = 15, dispatch_binding = 16, points_drawn_binding = 30,
-                 map_caps_binding = 35;
+                 map_caps_binding = 35, coverage_binding = 36, centre_depths_binding = 37, centre_winners_binding = 38;
+constexpr int coverage_margin = 8;  // point_common.glsl
 constexpr std::uint64_t points_per_thread = 16;  // point_threads.glsl
 constexpr std::uint64_t points_per_block = 16;   // point_common.glsl
 // Point indices are 32-bit in the shaders: the last one marks "no point", and a thread's run of
@@ -69,9 +70,8 @@ PointSplat::PointSplat(glm::ivec2 size)
   glNamedBufferStorage(winners_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(centre_depths_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(centre_winners_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
-  // A row and a column more: point_coverage.glsl.
-  glNamedBufferStorage(coverage_.name(), static_cast<GLsizeiptr>(size.x + 1) * (size.y + 1) * static_cast<GLsizeiptr>(sizeof(GLuint)),
-                       nullptr, GL_DYNAMIC_STORAGE_BIT);
+  const auto entries = static_cast<GLsizeiptr>(size.x + coverage_margin) * (size.y + coverage_margin);
+  glNamedBufferStorage(coverage_.name(), entries * static_cast<GLsizeiptr>(sizeof(GLuint)), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(totals_.name(), 4 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(dispatch_.name(), 3 * sizeof(GLuint), nullptr, 0);
   glNamedBufferStorage(points_drawn_onto_.name(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);

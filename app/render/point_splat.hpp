@@ -23,8 +23,8 @@ struct PointDrawList {
 
 // Point splatting with compute shaders into a target of width x height pixels: the frame's draws
 // go to GL buffers; pass 1 keeps each pixel's nearest depth (atomicMin), pass 2 the nearest point
-// and the nearest of those centred in the pixel (for shading), from where pass 1 put each point rather than projecting it again (on llvmpipe a
-// third of the time). 32-bit atomics only, so it runs on llvmpipe as on any GL 4.5 driver.
+// and the nearest of those centred in the pixel (for shading), from where pass 1 put each point
+// rather than projecting it again (on llvmpipe a third of the time). 32-bit atomics only, so it runs on llvmpipe as on any GL 4.5 driver.
 class PointSplat {
  public:
   explicit PointSplat(glm::ivec2 size);
@@ -73,7 +73,8 @@ class PointSplat {
  private:
   glm::ivec2 size_;
   PointDrawList list_;  // the one drawn: uploaded_ or another's
-  gl::Buffer draws_, instances_, block_draws_, totals_, depths_, winners_, coverage_, centre_depths_, centre_winners_, projected_, dispatch_, points_drawn_onto_;
+  gl::Buffer draws_, instances_, block_draws_, totals_, depths_, winners_, projected_, dispatch_, points_drawn_onto_;
+  gl::Buffer coverage_, centre_depths_, centre_winners_;  // point_common.glsl
   std::size_t draws_capacity_ = 0, instances_capacity_ = 0, block_draws_capacity_ = 0, projected_capacity_ = 0;
   // Which of the list's points a pass takes: the frame's, those of the band last added, or every
   // one, the shadow maps' alone too.
