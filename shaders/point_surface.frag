@@ -1,9 +1,11 @@
 #version 450 core
 // Pass 3 of point splatting: each pixel's point becomes the frame's surface there (as surface.frag
 // writes a polygon's), at its depth, so the depth test composites points and polygons. The point
-// is the nearest of those whose centre falls in the pixel, else the nearest whose splat reaches it: a splat's nearest point shows the front of a tuft or crown over its
-// neighbours' pixels too, darker than the surface there on the default view (docs/point_density.md). Its albedo's alpha is the share of the pixel the points' surfaces cover
-// (point_coverage.glsl); shade.frag blends the surface behind into the rest.
+// is the nearest of those whose centre falls in the pixel, else the nearest whose splat reaches
+// it: a splat's nearest point shows the front of a tuft or crown over its neighbours' pixels too,
+// darker than the surface there on the default view (docs/point_density.md). Its albedo's alpha is
+// the share of the pixel the points' surfaces cover (point_coverage.glsl); shade.frag blends the
+// surface behind into the rest.
 #include "point_common.glsl"
 
 layout(location = 0) out vec4 out_normal;

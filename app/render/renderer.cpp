@@ -183,8 +183,8 @@ Image<std::uint32_t> Renderer::count_points_on(const Image<float>& surface_depth
 }
 
 PointSplat::CoverageView Renderer::coverage_view(const shadow::Camera& camera) const {
-  const float pixels_per_radian = 0.5f * static_cast<float>(settings_.height) / std::tan(glm::radians(camera.fov_y_deg) / 2.0f);
-  return {camera.position, camera.forward(), pixels_per_radian, frame_pass_.depth_stencil_texture()};
+  const pointgen::SamplerView seen = sampler_view(camera, settings_, {});
+  return {seen.eye, seen.forward, seen.density.pixels_per_radian, frame_pass_.depth_stencil_texture()};
 }
 
 float Renderer::aspect() const { return static_cast<float>(settings_.width) / static_cast<float>(settings_.height); }
