@@ -32,8 +32,11 @@ F egl_function(const char* name) {
 
 // A display on a GPU device, when EGL lists one that is not Mesa's software device.
 EGLDisplay gpu_device_display(const char* client_extensions) {
-  if (!has_extension(client_extensions, "EGL_EXT_device_enumeration") ||
-      !has_extension(client_extensions, "EGL_EXT_platform_device")) {
+  // NVIDIA's EGL names EGL_EXT_device_base, which holds enumeration and query, and not the two
+  // extensions it was split into.
+  const bool enumerates = has_extension(client_extensions, "EGL_EXT_device_enumeration") ||
+                          has_extension(client_extensions, "EGL_EXT_device_base");
+  if (!enumerates || !has_extension(client_extensions, "EGL_EXT_platform_device")) {
     return EGL_NO_DISPLAY;
   }
   auto query_devices = egl_function<PFNEGLQUERYDEVICESEXTPROC>("eglQueryDevicesEXT");
