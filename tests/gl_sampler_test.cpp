@@ -541,5 +541,26 @@ TEST_F(GpuSampling, AFrameWithoutPlantsDrawsNone) {
   EXPECT_EQ(renderer.stats().triangles, 14u);  // the plane's 2 and the box's 12
 }
 
+// The GPU stages partition the frame's GPU time: each pass's time lies within their sum, and every
+// stage of a shadowed frame with points and polygon plants took part.
+TEST_F(GpuSampling, AFramesGpuStagesCoverItsPasses) {
+  settings.method = ShadowMethod::psm;
+  Renderer renderer(scene, settings);
+  renderer.render(scene.camera, scene.lights[0]);
+  const FrameStats stats = renderer.stats();
+  double sum = 0.0;
+  std::map<std::string, double> stages;
+  for (const auto& [stage, ms] : stats.stage_ms) {
+    EXPECT_GE(ms, 0.0) << stage;
+    stages[stage] = ms;
+    sum += ms;
+  }
+  for (const char* stage : {"polygons", "choice", "occlusion", "splats", "map choice", "map polygons", "map splats", "shading"}) {
+    EXPECT_EQ(stages.count(stage), 1u) << stage;
+  }
+  ASSERT_GT(stats.frame_pass_ms, 0.0);
+  EXPECT_GE(sum, 0.999 * (stats.frame_pass_ms + stats.shadow_pass_ms)) << "the stages start before the passes and end after them";
+}
+
 }  // namespace
 }  // namespace ecoview

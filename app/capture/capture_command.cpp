@@ -58,6 +58,13 @@ std::set<std::string> frame_files(const fs::path& out, const std::vector<Aov>& a
   return names;
 }
 
+// GPU milliseconds by stage.
+nlohmann::json stage_figures(const FrameStats& s) {
+  nlohmann::json stages = nlohmann::json::object();
+  for (const auto& [stage, ms] : s.stage_ms) stages[stage] = ms;
+  return stages;
+}
+
 // One frame's figures for --stats (names as DESIGN.md defines them).
 // render_ms: the wall time of this one frame, sampling, passes and read-backs, until glFinish.
 nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOptions& options, const Renderer& renderer) {
@@ -67,7 +74,7 @@ nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOp
           {"alias_p95", alias_percentile(renderer.frame().read_aliasing(), renderer.frame().read_visibility(), shadow::p95_fraction)},
           {"sample_ms", s.sample_ms}, {"host_ms", s.host_ms}, {"shadow_pass_ms", s.shadow_pass_ms}, {"frame_pass_ms", s.frame_pass_ms},
           {"points", s.points}, {"triangles", s.triangles}, {"shadow_points", s.shadow_points},
-          {"shadow_triangles", s.shadow_triangles}};
+          {"shadow_triangles", s.shadow_triangles}, {"stage_ms", stage_figures(s)}};
 }
 
 }  // namespace

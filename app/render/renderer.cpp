@@ -302,10 +302,12 @@ void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Lig
     upload_polygons(drawn);
     stats_.shadow_triangles += fixed_triangles() + drawn.triangle_count;
     shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer));
+    stages_.end("map polygons");
     if (!settings_.points) continue;
     shadow_points_->upload(selections[layer].points, tables_, samples_);
     shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
                                settings_.shadow_splat_size, shadow_point_bias, v.paraboloid_parameters());
+    stages_.end("map splats");
   }
   shadow_timer_.stop();
   pending_.shadow_timer = true;
@@ -318,6 +320,7 @@ FramePass::ShadowLookup Renderer::render_shadow_volumes(const shadow::Camera& ca
   shadow_timer_.start();
   draw_frame(camera, light, std::nullopt);
   volume_pass_->render(gpu_scene_, view_projection_, light);
+  stages_.end("shadow volumes");
   shadow_timer_.stop();
   pending_.shadow_timer = true;
   return {volume_pass_->light_mask(), setup_, 0};
@@ -359,11 +362,13 @@ void Renderer::draw_frame(const shadow::Camera& camera, const shadow::Light& lig
 
 void Renderer::draw_surfaces(const shadow::Camera& camera, const std::vector<shadow::Plane>& casters) {
   frame_pass_.draw_surfaces(gpu_scene_, camera);
+  stages_.end("polygons");
   if (gpu_sampler_) {
     sample_on_gpu(camera, casters);
   } else if (settings_.points) {
     frame_points_.begin();
     frame_points_.add(view_projection_, settings_.splat_size, 0.0f, false, coverage_view(camera));
+    stages_.end("splats");
   }
 }
 
@@ -372,12 +377,15 @@ void Renderer::finish_frame(const shadow::Camera& camera, const shadow::Light& l
   if (settings_.points) {
     frame_points_.resolve(view_projection_, settings_.splat_size, 0.0f);
     frame_pass_.add_points(frame_points_, camera);
+    stages_.end("splats");
   }
   frame_pass_.shade(camera, light, lookup);
+  stages_.end("shading");
 }
 
 void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<shadow::Plane>& casters) {
   gpu_sampler_->begin(sampler_view(camera, settings_, {view_projection_}), GpuSampler::bands(camera.far), casters);
+  stages_.end("choice");
   const int bands = gpu_sampler_->distance_band_count();
   frame_points_.use(gpu_sampler_->draw_list(), samples_);
   frame_points_.begin();
@@ -385,9 +393,13 @@ void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<sha
   occluders_->build(frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
   for (int b = 0; b < bands; ++b) {
     if (b > 0) occluders_->build_if(gpu_sampler_->band_drawn(), static_cast<std::size_t>(b - 1), frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
+    stages_.end("occlusion");
     gpu_sampler_->add_band(b, occluders_.get());
+    stages_.end("choice");
     frame_pass_.add_chosen_surfaces(gpu_scene_, *gpu_sampler_, b, camera);
+    stages_.end("polygons");
     frame_points_.add(view_projection_, settings_.splat_size, 0.0f, true, coverage_view(camera));
+    stages_.end("splats");
   }
   // Casters out of view and near plants the frame hides: for the shadow map alone (the frame's
   // splat passes stop before their points).
@@ -395,7 +407,9 @@ void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<sha
     const glm::mat4 map_view = culling_frusta(setup_.views.front()).front();
     occluders_->build_if(gpu_sampler_->band_drawn(), static_cast<std::size_t>(bands - 1), frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
     receivers_->build_receivers(*occluders_, view_projection_, map_view);
+    stages_.end("occlusion");
     gpu_sampler_->add_casters(map_view, shadow_texels(), *receivers_, !setup_.views.front().paraboloid);
+    stages_.end("map choice");
   }
 }
 
@@ -457,6 +471,7 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   pose(t);
   stats_ = {};
   pending_ = {};
+  stages_.start();
   view_projection_ = camera.projection(aspect()) * camera.view();
   camera_ = camera;
   light_ = light;
@@ -559,10 +574,14 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
                                         : one_map ? gpu_sampler_->select_casters(0, v.view_projection(), settings_.shadow_size, *receivers_)
                                                   : every_band;
     earlier.push_back(v.view_projection());
+    stages_.end("map choice");
     shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer), &plants);
+    stages_.end("map polygons");
     gpu_sampler_->cap_for_map(v.view_projection(), shadow_texels(), v.paraboloid ? 0.0f : settings_.k);
+    stages_.end("map choice");
     shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
                                settings_.shadow_splat_size, shadow_point_bias, v.paraboloid_parameters());
+    stages_.end("map splats");
   }
   shadow_timer_.stop();
 
@@ -586,6 +605,7 @@ GpuScene::PlantDraws Renderer::cascade_casters(int layer, const glm::mat4& map_v
 const FrameStats& Renderer::stats() const {
   if (pending_.frame_timers > 0) stats_.frame_pass_ms = frame_timer_.ms() + (pending_.frame_timers > 1 ? finish_timer_.ms() : 0.0);
   if (pending_.shadow_timer) stats_.shadow_pass_ms = shadow_timer_.ms();
+  if (pending_.frame_timers > 0) stats_.stage_ms = stages_.ms();
   if (pending_.gpu_choice) {
     const GpuSampler::Totals chosen = gpu_sampler_->read_totals();
     stats_.points = chosen.frame_points;

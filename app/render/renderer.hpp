@@ -1,4 +1,5 @@
 #pragma once
+#include "app/gl/gpu_stages.hpp"
 #include "app/gl/gpu_timer.hpp"
 #include "app/render/depth_pyramid.hpp"
 #include "app/render/frame_pass.hpp"
@@ -75,6 +76,9 @@ struct FrameStats {
   double host_ms = 0.0;
   double shadow_pass_ms = 0.0;  // GPU (timer query)
   double frame_pass_ms = 0.0;   // GPU (timer query): polygons, point splats and their shading
+  // GPU (timestamps): both passes by stage (polygons, choice, occlusion, splats, shading; the
+  // shadow map's as "map …"), in the order each first ran.
+  std::vector<std::pair<std::string, double>> stage_ms;
 };
 
 // What the view sampler needs for `camera` with these settings; `views` are the matrices to cull
@@ -205,6 +209,7 @@ class Renderer {
   // The frame pass is timed in one piece (frame_timer_) or, around the GPU sampler's shadow
   // pass, two (finish_timer_ after it).
   gl::GpuTimer shadow_timer_, frame_timer_, finish_timer_;
+  gl::GpuStages stages_;
   // What stats() still reads back from the GPU for the last frame.
   struct PendingStats {
     int frame_timers = 0;
