@@ -30,7 +30,7 @@ uniform uint table_count;
 layout(local_size_x = 1) in;
 void main() {
   for (uint c = 0u; c < 2u * table_count * lanes; ++c) layer_counts[c] = 0u;
-  layer_dispatch = uvec4((polygon_count + 255u) / 256u, 1u, 1u, 0u);
+  layer_dispatch = group_rows(polygon_count);
 }
 #elif defined(PLACE)
 layout(local_size_x = 1) in;
@@ -53,7 +53,7 @@ void main() {
   }
 }
 #else
-layout(local_size_x = 256) in;
+layout(local_size_x = 64) in;  // a work group per polygon plant, a part each
 uniform mat4 map_view_projection;
 uniform vec2 pixels;  // the view's image
 uniform bool writing;
@@ -78,7 +78,7 @@ void add_to(uint list, uint plant) {
 }
 
 void main() {
-  uint slot = gl_GlobalInvocationID.x;
+  uint slot = group_number();
   if (slot >= polygon_count) return;
   uint plant = polygon_instances[slot];
   if (counts[plant].z == 0u) return;  // the map draws it as points (sample_bins.comp, HIDDEN_KEYS)
@@ -87,12 +87,11 @@ void main() {
   if (shadows_nothing(map_view_projection, model, mesh)) return;
   uint first_list = table_of(plant) * lanes;
   uvec2 casting = parts_kept(map_view_projection, pixels, model, mesh, true, false);
+  uint part = gl_LocalInvocationID.x;  // this thread's list: its part's, and thread 0 the whole plants'
   if (casting == drawn_whole) {
-    add_to(first_list + whole_lane, plant);
-    return;
-  }
-  for (uint half_ = 0u; half_ < 2u; ++half_) {
-    for (uint bits = casting[half_]; bits != 0u; bits &= bits - 1u) add_to(first_list + 32u * half_ + uint(findLSB(bits)), plant);
+    if (part == 0u) add_to(first_list + whole_lane, plant);
+  } else if (in_lane(casting, part)) {
+    add_to(first_list + part, plant);
   }
 }
 #endif

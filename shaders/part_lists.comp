@@ -17,12 +17,6 @@ uniform uint table_count;
 uniform uint part_plant_capacity;  // the list's room: plants past it are not drawn
 uniform uint first_command;        // this band's first command
 
-// The band's polygon plants: their first place in the lists of polygon plants, and the end.
-uvec2 band_polygons() {
-  uvec2 band = this_band();
-  return uvec2(band.y > 0u ? offsets[0].z + group_sums[0].z : polygon_count, polygon_count);
-}
-
 // The first place in list[first, end) whose plant is `plant` or after it (lists hold plants in order).
 uint place_of(uint first, uint end, uint plant) {
   while (first < end) {

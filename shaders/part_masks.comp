@@ -11,20 +11,21 @@
 #include "plant_boxes.glsl"
 #include "polygon_parts.glsl"
 #include "plant_parts.glsl"
-layout(local_size_x = 256) in;
+layout(local_size_x = 64) in;  // a part each
 
+layout(std430, binding = 16) readonly buffer PolygonInstances { uint polygon_instances[]; };
 layout(std430, binding = 26) writeonly buffer PartMasks { uvec2 part_masks[]; };
 
 uniform mat4 view_projection;
 uniform bool occlusion;
 uniform vec2 pixels;  // the view's image
 
+// A work group per polygon plant of the band, which sample_draws.comp listed after those of the
+// bands before (their end, polygon_count, is this band's too: sample_groups.comp added it).
 void main() {
-  uvec2 band = this_band();
-  uint place = gl_GlobalInvocationID.x;
-  if (place >= band.y) return;
-  uint i = band_list[band.x + place];
-  if (counts[i].z == 0u) return;
-  part_masks[offsets[place].z + group_sums[place / plants_per_group].z] =
-      parts_kept(view_projection, pixels, instances[i].model, meshes[plant_meshes[i].x], false, occlusion);
+  uint slot = band_polygons().x + group_number();
+  if (slot >= polygon_count) return;
+  uint i = polygon_instances[slot];
+  uvec2 kept = parts_kept(view_projection, pixels, instances[i].model, meshes[plant_meshes[i].x], false, occlusion);
+  if (gl_LocalInvocationID.x == 0u) part_masks[slot] = kept;
 }

@@ -41,7 +41,7 @@ bool box_hidden(mat4 m, mat4 model, vec3 center, vec3 half_size, bool occlusion)
   if (!occlusion) return false;
   ivec2 first, last;
   texels_of(lo, hi, first, last);
-  return lo.z * 0.5 + 0.5 > farthest_over(first, last);
+  return all_nearer(first, last, lo.z * 0.5 + 0.5, false);
 }
 
 // Whether a caster's box (centre and half sizes in the frame `model` places) covers no receiver
@@ -54,7 +54,7 @@ bool shadows_nothing(mat4 map, mat4 model, vec3 center, vec3 half_size) {
   if (off_image(lo, hi)) return true;
   ivec2 first, last;
   texels_of(lo, hi, first, last);
-  return farthest_over(first, last) <= max(lo.z * 0.5 + 0.5, 0.0);
+  return all_nearer(first, last, max(lo.z * 0.5 + 0.5, 0.0), true);
 }
 
 bool shadows_nothing(mat4 map, mat4 model, SampledMesh mesh) {

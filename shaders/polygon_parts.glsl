@@ -29,6 +29,21 @@ bool in_lane(uvec2 drawn, uint lane) {
   return drawn != drawn_whole && ((drawn[lane / 32u] >> (lane % 32u)) & 1u) != 0u;
 }
 
+// The band's polygon plants (after its groups pass, sample_groups.comp): their first place in the
+// list of the frame's polygon plants, and the end.
+uvec2 band_polygons() {
+  uvec2 band = this_band();
+  return uvec2(band.y > 0u ? offsets[0].z + group_sums[0].z : polygon_count, polygon_count);
+}
+
+// The passes with a work group per polygon plant (part_masks.comp, layer_casters.comp) lay their
+// groups in rows of GL's guaranteed 65535: the indirect dispatch for `groups`, and a group's number.
+uvec4 group_rows(uint groups) {
+  const uint row = 65535u;
+  return groups == 0u ? uvec4(0u, 1u, 1u, 0u) : uvec4(min(groups, row), (groups + row - 1u) / row, 1u, 0u);
+}
+uint group_number() { return gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x; }
+
 // The pixels a rectangle of NDC covers in an image of `pixels`.
 float pixels_in(vec3 lo, vec3 hi, vec2 pixels) {
   vec2 extent = 0.5 * (hi.xy - lo.xy) * pixels;

@@ -8,7 +8,8 @@ layout(local_size_x = 256) in;
 
 layout(std430, binding = 23) buffer GroupBands { uint group_bands[]; };
 // Per band: the groups of its count pass (plants_per_group plants each), then of its draw pass
-// (256 plants each), each as (x, 1, 1, 0); a third, its part lists' (sample_groups.comp).
+// (256 plants each), each as (x, 1, 1, 0); a third, its part lists', and a fourth, its part masks'
+// (sample_groups.comp).
 layout(std430, binding = 24) writeonly buffer BandDispatch { uvec4 band_dispatch[]; };
 uniform uint group_count;
 uniform uint band_count;
@@ -54,7 +55,7 @@ void main() {
     uint start = group_bands[b * group_count];
     uint end = b + 1u < band_count ? group_bands[(b + 1u) * group_count] : carried;
     band_ranges[first_band + b] = uvec2(start, end - start);
-    band_dispatch[3u * (first_band + b)] = uvec4((end - start + plants_per_group - 1u) / plants_per_group, 1u, 1u, 0u);
-    band_dispatch[3u * (first_band + b) + 1u] = uvec4((end - start + 255u) / 256u, 1u, 1u, 0u);
+    band_dispatch[4u * (first_band + b)] = uvec4((end - start + plants_per_group - 1u) / plants_per_group, 1u, 1u, 0u);
+    band_dispatch[4u * (first_band + b) + 1u] = uvec4((end - start + 255u) / 256u, 1u, 1u, 0u);
   }
 }

@@ -39,7 +39,8 @@ void main() {
   barrier();
   if (t == 0u) {
     band_drawn[band_number - 1u] = carried.y - draw_count + carried.z - polygon_count;
-    band_dispatch[3u * (band_number - 1u) + 2u] = uvec4(carried.z > polygon_count ? lanes : 0u, 1u, 1u, 0u);
+    band_dispatch[4u * (band_number - 1u) + 2u] = uvec4(carried.z > polygon_count ? lanes : 0u, 1u, 1u, 0u);
+    band_dispatch[4u * (band_number - 1u) + 3u] = group_rows(carried.z - polygon_count);
     band_first_point = min(all_points, point_capacity);
     all_points = carried.x;
     total_points = min(carried.x, point_capacity);

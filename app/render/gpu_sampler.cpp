@@ -172,7 +172,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<GLuint>(band_list_, 2 * plant_count_);  // the frame's bands, then the band of those hidden in it
   storage<glm::uvec2>(band_ranges_, max_bands);
   gl::store(band_ends_, std::vector<GLuint>(max_bands + 4 * static_cast<std::size_t>(most_distance_bands), 0u));  // ends, quarters' counts
-  storage<glm::uvec4>(band_dispatch_, 3 * max_bands);
+  storage<glm::uvec4>(band_dispatch_, 4 * max_bands);  // shaders/sample_bands.comp
   gl::store(band_drawn_, std::vector<GLuint>(max_bands, 1u));  // as if each drew: a pyramid built over them stays right
   part_lists_ = std::make_unique<PolygonPartLists>(plant_count_, table_count_, max_bands);
 }
@@ -322,7 +322,7 @@ void GpuSampler::add_band(int band, const DepthPyramid* occluders) {
   }
   gl::set_uniform(count_program_, "occlusion", occluders ? 1 : 0);
   if (occluders) occluders->bind_for(count_program_);
-  const auto dispatch_at = [&](int which) { return static_cast<GLintptr>((3 * band + which) * sizeof(glm::uvec4)); };
+  const auto dispatch_at = [&](int which) { return static_cast<GLintptr>((4 * band + which) * sizeof(glm::uvec4)); };
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, band_dispatch_.name());
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   glUseProgram(count_program_.name());

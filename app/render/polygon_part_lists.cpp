@@ -65,13 +65,13 @@ void PolygonPartLists::begin(const glm::mat4& view_projection, glm::vec2 pixels)
 
 void PolygonPartLists::choose(int band, const DepthPyramid* occluders, GLuint band_dispatch) {
   const auto number = static_cast<unsigned>(band + 1);
-  const auto dispatch_at = [&](int which) { return static_cast<GLintptr>((3 * band + which) * sizeof(glm::uvec4)); };
+  const auto dispatch_at = [&](int which) { return static_cast<GLintptr>((4 * band + which) * sizeof(glm::uvec4)); };
   gl::set_uniform(part_masks_program_, "band_number", number);
   gl::set_uniform(part_masks_program_, "occlusion", occluders ? 1 : 0);
   if (occluders) occluders->bind_for(part_masks_program_);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, band_dispatch);
   glUseProgram(part_masks_program_.name());
-  glDispatchComputeIndirect(dispatch_at(1));
+  glDispatchComputeIndirect(dispatch_at(3));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   gl::set_uniform(part_lists_program_, "band_number", number);
