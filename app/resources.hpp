@@ -5,7 +5,7 @@
 #include <vector>
 
 // Files compiled into the binary at build time: everything under shaders/ and data/, by their path
-// from the source root ("shaders/shade.frag", "data/scenes/courtyard.json").
+// from the source root ("shaders/shade.comp", "data/scenes/courtyard.json").
 namespace ecoview::resources {
 
 std::optional<std::string_view> find(std::string_view path);

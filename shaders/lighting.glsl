@@ -1,4 +1,4 @@
-// The lighting of shade.frag: Blinn-Phong with one shadowing light. The shadow term dims the
+// The lighting of shade.comp: Blinn-Phong with one shadowing light. The shadow term dims the
 // diffuse light instead of removing it (Kilgard 2001):
 // (ambient + diffuse_shade * diffuse) * albedo + visibility * specular.
 #include "shadow_views.glsl"
@@ -22,8 +22,8 @@ const float specular_strength = 0.25;
 // surface along its normal by about a texel where the light grazes it, so the outer taps do not
 // hit the surface's own depth (acne); slope-scaled polygon offset in the shadow pass covers the
 // centre tap.
-float shadow_test(vec3 position, vec3 n, float n_dot_l) {
-  if (shadow_selection == SCREEN_MASK) return texelFetch(light_mask, ivec2(gl_FragCoord.xy), 0).r;
+float shadow_test(ivec2 pixel, vec3 position, vec3 n, float n_dot_l) {
+  if (shadow_selection == SCREEN_MASK) return texelFetch(light_mask, pixel, 0).r;
   int layer = shadow_view(position);
   float sin_light = sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0));
   vec3 p = position + n * (1.5 * texel_world_size(layer, position) * sin_light);
@@ -52,8 +52,8 @@ struct Shading {
   float visibility;  // the `shadow` AOV
 };
 
-// `n` faces the viewer (thin surfaces are lit from either side).
-Shading shade(vec3 position, vec3 n, vec3 albedo) {
+// `n` faces the viewer (thin surfaces are lit from either side); `position` is what `pixel` shows.
+Shading shade(ivec2 pixel, vec3 position, vec3 n, vec3 albedo) {
   vec3 to_light = direction_to_light(position);
   float n_dot_l = dot(n, to_light);
 
@@ -65,7 +65,7 @@ Shading shade(vec3 position, vec3 n, vec3 albedo) {
     falloff = smoothstep(spot_cos_cone, mix(spot_cos_cone, 1.0, 0.25), cos_angle);
   }
   float visibility = n_dot_l > 0.0 ? cone : 0.0;
-  if (shadows_enabled && visibility > 0.0) visibility *= shadow_test(position, n, n_dot_l);
+  if (shadows_enabled && visibility > 0.0) visibility *= shadow_test(pixel, position, n, n_dot_l);
 
   vec3 view_dir = normalize(camera_position - position);
   vec3 half_dir = normalize(to_light + view_dir);

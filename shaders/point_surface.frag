@@ -4,7 +4,7 @@
 // is the nearest of those whose centre falls in the pixel, else the nearest whose splat reaches
 // it: a splat's nearest point shows the front of a tuft or crown over its neighbours' pixels too,
 // darker than the surface there on the default view (docs/point_density.md). Its albedo's alpha is
-// the share of the pixel the points' surfaces cover (point_coverage.glsl); shade.frag blends the
+// the share of the pixel the points' surfaces cover (point_coverage.glsl); shade.comp blends the
 // surface behind into the rest.
 #include "point_common.glsl"
 

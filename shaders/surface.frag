@@ -1,6 +1,6 @@
 #version 450 core
 // The frame's first pass (deferred shading): the nearest polygon surface of each pixel, lit once
-// per pixel by shade.frag, which finds its position from the depth. Plants' leaves are many triangles smaller than a pixel, and llvmpipe
+// per pixel by shade.comp, which finds its position from the depth. Plants' leaves are many triangles smaller than a pixel, and llvmpipe
 // runs a fragment shader on a whole 4x4 block for each: lighting them here made the ecosystem's
 // frame pass about 1.5 times as long (docs/benchmarks.md, "Deferred shading").
 in vec3 world_normal;

@@ -157,7 +157,7 @@ std::string FramePass::defines(const ShadeVariant& variant) {
 const gl::Program& FramePass::shade_program(const ShadeVariant& variant) const {
   auto found = shade_programs_.find(variant);
   if (found != shade_programs_.end()) return found->second;
-  return shade_programs_.emplace(variant, gl::build_program({"fullscreen.vert", "shade.frag"}, defines(variant))).first->second;
+  return shade_programs_.emplace(variant, gl::build_program({"shade.comp"}, defines(variant))).first->second;
 }
 
 const gl::Program& FramePass::prediction_program(const ShadeVariant& variant) const {
@@ -233,17 +233,6 @@ void FramePass::set_light(const gl::Program& program, const shadow::Light& light
 
 void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,
                       const std::optional<ShadowLookup>& shadow_map) const {
-  const GLuint fb = lit_.name();
-  glBindFramebuffer(GL_FRAMEBUFFER, fb);
-  glViewport(0, 0, width_, height_);
-  const float sky[4] = {sky_color.r, sky_color.g, sky_color.b, 1.0f};
-  const float fully_visible[4] = {1.0f, 0.0f, 0.0f, 0.0f};
-  const float no_surface[4] = {-1.0f, 0.0f, 0.0f, 0.0f};
-  glClearNamedFramebufferfv(fb, GL_COLOR, 0, sky);
-  glClearNamedFramebufferfv(fb, GL_COLOR, 1, fully_visible);
-  glClearNamedFramebufferfv(fb, GL_COLOR, 2, no_surface);
-  glDisable(GL_DEPTH_TEST);
-
   const gl::Program& program = shade_program(shade_variant(shadow_map));
   glUseProgram(program.name());
   set_lighting(program, camera, camera, light, shadow_map);
@@ -256,8 +245,14 @@ void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,
     glBindTextureUnit(7, polygon_surfaces_->depth.name());
   }
   gl::set_uniform(program, "sky", srgb_to_linear(sky_color));
-  draw_fullscreen();
-  glEnable(GL_DEPTH_TEST);
+  glBindImageTexture(0, color_.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+  glBindImageTexture(1, visibility_.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
+  glBindImageTexture(2, aliasing_.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glDispatchCompute(static_cast<GLuint>((width_ + 7) / 8), static_cast<GLuint>((height_ + 7) / 8), 1);
+  // Read back, blitted to a window, or sampled by the next frame's passes.
+  glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                  GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
 void FramePass::draw_fullscreen() const {

@@ -1,0 +1,50 @@
+#version 450 core
+// The frame's last pass: lights the surface each pixel holds (surface.frag, point_surface.frag).
+// Pixels without one show the sky. Where points cover only part of a pixel (the albedo's alpha),
+// the rest shows the polygons drawn behind them, or the sky, lit likewise and blended in linear
+// light; the `shadow` and `aliasing` AOVs stay the nearest surface's. A compute pass, a thread a
+// pixel: a fullscreen fragment pass cost more on llvmpipe and on a GPU's few raster units
+// (docs/benchmarks.md).
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 2) uniform sampler2D surface_normals;
+layout(binding = 3) uniform sampler2D surface_albedos;
+layout(binding = 4) uniform sampler2D surface_depths;  // linear view depth, negative for none
+// The polygons' surfaces before the points were added.
+layout(binding = 5) uniform sampler2D polygon_normals;
+layout(binding = 6) uniform sampler2D polygon_albedos;
+layout(binding = 7) uniform sampler2D polygon_depths;
+uniform vec3 sky;  // linear RGB
+
+layout(binding = 0, rgba8) uniform writeonly image2D out_color;  // sRGB
+layout(binding = 1, r8) uniform writeonly image2D out_visibility;  // the `shadow` AOV
+layout(binding = 2, r32f) uniform writeonly image2D out_aliasing;  // the `aliasing` AOV
+
+#include "lighting.glsl"
+#include "surface_position.glsl"
+
+vec3 polygon_color(ivec2 pixel) {
+  float depth = texelFetch(polygon_depths, pixel, 0).r;
+  if (depth < 0.0) return sky;
+  vec3 position = surface_position(vec2(pixel) + 0.5, depth);
+  return shade(pixel, position, texelFetch(polygon_normals, pixel, 0).xyz, texelFetch(polygon_albedos, pixel, 0).rgb).color;
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(pixel, ivec2(frame_size)))) return;
+  float depth = texelFetch(surface_depths, pixel, 0).r;
+  if (depth < 0.0) {
+    imageStore(out_color, pixel, vec4(linear_to_srgb(sky), 1.0));
+    imageStore(out_visibility, pixel, vec4(1.0));
+    imageStore(out_aliasing, pixel, vec4(-1.0));
+    return;
+  }
+  vec3 position = surface_position(vec2(pixel) + 0.5, depth);
+  vec3 n = texelFetch(surface_normals, pixel, 0).xyz;
+  vec4 albedo = texelFetch(surface_albedos, pixel, 0);
+  Shading s = shade(pixel, position, n, albedo.rgb);
+  vec3 color = albedo.a < 1.0 ? mix(polygon_color(pixel), s.color, albedo.a) : s.color;
+  imageStore(out_color, pixel, vec4(linear_to_srgb(color), 1.0));
+  imageStore(out_visibility, pixel, vec4(s.visibility));
+  imageStore(out_aliasing, pixel, vec4(aliasing_factor(position, n)));
+}
