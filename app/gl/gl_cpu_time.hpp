@@ -6,7 +6,8 @@ namespace ecoview {
 double thread_cpu_ms();
 
 // The CPU time the calling thread has spent inside GL calls, in milliseconds: the loader (glad,
-// generated with --debug) calls back before and after each one. Counted from
+// generated with --debug) calls back before and after each one, and each call also takes the time
+// of one reading of the clock (count_gl_cpu_time measures it once). Counted from
 // count_gl_cpu_time() on.
 double gl_cpu_ms();
 void count_gl_cpu_time();
