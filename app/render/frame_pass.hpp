@@ -113,7 +113,7 @@ class FramePass {
   };
   mutable std::unique_ptr<Surfaces> polygon_surfaces_;
   void keep_polygon_surfaces() const;
-  // Their lighting: written by shade.
+  // Their lighting: written by shade as images, read back and blitted through lit_.
   gl::Texture color_{GL_TEXTURE_2D};
   gl::Texture visibility_{GL_TEXTURE_2D};
   gl::Texture aliasing_{GL_TEXTURE_2D};
@@ -123,9 +123,9 @@ class FramePass {
   gl::Program point_program_;
   mutable std::map<ShadeVariant, gl::Program> shade_programs_, prediction_programs_;
   gl::Buffer histograms_;  // predict_aliasing's
-  gl::VertexArray empty_vertex_array_;
+  gl::VertexArray empty_vertex_array_;  // for the fullscreen triangle, which has no attributes
   gl::Program nearest_program_;
-  gl::Buffer nearest_;  // for the fullscreen triangle, which has no attributes
+  gl::Buffer nearest_;
 };
 
 }  // namespace ecoview
