@@ -3,7 +3,7 @@
 // Pixels without one show the sky. Where points cover only part of a pixel (the albedo's alpha),
 // the rest shows the polygons drawn behind them, or the sky, lit likewise and blended in linear
 // light; the `shadow` and `aliasing` AOVs stay the nearest surface's. A compute pass, a thread a
-// pixel: as a fullscreen fragment pass the default view's frame took 14 % longer on llvmpipe
+// pixel: as a fullscreen fragment pass the default view's frame took 14–21 % longer on llvmpipe
 // (docs/benchmarks.md), and on a GPU it leaves the raster units to the polygons.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 2) uniform sampler2D surface_normals;
