@@ -1,6 +1,6 @@
 // The splat compute passes' threads: each takes a run of points_per_thread consecutive points and
 // visits the splat_size x splat_size pixels of each. The work groups are laid out in rows of up to
-// GL's 65535 (shaders/point_dispatch.comp).
+// GL's 65535 (group_rows.glsl, point_dispatch.comp).
 layout(local_size_x = 64) in;
 
 uniform int splat_size;
@@ -9,10 +9,11 @@ uniform bool map_points;  // also the points for shadow maps alone, which the fr
 
 const uint points_per_thread = 16u;
 
+#include "group_rows.glsl"
+
 // This thread's points, from x up to y (none when x >= y).
 uvec2 thread_points() {
-  uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-  uint first = (band_only ? band_first_point : 0u) + (group * gl_WorkGroupSize.x + gl_LocalInvocationID.x) * points_per_thread;
+  uint first = (band_only ? band_first_point : 0u) + (group_number() * gl_WorkGroupSize.x + gl_LocalInvocationID.x) * points_per_thread;
   return uvec2(first, min(first + points_per_thread, map_points ? total_points : frame_points));
 }
 

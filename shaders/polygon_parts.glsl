@@ -37,12 +37,8 @@ uvec2 band_polygons() {
 }
 
 // The passes with a work group per polygon plant (part_masks.comp, layer_casters.comp) lay their
-// groups in rows of GL's guaranteed 65535: the indirect dispatch for `groups`, and a group's number.
-uvec4 group_rows(uint groups) {
-  const uint row = 65535u;
-  return groups == 0u ? uvec4(0u, 1u, 1u, 0u) : uvec4(min(groups, row), (groups + row - 1u) / row, 1u, 0u);
-}
-uint group_number() { return gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x; }
+// groups in rows.
+#include "group_rows.glsl"
 
 // The pixels a rectangle of NDC covers in an image of `pixels`.
 float pixels_in(vec3 lo, vec3 hi, vec2 pixels) {
