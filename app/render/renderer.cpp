@@ -364,7 +364,7 @@ void Renderer::draw_surfaces(const shadow::Camera& camera, const std::vector<sha
   frame_pass_.draw_surfaces(gpu_scene_, camera);
   stages_.end("polygons");
   if (gpu_sampler_) {
-    sample_on_gpu(camera, casters);
+    if (draws_points()) sample_on_gpu(camera, casters);
   } else if (settings_.points) {
     frame_points_.begin();
     frame_points_.add(view_projection_, settings_.splat_size, 0.0f, false, coverage_view(camera));
@@ -374,7 +374,7 @@ void Renderer::draw_surfaces(const shadow::Camera& camera, const std::vector<sha
 
 void Renderer::finish_frame(const shadow::Camera& camera, const shadow::Light& light,
                             const std::optional<FramePass::ShadowLookup>& lookup) {
-  if (settings_.points) {
+  if (draws_points()) {
     frame_points_.resolve(view_projection_, settings_.splat_size, 0.0f);
     frame_pass_.add_points(frame_points_, camera);
     stages_.end("splats");
@@ -453,6 +453,8 @@ bool Renderer::culls_casters() const {
   return settings_.points && !gpu_sampler_ && settings_.cull_casters && m != ShadowMethod::none && m != ShadowMethod::volumes &&
          m != ShadowMethod::reference;
 }
+
+bool Renderer::draws_points() const { return settings_.points && (!gpu_sampler_ || gpu_sampler_->plant_count() > 0); }
 
 // The nearest depth reduced on the GPU (host_ms: a CPU scan of the read-back took 1 ms at 640×360
 // and 5 ms at 1920×1080 here); the receivers read back and sampled on the CPU. auto predicts from
@@ -577,6 +579,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
     stages_.end("map choice");
     shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer), &plants);
     stages_.end("map polygons");
+    if (!draws_points()) continue;
     gpu_sampler_->cap_for_map(v.view_projection(), shadow_texels(), v.paraboloid ? 0.0f : settings_.k);
     stages_.end("map choice");
     shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
@@ -596,6 +599,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
 // earlier cascade's square: near plants, whose shadows fall in the first cascade, stay out of the
 // others (on the ecosystem's default view each cascade otherwise drew every polygon plant).
 GpuScene::PlantDraws Renderer::cascade_casters(int layer, const glm::mat4& map_view, const std::vector<glm::mat4>& earlier) {
+  if (!draws_points()) return {};
   receivers_->build_receivers(*occluders_, view_projection_, map_view, earlier, static_cast<float>(settings_.shadow_size));
   return gpu_sampler_->select_casters(layer, map_view, settings_.shadow_size, *receivers_);
 }

@@ -135,6 +135,9 @@ class Renderer {
   shadow::ShadowSetup best_predicted_setup(const shadow::Camera& camera, const shadow::Light& light) const;
   // Whether the shadow sampler skips casters by the last frame's receivers.
   bool culls_casters() const;
+  // Whether frames have point passes: not where the GPU sampler holds no plants (a scene without
+  // point meshes), whose pyramids and splat passes would run over nothing.
+  bool draws_points() const;
   // Whether the next frame takes anything from the last one (near plane, surface, receivers).
   bool needs_last_frame() const;
   // Keeps what the next frame needs of this one: its nearest depth (PSM), its camera (auto predicts
