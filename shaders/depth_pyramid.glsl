@@ -34,3 +34,28 @@ bool all_nearer(ivec2 lo, ivec2 hi, float depth, bool or_at) {
   }
   return true;
 }
+
+// The pyramid's tiles of tile_pixels × tile_pixels pixels, a flag each, rows from the bottom, that
+// what was drawn since its last build may have changed (DepthPyramid::build_changed builds only
+// those). A pass that draws marks them with MARKS_CHANGES.
+const int tile_pixels = 32;
+#if defined(MARKS_CHANGES) || defined(LISTS_CHANGES)
+layout(std430, binding = 39) buffer ChangedTiles { uint changed_tiles[]; };
+#endif
+#if defined(LISTS_CHANGES) || defined(READS_CHANGES)
+// The changed tiles' numbers in a list (pyramid_dispatch.comp), for the base pass.
+layout(std430, binding = 40) buffer ChangedList { uint changed_list[]; };
+#endif
+ivec2 tile_counts() { return (pyramid_size[0] + tile_pixels - 1) / tile_pixels; }
+#ifdef MARKS_CHANGES
+// Marks the tiles over level 0's pixels `lo` to `hi` (inclusive) and `margin` pixels around:
+// the nearest depth within a pixel (level 0) and a splat about a point reach that far past them.
+void mark_changed(ivec2 lo, ivec2 hi, int margin) {
+  ivec2 first = clamp(lo - margin, ivec2(0), pyramid_size[0] - 1) / tile_pixels;
+  ivec2 last = clamp(hi + margin, ivec2(0), pyramid_size[0] - 1) / tile_pixels;
+  int row = tile_counts().x;
+  for (int y = first.y; y <= last.y; ++y) {
+    for (int x = first.x; x <= last.x; ++x) changed_tiles[y * row + x] = 1u;
+  }
+}
+#endif

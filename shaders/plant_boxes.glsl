@@ -31,17 +31,21 @@ void texels_of(vec3 lo, vec3 hi, out ivec2 first, out ivec2 last) {
 
 bool off_image(vec3 lo, vec3 hi) { return any(lessThan(hi.xy, vec2(-1.0))) || any(greaterThan(lo.xy, vec2(1.0))); }
 
-// Whether a box (centre and half sizes in the frame `model` places) is off the image through `m`
-// or, with `occlusion`, behind what the pyramid holds over all of its rectangle. Not where it
-// reaches behind the eye.
-bool box_hidden(mat4 m, mat4 model, vec3 center, vec3 half_size, bool occlusion) {
-  vec3 lo, hi;
-  if (!placed_box_rect(m, model, center, half_size, lo, hi)) return false;
+// Whether a box's NDC rectangle and nearest depth (placed_box_rect) is off the image or, with
+// `occlusion`, behind what the pyramid holds over all of it.
+bool rect_hidden(vec3 lo, vec3 hi, bool occlusion) {
   if (off_image(lo, hi)) return true;
   if (!occlusion) return false;
   ivec2 first, last;
   texels_of(lo, hi, first, last);
   return all_nearer(first, last, lo.z * 0.5 + 0.5, false);
+}
+
+// The same of a box (centre and half sizes in the frame `model` places) through `m`. Not where it
+// reaches behind the eye.
+bool box_hidden(mat4 m, mat4 model, vec3 center, vec3 half_size, bool occlusion) {
+  vec3 lo, hi;
+  return placed_box_rect(m, model, center, half_size, lo, hi) && rect_hidden(lo, hi, occlusion);
 }
 
 // Whether a caster's box (centre and half sizes in the frame `model` places) covers no receiver

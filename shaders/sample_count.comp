@@ -5,12 +5,14 @@
 // density formula (docs/point_density.md); points or polygons chosen as pointgen::sample_view
 // chooses them. Then the prefix sums of the counts within each work group.
 #include "sample_common.glsl"
+#define MARKS_CHANGES
 #include "depth_pyramid.glsl"
 #include "plant_boxes.glsl"
 layout(local_size_x = 256) in;
 
 uniform mat4 view_projection;  // the first view's, for occlusion
 uniform bool occlusion;
+const int changed_margin = 10;
 // For the shadow maps' own bands (casters out of view, plants the frame hides): no more points than
 // the shadow view asks (points_a_map_asks), whatever the camera's density asks.
 uniform bool cap_to_map;
@@ -32,9 +34,9 @@ uvec3 count_plant(uint i) {
   mat4 model = instances[i].model;
   SampledMesh mesh = meshes[plant_meshes[i].x];
   // Off screen or behind what nearer bands drew over all of its bounds box's rectangle.
-  if (occlusion && box_hidden(view_projection, model, mesh.center_radius.xyz, mesh.half_size_area.xyz, true)) {
-    return uvec3(0u, 0u, hidden_in_frame);
-  }
+  vec3 lo, hi;
+  bool before_eye = occlusion && box_rect(view_projection, model, mesh, lo, hi);
+  if (before_eye && rect_hidden(lo, hi, true)) return uvec3(0u, 0u, hidden_in_frame);
   if (receivers_only && shadows_nothing(map_view_projection, model, mesh)) return uvec3(0u);
   float needed = points_needed(model, mesh, eye, forward, edge_cos, pixels_per_radian, k);
   if (cap_to_map) {
@@ -48,6 +50,18 @@ uvec3 count_plant(uint i) {
   float drawn = (polygons ? clamp((band_high - ratio) / (band_high - band_low), 0.0, 1.0) : 1.0) * needed;
   uint points = uint(min(floor(drawn + uintBitsToFloat(plant_meshes[i].y)), samples));
   bool as_points = ratio < band_high && mesh.sizes.y > 0u;
+  // What the frame draws of it may change the pyramid's tiles under its rectangle (all where its
+  // box reaches behind the eye): a 16-pixel splat reaches 8 pixels past its point, level 0 one
+  // more, and the rectangle's texels are rounded down.
+  if (occlusion && ((as_points && points > 0u) || polygons)) {
+    if (before_eye) {
+      ivec2 first, last;
+      texels_of(lo, hi, first, last);
+      mark_changed(first, last, changed_margin);
+    } else {
+      mark_changed(ivec2(0), pyramid_size[0] - 1, 0);
+    }
+  }
   return uvec3(as_points ? points : 0u, polygons ? 1u : 0u, 0u);
 }
 

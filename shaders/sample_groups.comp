@@ -1,14 +1,10 @@
 #version 450 core
 // The GPU sampler's second pass per band, one work group: the band's groups' sums turned into
-// their exclusive prefix sums after the lists of the bands before, the lists' new totals, and
-// what the band drew.
+// their exclusive prefix sums after the lists of the bands before, and the lists' new totals.
 #include "sample_common.glsl"
 #include "polygon_parts.glsl"
 layout(local_size_x = 256) in;
 
-// Per band, its point draws and polygon plants: none where it drew nothing, so that nothing
-// after it needs the depth pyramid built again.
-layout(std430, binding = 28) writeonly buffer BandDrawn { uint band_drawn[]; };
 // Per band three dispatches (sample_bands.comp); the third, of its part lists (part_lists.comp: a
 // work group per lane), none where the band has no polygon plants.
 layout(std430, binding = 24) writeonly buffer BandDispatch { uvec4 band_dispatch[]; };
@@ -38,7 +34,6 @@ void main() {
   }
   barrier();
   if (t == 0u) {
-    band_drawn[band_number - 1u] = carried.y - draw_count + carried.z - polygon_count;
     band_dispatch[4u * (band_number - 1u) + 2u] = uvec4(carried.z > polygon_count ? lanes : 0u, 1u, 1u, 0u);
     band_dispatch[4u * (band_number - 1u) + 3u] = group_rows(carried.z - polygon_count);
     band_first_point = min(all_points, point_capacity);

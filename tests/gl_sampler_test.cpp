@@ -144,22 +144,71 @@ TEST_F(GpuSampling, WritesTheDrawsInPlantOrderWithoutGaps) {
   EXPECT_EQ(next, draws.size());
 }
 
-// A band that drew nothing leaves the depth pyramid as it was (DepthPyramid::build_if): the
-// sampler says which did, as the plants' own counts in each band tell.
-TEST_F(GpuSampling, TellsWhichBandsDrewSomething) {
-  GpuSampler gpu(scene.groups, samples, GpuScene(scene).point_mesh_places());
-  const std::vector<glm::vec2> bands = GpuSampler::bands(scene.camera.far);
-  gpu.begin(view(), bands);
-  for (int b = 0; b < gpu.band_count(); ++b) gpu.add_band(b, nullptr);
-  std::vector<bool> drew(static_cast<std::size_t>(gpu.band_count()), false);
-  for (const GpuSampler::Count& c : gpu.read_counts()) {
-    if (c.band && (c.points > 0 || c.polygons)) drew[static_cast<std::size_t>(*c.band)] = true;
+// What a band draws changes the depth pyramid only under its plants, so that
+// DepthPyramid::build_changed rebuilds only the tiles there: each plant drawn marks the tiles
+// under its bounds box's rectangle, and the sky between the plants stays unmarked.
+TEST_F(GpuSampling, MarksThePyramidTilesUnderThePlantsItDraws) {
+  std::ostringstream json;  // rows of beeches and ferns 40 to 105 m ahead, the sky between them
+  json << R"({"camera": {"position": [0, 3, 0], "target": [0, 2, -60], "fov_y_deg": 50, "near": 0.5, "far": 1000},
+             "lights": [{"type": "directional", "direction": [0.4, -0.8, -0.3]}], "objects": [)";
+  for (int k = 0; k < 2; ++k) {
+    json << (k ? ", " : "") << R"({"type": "plant", "species": ")" << (k ? "fern" : "beech") << R"(", "positions": [)";
+    for (int z = 0; z < 5; ++z) {
+      for (int x = 0; x < 6; ++x) json << (x || z ? ", " : "") << "[" << -70 + 28 * x + 3 * k << ", 0, " << -40 - 15 * z - 5 * k << "]";
+    }
+    json << "]}";
   }
-  std::vector<GLuint> said(drew.size());
-  glGetNamedBufferSubData(gpu.band_drawn(), 0, static_cast<GLsizeiptr>(said.size() * sizeof(GLuint)), said.data());
-  ASSERT_TRUE(drew.front()) << "plants stand within the first band";
-  ASSERT_FALSE(drew.back()) << "none beyond the plantation, 450 m away";
-  for (std::size_t b = 0; b < drew.size(); ++b) EXPECT_EQ(said[b] != 0, drew[b]) << "band " << b;
+  json << "]}";
+  const Scene rows = load_scene({"rows.json", json.str(), [](const std::string&) { return std::nullopt; }});
+  const PointSamples row_samples(rows, settings.points_per_triangle, true);
+  GpuSampler gpu(rows.groups, row_samples, GpuScene(rows).point_mesh_places());
+  const glm::ivec2 size(settings.width, settings.height);
+  const DepthPyramid pyramid(size);
+  const gl::Texture depth(GL_TEXTURE_2D);
+  glTextureStorage2D(depth.name(), 1, GL_DEPTH_COMPONENT32F, size.x, size.y);
+  const float far_depth = 1.0f;
+  glClearTexImage(depth.name(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &far_depth);
+  gl::Buffer no_points;
+  gl::store(no_points, std::vector<GLuint>(static_cast<std::size_t>(size.x * size.y), 0xFFFFFFFFu));
+  pyramid.build(depth.name(), no_points.name());  // nothing drawn: nothing hidden, no tile marked
+  const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+  const glm::mat4 view_projection = rows.camera.projection(aspect) * rows.camera.view();
+  gpu.begin(sampler_view(rows.camera, settings, {view_projection}), GpuSampler::bands(rows.camera.far));
+  for (int b = 0; b < gpu.distance_band_count(); ++b) gpu.add_band(b, &pyramid);
+  const std::vector<bool> marked = pyramid.read_changed_tiles();
+  const glm::ivec2 tiles = pyramid.tile_counts();
+  const std::vector<GpuSampler::Count> counts = gpu.read_counts();
+  std::size_t drawn = 0;
+  for (std::size_t t = 0; t < rows.groups.size(); ++t) {
+    const pointgen::SampledMesh& mesh = row_samples.meshes()[rows.groups[t].mesh];
+    for (std::size_t i = 0; i < rows.groups[t].size(); ++i) {
+      const GpuSampler::Count& c = counts[gpu.first_plant(t) + i];
+      if (!c.band || (c.points == 0 && !c.polygons)) continue;
+      glm::vec2 lo(1e30f), hi(-1e30f);
+      bool before_eye = true;
+      for (int k = 0; k < 8; ++k) {
+        const glm::vec3 corner = mesh.center + mesh.half_size * glm::vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+        const glm::vec4 clip = view_projection * rows.groups[t].transform(i) * glm::vec4(corner, 1.0f);
+        before_eye = before_eye && clip.w > 0.0f;
+        lo = glm::min(lo, glm::vec2(clip) / clip.w);
+        hi = glm::max(hi, glm::vec2(clip) / clip.w);
+      }
+      if (!before_eye) continue;
+      ++drawn;
+      const auto tile_of = [&](glm::vec2 ndc) {
+        return glm::clamp(glm::ivec2(glm::floor((ndc * 0.5f + 0.5f) * glm::vec2(size))), glm::ivec2(0), size - 1) / 32;
+      };
+      const glm::ivec2 first = tile_of(lo), last = tile_of(hi);
+      for (int y = first.y; y <= last.y; ++y) {
+        for (int x = first.x; x <= last.x; ++x) ASSERT_TRUE(marked[static_cast<std::size_t>(y * tiles.x + x)]) << "plant " << i << " of table " << t;
+      }
+    }
+  }
+  ASSERT_GE(drawn, 40u) << "of the 60 plants most are in view";
+  EXPECT_LT(std::count(marked.begin(), marked.end(), true), static_cast<std::ptrdiff_t>(marked.size() * 9 / 10)) << "the sky is left";
+  pyramid.build_changed(depth.name(), no_points.name());
+  const std::vector<bool> after = pyramid.read_changed_tiles();
+  EXPECT_EQ(std::count(after.begin(), after.end(), true), 0) << "a build clears the marks";
 }
 
 // Seen with `settings`, `columns` × `rows` plants of `species` 0.2 m apart, 12.5 m ahead and on, in the ladder's band from
@@ -221,17 +270,16 @@ TEST_F(GpuSampling, ABandOfPolygonPlantsIsCutSoonerThanOneOfAsManySmallPlants) {
   EXPECT_EQ(band_reach(settings, "fern", 30, 10).size(), 1u);
 }
 
-// Over a depth texture that changes between builds, build_if keeps the pyramid where its flag is
-// zero and builds it again where it is not.
-TEST(DepthPyramidBuild, IsKeptWhereNothingWasDrawnAndBuiltAgainWhereSomethingWas) {
+// Over a depth texture that changes between builds, build_changed keeps the pyramid where no pass
+// marked a change, and build builds it again whole.
+TEST(DepthPyramidBuild, IsKeptWhereNothingChangedAndBuiltAgainWhole) {
   const std::unique_ptr<GlContext> context = create_headless_context("egl");
   const glm::ivec2 size(40, 24);
   const gl::Texture depth(GL_TEXTURE_2D);
   glTextureStorage2D(depth.name(), 1, GL_DEPTH_COMPONENT32F, size.x, size.y);
   const auto fill = [&](float d) { glClearTexImage(depth.name(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &d); };
-  gl::Buffer no_points, flags;
+  gl::Buffer no_points;
   gl::store(no_points, std::vector<GLuint>(static_cast<std::size_t>(size.x * size.y), 0xFFFFFFFFu));
-  gl::store(flags, std::vector<GLuint>{0u, 3u});
   const DepthPyramid pyramid(size);
   const auto all_at = [&](float d) {
     const std::vector<float> texels = pyramid.read(0);
@@ -241,9 +289,9 @@ TEST(DepthPyramidBuild, IsKeptWhereNothingWasDrawnAndBuiltAgainWhereSomethingWas
   pyramid.build(depth.name(), no_points.name());
   EXPECT_TRUE(all_at(0.75f));
   fill(0.25f);
-  pyramid.build_if(flags.name(), 0, depth.name(), no_points.name());
+  pyramid.build_changed(depth.name(), no_points.name());
   EXPECT_TRUE(all_at(0.75f)) << "kept";
-  pyramid.build_if(flags.name(), 1, depth.name(), no_points.name());
+  pyramid.build(depth.name(), no_points.name());
   EXPECT_TRUE(all_at(0.25f)) << "built again";
   EXPECT_EQ(pyramid.read(pyramid.levels() - 1), std::vector<float>{0.25f}) << "to its top";
 }

@@ -20,9 +20,10 @@ class DepthPyramid {
   // and the points' nearest depths (the float bits of window depths, one uint per pixel, all ones
   // where none).
   void build(GLuint polygon_depth, GLuint point_depths) const;
-  // Or keeps it as it is where the uint at `flag` in the GL buffer `flags` is zero (nothing drawn
-  // since it was built), decided on the GPU without a read-back.
-  void build_if(GLuint flags, std::size_t flag, GLuint polygon_depth, GLuint point_depths) const;
+  // Or rebuilds only its tiles of 32 × 32 pixels that passes bound with bind_for marked changed
+  // since the last build (shaders/depth_pyramid.glsl, mark_changed), and the levels above them
+  // where any was; decided on the GPU without a read-back.
+  void build_changed(GLuint polygon_depth, GLuint point_depths) const;
   // Or, over a shadow view's image, as a receiver mask: level 0 holds where `frame` (the frame's
   // pyramid, last built) shows a surface through `map_view_projection` the farthest window depth
   // of those surfaces in that view (above 0), 0 elsewhere, and each level above the most of the
@@ -31,26 +32,33 @@ class DepthPyramid {
   // maps `map_texels` wide: it marks no surface that looks one of them up.
   void build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection, const glm::mat4& map_view_projection,
                        const std::vector<glm::mat4>& earlier = {}, float map_texels = 1.0f) const;
-  // Binds it for a program that includes depth_pyramid.glsl.
+  // Binds it for a program that includes depth_pyramid.glsl, and its changed tiles for one that
+  // marks them.
   void bind_for(const gl::Program& program) const;
   // Its levels, the last one texel; a level's texels, rows from the bottom (for tests).
   std::size_t levels() const { return sizes_.size(); }
   std::vector<float> read(std::size_t level) const;
+  // Per tile of 32 × 32 pixels, rows from the bottom, whether it is marked changed (for tests).
+  std::vector<bool> read_changed_tiles() const;
+  glm::ivec2 tile_counts() const;
 
  private:
   void set_levels(const gl::Program& program) const;
-  // The levels from 0 up, or from first_level up, each pass's work groups as `passes` holds them
-  // (whole_ or commands_); dispatch runs one pass.
-  void build_base(const gl::Buffer& passes, GLuint polygon_depth, GLuint point_depths) const;
+  // The levels from first_level up, each pass's work groups as `passes` holds them (whole_ or
+  // commands_); dispatch runs one pass.
   void reduce(const gl::Buffer& passes, std::size_t first_level) const;
   void dispatch(const gl::Buffer& passes, std::size_t pass) const;
   glm::ivec2 size_;
   std::vector<glm::ivec2> sizes_;      // per level
   std::vector<GLuint> offsets_;        // per level, in floats
   gl::Buffer depths_;
-  // The build's passes as indirect dispatches, a uvec4 each: [0] the base's, [l] level l's from
-  // the one below. The whole build in whole_; build_if's in commands_, the whole or none.
+  // The build's passes as indirect dispatches, a uvec4 each: [0] the base's, a work group per
+  // tile, [l] level l's from the one below. The whole build in whole_; build_changed's in
+  // commands_ (shaders/pyramid_dispatch.comp): the base over the changed tiles, the levels above
+  // whole or not at all.
   gl::Buffer whole_, commands_;
+  // Per tile whether it changed since the last build, and the changed ones' numbers.
+  gl::Buffer changed_tiles_, changed_list_;
   gl::Program base_program_, reduce_program_, dispatch_program_;
   // Made with the pyramid, not with the first frame that marks receivers, so that frame times
   // hold no shader compilation.

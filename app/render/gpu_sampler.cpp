@@ -37,7 +37,7 @@ constexpr GLuint draws_binding = 1, instances_binding = 2, block_draws_binding =
                  meshes_binding = 11, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
                  polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19, band_list_binding = 20,
                  band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24,
-                 polygon_parts_binding = 25, band_drawn_binding = 28, band_ends_binding = 34, map_caps_binding = 35;
+                 polygon_parts_binding = 25, band_ends_binding = 34, map_caps_binding = 35;
 constexpr std::size_t plants_per_group = 1024, threads_per_group = 256;  // shaders/sample_count.comp
 constexpr std::size_t points_per_block = 16;                              // shaders/point_common.glsl
 constexpr std::size_t max_planes = 96;                                    // planes[96]
@@ -173,7 +173,6 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<glm::uvec2>(band_ranges_, max_bands);
   gl::store(band_ends_, std::vector<GLuint>(max_bands + 4 * static_cast<std::size_t>(most_distance_bands), 0u));  // ends, quarters' counts
   storage<glm::uvec4>(band_dispatch_, 4 * max_bands);  // shaders/sample_bands.comp
-  gl::store(band_drawn_, std::vector<GLuint>(max_bands, 1u));  // as if each drew: a pyramid built over them stays right
   part_lists_ = std::make_unique<PolygonPartLists>(plant_count_, table_count_, max_bands);
 }
 
@@ -204,7 +203,6 @@ void GpuSampler::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_keys_binding, band_keys_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, group_bands_binding, group_bands_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_dispatch_binding, band_dispatch_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_drawn_binding, band_drawn_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, band_ends_binding, band_ends_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, polygon_parts_binding, polygon_parts_.name());
   part_lists_->bind();

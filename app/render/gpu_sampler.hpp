@@ -96,9 +96,6 @@ class GpuSampler {
   GpuScene::PlantDraws select_casters(int layer, const glm::mat4& map_view, int map_size, const DepthPyramid& receivers);
   static constexpr int max_layers = PolygonPartLists::max_layers;
 
-  // A GL buffer of a uint per band, written by add_band: zero where the band drew nothing.
-  GLuint band_drawn() const { return band_drawn_.name(); }
-
   std::size_t plant_count() const { return plant_count_; }
   // The plant index of a table's first instance.
   std::uint32_t first_plant(std::size_t table) const { return first_plant_[table]; }
@@ -137,7 +134,7 @@ class GpuSampler {
   std::size_t table_count_ = 0;  // tables holding plants: a polygon draw each per band or lane
   gl::Buffer instances_, plant_meshes_, meshes_, counts_, offsets_, group_sums_, draws_, block_draws_, totals_;
   gl::Buffer polygon_instances_, tables_, commands_;
-  gl::Buffer band_keys_, group_bands_, band_list_, band_ranges_, band_dispatch_, band_drawn_, band_ends_;
+  gl::Buffer band_keys_, group_bands_, band_list_, band_ranges_, band_dispatch_, band_ends_;
   gl::Program histogram_program_, band_ends_program_, keys_program_, hidden_keys_program_, bin_count_program_, bands_program_, place_program_;
   gl::Program count_program_, groups_program_, draws_program_, commands_program_;
   gl::Buffer map_caps_;

@@ -392,7 +392,7 @@ void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<sha
   // The first band is hidden by the ground alone; each next one by what the bands before drew.
   occluders_->build(frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
   for (int b = 0; b < bands; ++b) {
-    if (b > 0) occluders_->build_if(gpu_sampler_->band_drawn(), static_cast<std::size_t>(b - 1), frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
+    if (b > 0) occluders_->build_changed(frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
     stages_.end("occlusion");
     gpu_sampler_->add_band(b, occluders_.get());
     stages_.end("choice");
@@ -405,7 +405,7 @@ void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<sha
   // splat passes stop before their points).
   if (!casters.empty()) {
     const glm::mat4 map_view = culling_frusta(setup_.views.front()).front();
-    occluders_->build_if(gpu_sampler_->band_drawn(), static_cast<std::size_t>(bands - 1), frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
+    occluders_->build_changed(frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
     receivers_->build_receivers(*occluders_, view_projection_, map_view);
     stages_.end("occlusion");
     gpu_sampler_->add_casters(map_view, shadow_texels(), *receivers_, !setup_.views.front().paraboloid);
