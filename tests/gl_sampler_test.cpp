@@ -6,6 +6,7 @@
 #include "app/render/gpu_sampler.hpp"
 #include "app/render/renderer.hpp"
 #include "app/scene/scene_file.hpp"
+#include "pointgen/random.hpp"
 
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -268,6 +269,53 @@ TEST_F(GpuSampling, ABandOfPolygonPlantsIsCutSoonerThanOneOfAsManySmallPlants) {
   EXPECT_GE(beeches.size(), 2u) << "the beeches' band should be cut";
   expect_ordered_by_distance(beeches);
   EXPECT_EQ(band_reach(settings, "fern", 30, 10).size(), 1u);
+}
+
+// Over random depths, level 0 holds each pixel's nearest depth within a pixel of it, and each
+// level above the farthest of the 2 × 2 texels below it, up to the top. (Where the image's sides
+// are not multiples of 4, the base pass's levels 1 and 2 may hold farther depths along its edges.)
+TEST(DepthPyramidBuild, EachLevelHoldsTheFarthestOfTheTexelsBelow) {
+  const std::unique_ptr<GlContext> context = create_headless_context("egl");
+  const glm::ivec2 size(1024, 600);  // 4 × 4 blocks (the base pass's) fit
+  std::vector<float> depths(static_cast<std::size_t>(size.x * size.y));
+  pointgen::Random random(7);
+  for (float& d : depths) d = random.uniform();
+  const gl::Texture depth(GL_TEXTURE_2D);
+  glTextureStorage2D(depth.name(), 1, GL_DEPTH_COMPONENT32F, size.x, size.y);
+  glTextureSubImage2D(depth.name(), 0, 0, 0, size.x, size.y, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+  gl::Buffer no_points;
+  gl::store(no_points, std::vector<GLuint>(depths.size(), 0xFFFFFFFFu));
+  const DepthPyramid pyramid(size);
+  pyramid.build(depth.name(), no_points.name());
+
+  std::vector<float> expected(depths.size());
+  for (int y = 0; y < size.y; ++y) {
+    for (int x = 0; x < size.x; ++x) {
+      float nearest = 1.0f;
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const glm::ivec2 p = glm::clamp(glm::ivec2(x + dx, y + dy), glm::ivec2(0), size - 1);
+          nearest = std::min(nearest, depths[static_cast<std::size_t>(p.y * size.x + p.x)]);
+        }
+      }
+      expected[static_cast<std::size_t>(y * size.x + x)] = nearest;
+    }
+  }
+  glm::ivec2 below = size;
+  ASSERT_GE(pyramid.levels(), 11u);
+  for (std::size_t level = 0; level < pyramid.levels(); ++level) {
+    ASSERT_EQ(pyramid.read(level), expected) << "level " << level;
+    const glm::ivec2 above = (below + 1) / 2;
+    std::vector<float> next(static_cast<std::size_t>(above.x * above.y), 0.0f);
+    for (int y = 0; y < below.y; ++y) {
+      for (int x = 0; x < below.x; ++x) {
+        float& farthest = next[static_cast<std::size_t>((y / 2) * above.x + x / 2)];
+        farthest = std::max(farthest, expected[static_cast<std::size_t>(y * below.x + x)]);
+      }
+    }
+    expected = next;
+    below = above;
+  }
 }
 
 // Over a depth texture that changes between builds, build_changed keeps the pyramid where no pass
