@@ -1,6 +1,6 @@
 #version 450 core
-// The frame's last pass: lights the surface each pixel holds (surface.frag, point_surface.frag).
-// Pixels without one show the sky. Where points cover only part of a pixel (the albedo's alpha),
+// The frame's last pass: lights the surface each pixel holds (surface.frag, point_surface.frag),
+// and finds the nearest. Pixels without one show the sky. Where points cover only part of a pixel (the albedo's alpha),
 // the rest shows the polygons drawn behind them, or the sky, lit likewise and blended in linear
 // light; the `shadow` and `aliasing` AOVs stay the nearest surface's. A compute pass, a thread a
 // pixel: as a fullscreen fragment pass the default view's frame took 14–21 % longer on llvmpipe
@@ -14,6 +14,10 @@ layout(binding = 5) uniform sampler2D polygon_normals;
 layout(binding = 6) uniform sampler2D polygon_albedos;
 layout(binding = 7) uniform sampler2D polygon_depths;
 uniform vec3 sky;  // linear RGB
+// The frame's nearest surface (the next frame's PSM starts its near plane there): the least
+// linear view depth as float bits (positive floats order like their bits), all ones for none. A
+// plain read first: after the first pixels almost none needs the atomic.
+layout(std430, binding = 26) buffer Nearest { uint nearest; };
 
 layout(binding = 0, rgba8) uniform writeonly image2D out_color;  // sRGB
 layout(binding = 1, r8) uniform writeonly image2D out_visibility;  // the `shadow` AOV
@@ -39,6 +43,8 @@ void main() {
     imageStore(out_aliasing, pixel, vec4(-1.0));
     return;
   }
+  uint depth_bits = floatBitsToUint(depth);
+  if (depth > 0.0 && depth_bits < nearest) atomicMin(nearest, depth_bits);
   vec3 position = surface_position(vec2(pixel) + 0.5, depth);
   vec3 n = texelFetch(surface_normals, pixel, 0).xyz;
   vec4 albedo = texelFetch(surface_albedos, pixel, 0);

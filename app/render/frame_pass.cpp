@@ -15,7 +15,7 @@ namespace ecoview {
 namespace {
 
 const glm::vec3 sky_color(0.62f, 0.74f, 0.86f);  // sRGB
-constexpr GLuint nearest_binding = 26;  // shaders/nearest_depth.comp
+constexpr GLuint nearest_binding = 26;  // shaders/shade.comp
 // shaders/predicted_aliasing.comp: histograms of log2 of the aliasing factor, from 2^-10 (the
 // first bin taking all below) to 2^14 (the last taking all above: where the light grazes), fine
 // enough that methods a quarter of a percent apart get different bins; up to this many setups at once.
@@ -60,8 +60,7 @@ FramePass::FramePass(int width, int height, bool aliasing)
       aliasing_wanted_(aliasing),
       surface_program_(gl::build_program({"frame.vert", "surface.frag"})),
       plant_surface_program_(gl::build_program({"frame.vert", "surface.frag"}, "#define PLANT_INDEX\n")),
-      point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})),
-      nearest_program_(gl::build_program({"nearest_depth.comp"})) {
+      point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})) {
   glNamedBufferStorage(nearest_.name(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(histograms_.name(), most_predicted_setups * histogram_bins * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glTextureStorage2D(normals_.name(), 1, GL_RGBA32F, width, height);
@@ -245,10 +244,13 @@ void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,
     glBindTextureUnit(7, polygon_surfaces_->depth.name());
   }
   gl::set_uniform(program, "sky", srgb_to_linear(sky_color));
+  const GLuint none = 0xFFFFFFFFu;
+  glClearNamedBufferData(nearest_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nearest_binding, nearest_.name());
   glBindImageTexture(0, color_.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
   glBindImageTexture(1, visibility_.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
   glBindImageTexture(2, aliasing_.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   glDispatchCompute(static_cast<GLuint>((width_ + 7) / 8), static_cast<GLuint>((height_ + 7) / 8), 1);
   // Read back, blitted to a window, or sampled by the next frame's passes.
   glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
@@ -279,12 +281,6 @@ Image<float> FramePass::read_depth() const { return read<float>(surfaces_, GL_CO
 // Set by an upload, not a buffer clear: on llvmpipe a clear could land after the pass behind it.
 float FramePass::nearest_depth() const {
   const GLuint none = 0xFFFFFFFFu;
-  glNamedBufferSubData(nearest_.name(), 0, sizeof none, &none);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nearest_binding, nearest_.name());
-  glBindTextureUnit(0, depth_.name());
-  gl::set_uniform(nearest_program_, "view_depth", 0);
-  glUseProgram(nearest_program_.name());
-  glDispatchCompute(static_cast<GLuint>((width_ + 63) / 64), static_cast<GLuint>((height_ + 63) / 64), 1);  // 8 × 8 threads of 8 × 8 pixels
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   GLuint bits = none;
   glGetNamedBufferSubData(nearest_.name(), 0, sizeof bits, &bits);

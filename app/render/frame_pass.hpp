@@ -58,7 +58,7 @@ class FramePass {
   Image8 read_visibility() const;
   // Linear view depth in metres; negative where no surface was drawn.
   Image<float> read_depth() const;
-  // The nearest of those depths, reduced on the GPU and read back (4 bytes); 0 where none.
+  // The nearest of those depths, found by the shading pass and read back (4 bytes); 0 where none.
   float nearest_depth() const;
   // The aliasing factor (DESIGN.md) of the surface in each pixel; negative where no surface was
   // drawn, 0 without a shadow map.
@@ -124,7 +124,6 @@ class FramePass {
   mutable std::map<ShadeVariant, gl::Program> shade_programs_, prediction_programs_;
   gl::Buffer histograms_;  // predict_aliasing's
   gl::VertexArray empty_vertex_array_;  // for the fullscreen triangle, which has no attributes
-  gl::Program nearest_program_;
   gl::Buffer nearest_;
 };
 
