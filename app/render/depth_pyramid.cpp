@@ -41,7 +41,7 @@ DepthPyramid::DepthPyramid(glm::ivec2 size)
   glNamedBufferStorage(depths_.name(), static_cast<GLsizeiptr>(total * sizeof(float)), nullptr, 0);
   const glm::ivec2 tiles = tile_counts();
   const auto tile_count = static_cast<std::size_t>(tiles.x) * static_cast<std::size_t>(tiles.y);
-  gl::store(changed_tiles_, std::vector<GLuint>(tile_count, 1u));
+  gl::store(changed_tiles_, std::vector<GLuint>(tile_count, 0u));
   glNamedBufferStorage(changed_list_.name(), static_cast<GLsizeiptr>(tile_count * sizeof(GLuint)), nullptr, 0);
   std::vector<glm::uvec4> whole{{static_cast<GLuint>(tile_count), 1, 1, 0}};
   for (std::size_t level = 1; level < sizes_.size(); ++level) whole.emplace_back(groups(sizes_[level].x), groups(sizes_[level].y), 1, 0);
@@ -62,21 +62,22 @@ void DepthPyramid::set_levels(const gl::Program& program) const {
   gl::set_uniform(program, "pyramid_levels", static_cast<int>(sizes_.size()));
 }
 
-void DepthPyramid::build(GLuint polygon_depth, GLuint point_depths) const {
-  const GLuint changed = 1;
-  glClearNamedBufferData(changed_tiles_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &changed);
-  build_changed(polygon_depth, point_depths);
-}
+// The tiles all listed on the GPU, not marked by a buffer clear: on llvmpipe a clear could land
+// after the pass behind it.
+void DepthPyramid::build(GLuint polygon_depth, GLuint point_depths) const { build_tiles(true, polygon_depth, point_depths); }
+
+void DepthPyramid::build_changed(GLuint polygon_depth, GLuint point_depths) const { build_tiles(false, polygon_depth, point_depths); }
 
 // Past a band that drew little, little of the pyramid changes: on llvmpipe a whole build of a
 // 960 × 540 one takes about 6 ms, 13 times a frame on the ecosystem's default view.
-void DepthPyramid::build_changed(GLuint polygon_depth, GLuint point_depths) const {
+void DepthPyramid::build_tiles(bool whole_image, GLuint polygon_depth, GLuint point_depths) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, changed_tiles_binding, changed_tiles_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, changed_list_binding, changed_list_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, whole_binding, whole_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, commands_binding, commands_.name());
   set_levels(dispatch_program_);
   gl::set_uniform(dispatch_program_, "pass_count", static_cast<unsigned>(sizes_.size()));
+  gl::set_uniform(dispatch_program_, "whole_image", whole_image ? 1 : 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   glUseProgram(dispatch_program_.name());
   glDispatchCompute(1, 1, 1);

@@ -44,6 +44,9 @@ class DepthPyramid {
 
  private:
   void set_levels(const gl::Program& program) const;
+  // The base over every tile (`whole_image`) or the changed ones, the levels above, and the
+  // changed tiles' marks cleared.
+  void build_tiles(bool whole_image, GLuint polygon_depth, GLuint point_depths) const;
   // The levels from first_level up, each pass's work groups as `passes` holds them (whole_ or
   // commands_); dispatch runs one pass.
   void reduce(const gl::Buffer& passes, std::size_t first_level) const;

@@ -244,8 +244,9 @@ void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,
     glBindTextureUnit(7, polygon_surfaces_->depth.name());
   }
   gl::set_uniform(program, "sky", srgb_to_linear(sky_color));
+  // Set by an upload, not a buffer clear: on llvmpipe a clear could land after the pass behind it.
   const GLuint none = 0xFFFFFFFFu;
-  glClearNamedBufferData(nearest_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
+  glNamedBufferSubData(nearest_.name(), 0, sizeof none, &none);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, nearest_binding, nearest_.name());
   glBindImageTexture(0, color_.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
   glBindImageTexture(1, visibility_.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
@@ -278,7 +279,6 @@ Image8 FramePass::read_color() const { return read<std::uint8_t>(lit_, GL_COLOR_
 Image8 FramePass::read_visibility() const { return read<std::uint8_t>(lit_, GL_COLOR_ATTACHMENT1, 1, GL_RED, GL_UNSIGNED_BYTE); }
 Image<float> FramePass::read_depth() const { return read<float>(surfaces_, GL_COLOR_ATTACHMENT2, 1, GL_RED, GL_FLOAT); }
 
-// Set by an upload, not a buffer clear: on llvmpipe a clear could land after the pass behind it.
 float FramePass::nearest_depth() const {
   const GLuint none = 0xFFFFFFFFu;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
