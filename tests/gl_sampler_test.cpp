@@ -7,6 +7,7 @@
 #include "app/render/renderer.hpp"
 #include "app/scene/scene_file.hpp"
 #include "pointgen/random.hpp"
+#include "pointgen/sampling/screen_rect.hpp"
 
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -185,21 +186,13 @@ TEST_F(GpuSampling, MarksThePyramidTilesUnderThePlantsItDraws) {
     for (std::size_t i = 0; i < rows.groups[t].size(); ++i) {
       const GpuSampler::Count& c = counts[gpu.first_plant(t) + i];
       if (!c.band || (c.points == 0 && !c.polygons)) continue;
-      glm::vec2 lo(1e30f), hi(-1e30f);
-      bool before_eye = true;
-      for (int k = 0; k < 8; ++k) {
-        const glm::vec3 corner = mesh.center + mesh.half_size * glm::vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
-        const glm::vec4 clip = view_projection * rows.groups[t].transform(i) * glm::vec4(corner, 1.0f);
-        before_eye = before_eye && clip.w > 0.0f;
-        lo = glm::min(lo, glm::vec2(clip) / clip.w);
-        hi = glm::max(hi, glm::vec2(clip) / clip.w);
-      }
-      if (!before_eye) continue;
+      const std::optional<pointgen::ScreenRect> rect = pointgen::project_box(view_projection * rows.groups[t].transform(i), mesh.center, mesh.half_size);
+      if (!rect) continue;
       ++drawn;
       const auto tile_of = [&](glm::vec2 ndc) {
         return glm::clamp(glm::ivec2(glm::floor((ndc * 0.5f + 0.5f) * glm::vec2(size))), glm::ivec2(0), size - 1) / 32;
       };
-      const glm::ivec2 first = tile_of(lo), last = tile_of(hi);
+      const glm::ivec2 first = tile_of(rect->min), last = tile_of(rect->max);
       for (int y = first.y; y <= last.y; ++y) {
         for (int x = first.x; x <= last.x; ++x) ASSERT_TRUE(marked[static_cast<std::size_t>(y * tiles.x + x)]) << "plant " << i << " of table " << t;
       }

@@ -56,9 +56,9 @@ class DepthPyramid {
   std::vector<GLuint> offsets_;        // per level, in floats
   gl::Buffer depths_;
   // The build's passes as indirect dispatches, a uvec4 each: [0] the base's, a work group per
-  // tile, [l] level l's from the one below. The whole build in whole_; build_changed's in
-  // commands_ (shaders/pyramid_dispatch.comp): the base over the changed tiles, the levels above
-  // whole or not at all.
+  // tile, [l] level l's from the one below. whole_ holds each over the whole image (the receiver
+  // mask's levels read it); commands_ a build's (shaders/pyramid_dispatch.comp): the base over the
+  // listed tiles, the levels above whole or not at all.
   gl::Buffer whole_, commands_;
   // Per tile whether it changed since the last build, and the changed ones' numbers.
   gl::Buffer changed_tiles_, changed_list_;
