@@ -28,6 +28,7 @@ DepthPyramid::DepthPyramid(glm::ivec2 size)
     : size_(size),
       base_program_(gl::build_program({"depth_pyramid.comp"}, "#define BASE\n")),
       reduce_program_(gl::build_program({"depth_pyramid.comp"})),
+      list_program_(gl::build_program({"pyramid_dispatch.comp"}, "#define LIST\n")),
       dispatch_program_(gl::build_program({"pyramid_dispatch.comp"})),
       clear_marks_program_(gl::build_program({"receiver_marks.comp"}, "#define CLEAR\n")),
       marks_program_(gl::build_program({"receiver_marks.comp"})) {
@@ -46,7 +47,7 @@ DepthPyramid::DepthPyramid(glm::ivec2 size)
   std::vector<glm::uvec4> whole{{static_cast<GLuint>(tile_count), 1, 1, 0}};
   for (std::size_t level = 1; level < sizes_.size(); ++level) whole.emplace_back(groups(sizes_[level].x), groups(sizes_[level].y), 1, 0);
   gl::store(whole_, whole);
-  glNamedBufferStorage(commands_.name(), static_cast<GLsizeiptr>(whole.size() * sizeof(glm::uvec4)), nullptr, 0);
+  gl::store(commands_, std::vector<glm::uvec4>(whole.size() + 1, glm::uvec4(0)));
 }
 
 void DepthPyramid::dispatch(const gl::Buffer& passes, std::size_t pass) const {
@@ -75,10 +76,15 @@ void DepthPyramid::build_tiles(bool whole_image, GLuint polygon_depth, GLuint po
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, changed_list_binding, changed_list_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, whole_binding, whole_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, commands_binding, commands_.name());
-  set_levels(dispatch_program_);
-  gl::set_uniform(dispatch_program_, "pass_count", static_cast<unsigned>(sizes_.size()));
-  gl::set_uniform(dispatch_program_, "whole_image", whole_image ? 1 : 0);
+  const glm::ivec2 tiles = tile_counts();
+  set_levels(list_program_);
+  gl::set_uniform(list_program_, "pass_count", static_cast<unsigned>(sizes_.size()));
+  gl::set_uniform(list_program_, "whole_image", whole_image ? 1 : 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  glUseProgram(list_program_.name());
+  glDispatchCompute(static_cast<GLuint>((tiles.x * tiles.y + 63) / 64), 1, 1);
+  gl::set_uniform(dispatch_program_, "pass_count", static_cast<unsigned>(sizes_.size()));
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   glUseProgram(dispatch_program_.name());
   glDispatchCompute(1, 1, 1);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, pyramid_binding, depths_.name());

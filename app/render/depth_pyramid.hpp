@@ -58,11 +58,11 @@ class DepthPyramid {
   // The build's passes as indirect dispatches, a uvec4 each: [0] the base's, a work group per
   // tile, [l] level l's from the one below. whole_ holds each over the whole image (the receiver
   // mask's levels read it); commands_ a build's (shaders/pyramid_dispatch.comp): the base over the
-  // listed tiles, the levels above whole or not at all.
+  // listed tiles, the levels above whole or not at all, and after them a count of listed tiles.
   gl::Buffer whole_, commands_;
   // Per tile whether it changed since the last build, and the changed ones' numbers.
   gl::Buffer changed_tiles_, changed_list_;
-  gl::Program base_program_, reduce_program_, dispatch_program_;
+  gl::Program base_program_, reduce_program_, list_program_, dispatch_program_;
   // Made with the pyramid, not with the first frame that marks receivers, so that frame times
   // hold no shader compilation.
   gl::Program clear_marks_program_, marks_program_;
