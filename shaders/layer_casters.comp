@@ -5,9 +5,10 @@
 // that covers more than pixels_to_split texels there, only the parts whose boxes do; listed per
 // table and lane (polygon_parts.glsl) with an indirect draw each. The order within a list follows
 // the threads' atomics: a depth-only map keeps the nearest depth whatever the order. Passes: START
-// (one thread) clears the lists' counts and sizes the per-plant passes from the frame's polygon
+// (one work group) clears the lists' counts and sizes the per-plant passes from the frame's polygon
 // plants; the per-plant pass counts each list's plants (`writing` false), then, after PLACE (one
-// thread: each list's place and its command), writes each plant's index into the lists it is in.
+// work group: each list's place, by a prefix sum, and its command), writes each plant's index into
+// the lists it is in.
 #include "sample_common.glsl"
 #include "depth_pyramid.glsl"
 #include "plant_boxes.glsl"
@@ -27,19 +28,27 @@ layout(std430, binding = 33) writeonly buffer LayerCommands { uint layer_command
 uniform uint table_count;
 
 #if defined(START)
-layout(local_size_x = 1) in;
+layout(local_size_x = 256) in;  // one work group
 void main() {
-  for (uint c = 0u; c < 2u * table_count * lanes; ++c) layer_counts[c] = 0u;
-  layer_dispatch = group_rows(polygon_count);
+  for (uint c = gl_LocalInvocationID.x; c < 2u * table_count * lanes; c += 256u) layer_counts[c] = 0u;
+  if (gl_LocalInvocationID.x == 0u) layer_dispatch = group_rows(polygon_count);
 }
 #elif defined(PLACE)
-layout(local_size_x = 1) in;
+#include "group_scan.glsl"
+layout(local_size_x = 256) in;  // one work group, a run of lists a thread
 uniform uint first_command;  // the view's commands: `lanes` per table from here
 uniform uint capacity;       // the places in layer_plants: lists past them are cut short
 void main() {
-  uint first = 0u;
-  for (uint list = 0u; list < table_count * lanes; ++list) {
-    uint plants = min(layer_counts[2u * list], capacity - min(first, capacity));
+  uint lists = table_count * lanes, run = (lists + 255u) / 256u;
+  uint first_list = min(gl_LocalInvocationID.x * run, lists), end = min(first_list + run, lists);
+  uint own = 0u;
+  for (uint list = first_list; list < end; ++list) own += layer_counts[2u * list];
+  uint total;
+  uint before = inclusive_sum(own, total) - own;  // the plants of the lists before, uncut
+  for (uint list = first_list; list < end; ++list) {
+    uint wanted = layer_counts[2u * list];
+    uint first = min(before, capacity);
+    uint plants = min(before + wanted, capacity) - first;
     uvec2 indices = lane_indices(list / lanes, list % lanes);
     uint at = 5u * (first_command + list);
     layer_commands[at] = indices.x;
@@ -49,7 +58,7 @@ void main() {
     layer_commands[at + 4u] = first;
     layer_counts[2u * list] = first + plants;
     layer_counts[2u * list + 1u] = first;
-    first += plants;
+    before += wanted;
   }
 }
 #else

@@ -26,7 +26,7 @@ uint place_of(uint first, uint end, uint plant) {
   return first;
 }
 
-shared uint sums[256];
+#include "group_scan.glsl"
 shared uint list_first;
 
 void main() {
@@ -36,18 +36,12 @@ void main() {
   uint first = min(polygons.x + t * run, polygons.y), end = min(first + run, polygons.y);
   uint own = 0u;
   for (uint s = first; s < end; ++s) own += in_lane(part_masks[s], lane) ? 1u : 0u;
-  sums[t] = own;
+  uint total;
+  uint sum = inclusive_sum(own, total);
+  if (t == 255u) list_first = atomicAdd(part_plants_used, total);
   barrier();
-  for (uint step = 1u; step < 256u; step *= 2u) {
-    uint before = t >= step ? sums[t - step] : 0u;
-    barrier();
-    sums[t] += before;
-    barrier();
-  }
-  if (t == 255u) list_first = atomicAdd(part_plants_used, sums[255]);
-  barrier();
-  uint listed = min(sums[255], part_plant_capacity - min(list_first, part_plant_capacity));
-  uint at = list_first + sums[t] - own;
+  uint listed = min(total, part_plant_capacity - min(list_first, part_plant_capacity));
+  uint at = list_first + sum - own;
   for (uint s = first; s < end; ++s) {
     if (!in_lane(part_masks[s], lane)) continue;
     if (at < list_first + listed) part_plants[at] = polygon_instances[s];

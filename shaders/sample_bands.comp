@@ -19,7 +19,7 @@ uniform uint band_count;
 uniform uint list_start;
 uniform uint first_band;
 
-shared uint sums[256];
+#include "group_scan.glsl"
 
 void main() {
   uint t = gl_LocalInvocationID.x;
@@ -36,17 +36,9 @@ void main() {
   uint cells = group_count * band_count;
   for (uint first = 0u; first < cells; first += 256u) {
     uint own = first + t < cells ? group_bands[first + t] : 0u;
-    sums[t] = own;
-    barrier();
-    for (uint step = 1u; step < 256u; step *= 2u) {
-      uint before = t >= step ? sums[t - step] : 0u;
-      barrier();
-      sums[t] += before;
-      barrier();
-    }
-    if (first + t < cells) group_bands[first + t] = carried + sums[t] - own;
-    uint chunk = sums[255];
-    barrier();
+    uint chunk;
+    uint sum = inclusive_sum(own, chunk);
+    if (first + t < cells) group_bands[first + t] = carried + sum - own;
     carried += chunk;
   }
   memoryBarrierBuffer();
