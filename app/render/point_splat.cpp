@@ -64,7 +64,9 @@ PointSplat::PointSplat(glm::ivec2 size)
       depth_program_(gl::build_program({"point_depth.comp"})),
       keeping_depth_program_(gl::build_program({"point_depth.comp"}, "#define KEEP_PROJECTION\n")),
       capped_depth_program_(gl::build_program({"point_depth.comp"}, "#define MAP_CAP\n")),
-      resolve_program_(gl::build_program({"point_resolve.comp"})) {
+      resolve_program_(gl::build_program({"point_resolve.comp"})),
+      merge_program_(gl::build_program({"fullscreen.vert", "map_depth_merge.frag"})) {
+  glNamedFramebufferDrawBuffer(map_layer_.name(), GL_NONE);
   const auto pixels = static_cast<GLsizeiptr>(size.x) * size.y * static_cast<GLsizeiptr>(sizeof(GLuint));
   glNamedBufferStorage(depths_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(winners_.name(), pixels, nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -212,10 +214,18 @@ void PointSplat::splat_onto(GLuint depth_texture, int layer, const glm::mat4& vi
   glGetTextureSubImage(depth_texture, 0, 0, 0, layer, size_.x, size_.y, 1, GL_DEPTH_COMPONENT, GL_FLOAT, bytes, nullptr);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
   dispatch(capped ? capped_depth_program_ : depth_program_, view_projection, splat_size, depth_bias, paraboloid, Points::all);
-  glMemoryBarrier(GL_PIXEL_BUFFER_BARRIER_BIT);
-  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, depths_.name());
-  glTextureSubImage3D(depth_texture, 0, 0, 0, layer, size_.x, size_.y, 1, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
-  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glNamedFramebufferTextureLayer(map_layer_.name(), GL_DEPTH_ATTACHMENT, depth_texture, 0, layer);
+  glBindFramebuffer(GL_FRAMEBUFFER, map_layer_.name());
+  glViewport(0, 0, size_.x, size_.y);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glUseProgram(merge_program_.name());
+  gl::set_uniform(merge_program_, "width", size_.x);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, depths_binding, depths_.name());
+  glBindVertexArray(no_vertices_.name());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
 }
 
 Image<std::uint32_t> PointSplat::count_points_on(const Image<float>& surface_depth, const glm::mat4& view_projection,

@@ -86,6 +86,10 @@ class PointSplat {
                 glm::vec2 paraboloid, Points points) const;
 
   gl::Program dispatch_program_, depth_program_, keeping_depth_program_, capped_depth_program_, resolve_program_;
+  // splat_onto's way back into the map's layer (shaders/map_depth_merge.frag).
+  gl::Program merge_program_;
+  gl::Framebuffer map_layer_;
+  gl::VertexArray no_vertices_;
   std::unique_ptr<gl::Program> count_program_;  // made when first counting
   const PointSamples* samples_ = nullptr;
   int frame_splat_size_ = 1;
