@@ -16,6 +16,10 @@ std::string load_gl_functions(GetProc get_proc, void* user, const std::string& b
                          "." + std::to_string(GLAD_VERSION_MINOR(version)) +
                          ", ecoview needs 4.5 core; try another --backend or a newer driver");
   }
+  if (!GLAD_GL_ARB_indirect_parameters) {
+    throw RuntimeFailure(backend + ": the driver lacks GL_ARB_indirect_parameters (OpenGL 4.6's draw counts), which ecoview "
+                         "needs; try another --backend or a newer driver");
+  }
   count_gl_cpu_time();
   const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   return renderer ? renderer : "unknown renderer";

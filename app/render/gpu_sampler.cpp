@@ -174,6 +174,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   gl::store(band_ends_, std::vector<GLuint>(max_bands + 4 * static_cast<std::size_t>(most_distance_bands), 0u));  // ends, quarters' counts
   storage<glm::uvec4>(band_dispatch_, 4 * max_bands);  // shaders/sample_bands.comp
   part_lists_ = std::make_unique<PolygonPartLists>(plant_count_, table_count_, max_bands);
+  every_band_drawn_ = std::make_unique<DrawnCommands>(1, max_bands * table_count_);
 }
 
 void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed) {
@@ -355,17 +356,20 @@ void GpuSampler::sample(const pointgen::SamplerView& view) {
 
 GpuScene::PlantDraws GpuSampler::polygon_draws(int first, int end) const {
   const std::size_t tables = table_count_;
-  return {instances_.name(), polygon_instances_.name(), commands_.name(), static_cast<std::size_t>(first) * tables,
-          static_cast<std::size_t>(std::max(end - first, 0)) * tables};
+  const GpuScene::PlantDraws draws{instances_.name(), polygon_instances_.name(), commands_.name(), static_cast<std::size_t>(first) * tables,
+                                   static_cast<std::size_t>(std::max(end - first, 0)) * tables};
+  if (draws.command_count == 0) return draws;
+  every_band_drawn_->keep_drawn(draws.commands, draws.first_command, draws.command_count, 0);
+  return every_band_drawn_->from_copy(draws, 0);
 }
 
 GpuScene::PlantDraws GpuSampler::frame_polygon_draws(int band) const {
-  if (!in_frame(band)) return polygon_draws(0, 0);
+  if (!in_frame(band)) return {};
   return part_lists_->frame_draws(band, instances_.name());
 }
 
 GpuScene::PlantDraws GpuSampler::select_casters(int layer, const glm::mat4& map_view, int map_size, const DepthPyramid& receivers) {
-  if (plant_count_ == 0 || table_count_ == 0) return polygon_draws(0, 0);
+  if (plant_count_ == 0 || table_count_ == 0) return {};
   bind();
   return part_lists_->select(layer, map_view, map_size, receivers, instances_.name());
 }

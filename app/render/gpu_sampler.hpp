@@ -81,7 +81,7 @@ class GpuSampler {
   // view): every point.
   void cap_for_map(const glm::mat4& map_view, float texels, float points_per_texel);
   // The plants chosen as polygons in bands `first` to `end` - 1, one command per table of point
-  // meshes and band.
+  // meshes and band (the non-empty ones copied on the GPU; valid until the next call).
   GpuScene::PlantDraws polygon_draws(int first, int end) const;
   // Those of a band the frame shows as the frame draws them: a large one's parts that nearer bands
   // leave to be seen, the others whole (per table, a command per polygon part and one for those
@@ -141,6 +141,7 @@ class GpuSampler {
   gl::Program map_caps_program_;
   gl::Buffer polygon_parts_;  // every point mesh's parts (shaders/polygon_parts.glsl)
   std::unique_ptr<PolygonPartLists> part_lists_;  // the frame's and the maps' polygon plants by part
+  std::unique_ptr<DrawnCommands> every_band_drawn_;  // polygon_draws'
 };
 
 }  // namespace ecoview

@@ -1,5 +1,7 @@
 #include "app/render/gpu_scene.hpp"
 
+#include "app/errors.hpp"
+
 #include "pointgen/sampling/mesh_parts.hpp"
 
 #include <algorithm>
@@ -131,13 +133,17 @@ std::size_t GpuScene::triangles_drawn(GLuint commands, std::size_t first, std::s
 
 void GpuScene::draw_chosen(const PlantDraws& draws, GLenum mode) const {
   if (!chosen_ || draws.command_count == 0) return;
+  if (draws.draw_counts == 0) throw RuntimeFailure("plant draws without their count (DrawnCommands::keep_drawn)");
   glVertexArrayVertexBuffer(chosen_->vertex_array.name(), 1, draws.plant_indices, 0, sizeof(GLuint));
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws.commands);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, resident_plants_binding, draws.plants);
+  glBindBuffer(GL_PARAMETER_BUFFER_ARB, draws.draw_counts);
   glBindVertexArray(chosen_->vertex_array.name());
-  glMultiDrawElementsIndirect(mode, GL_UNSIGNED_INT, reinterpret_cast<const void*>(draws.first_command * GpuScene::command_bytes),
-                              static_cast<GLsizei>(draws.command_count), 0);
+  glMultiDrawElementsIndirectCountARB(mode, GL_UNSIGNED_INT, reinterpret_cast<const void*>(draws.first_command * GpuScene::command_bytes),
+                                      static_cast<GLintptr>(draws.count_slot * sizeof(GLuint)),
+                                      static_cast<GLsizei>(draws.command_count), 0);
   glBindVertexArray(0);
+  glBindBuffer(GL_PARAMETER_BUFFER_ARB, 0);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 

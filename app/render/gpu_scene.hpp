@@ -16,10 +16,13 @@ class GpuScene {
  public:
   // Plants drawn as polygons (a GpuSampler's): the plants resident on the GPU (a mat4 transform
   // and a tint each, shaders/instance.glsl), a list of plant indices, and indirect draws over it
-  // (DrawElementsIndirectCommand, base instance: a place in the list).
+  // (DrawElementsIndirectCommand, base instance: a place in the list), at most command_count of
+  // them: as many as draw_counts holds at count_slot (DrawnCommands::keep_drawn).
   struct PlantDraws {
     GLuint plants = 0, plant_indices = 0, commands = 0;
     std::size_t first_command = 0, command_count = 0;
+    GLuint draw_counts = 0;
+    std::size_t count_slot = 0;
   };
   static constexpr std::size_t command_bytes = 5 * sizeof(GLuint);  // DrawElementsIndirectCommand
   // The triangles that `count` indirect draws from `first` in buffer `commands` draw (read back).

@@ -32,7 +32,9 @@ PolygonPartLists::PolygonPartLists(std::size_t plant_count, std::size_t table_co
       part_lists_program_(gl::build_program({"part_lists.comp"})),
       layer_start_program_(gl::build_program({"layer_casters.comp"}, "#define START\n")),
       layer_plants_program_(gl::build_program({"layer_casters.comp"})),
-      layer_place_program_(gl::build_program({"layer_casters.comp"}, "#define PLACE\n")) {
+      layer_place_program_(gl::build_program({"layer_casters.comp"}, "#define PLACE\n")),
+      frame_drawn_(static_cast<std::size_t>(max_bands), table_count * part_lanes),
+      layer_drawn_(max_layers, table_count * part_lanes) {
   const std::size_t tables = std::max<std::size_t>(table_count, 1);
   storage<glm::uvec2>(part_masks_, plant_count);
   storage<GLuint>(part_plants_, capacity_);
@@ -80,11 +82,14 @@ void PolygonPartLists::choose(int band, const DepthPyramid* occluders, GLuint ba
   glDispatchComputeIndirect(dispatch_at(2));
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+  const std::size_t commands = table_count_ * part_lanes;
+  frame_drawn_.keep_drawn(part_commands_.name(), static_cast<std::size_t>(band) * commands, commands, static_cast<std::size_t>(band));
 }
 
 GpuScene::PlantDraws PolygonPartLists::frame_draws(int band, GLuint plants) const {
   const std::size_t commands = table_count_ * part_lanes;
-  return {plants, part_plants_.name(), part_commands_.name(), static_cast<std::size_t>(band) * commands, commands};
+  return frame_drawn_.from_copy({plants, part_plants_.name(), part_commands_.name(), static_cast<std::size_t>(band) * commands, commands},
+                                static_cast<std::size_t>(band));
 }
 
 GpuScene::PlantDraws PolygonPartLists::select(int layer, const glm::mat4& map_view, int map_size, const DepthPyramid& receivers,
@@ -114,7 +119,9 @@ GpuScene::PlantDraws PolygonPartLists::select(int layer, const glm::mat4& map_vi
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
-  return {plants, layer_plants_.name(), layer_commands_.name(), static_cast<std::size_t>(layer) * commands, commands};
+  const auto list = static_cast<std::size_t>(layer);
+  layer_drawn_.keep_drawn(layer_commands_.name(), list * commands, commands, list);
+  return layer_drawn_.from_copy({plants, layer_plants_.name(), layer_commands_.name(), list * commands, commands}, list);
 }
 
 std::size_t PolygonPartLists::frame_triangles(int bands) const {

@@ -1,6 +1,7 @@
 #pragma once
 #include "app/gl/gl_objects.hpp"
 #include "app/render/depth_pyramid.hpp"
+#include "app/render/drawn_commands.hpp"
 #include "app/render/gpu_scene.hpp"
 
 #include <vector>
@@ -43,6 +44,7 @@ class PolygonPartLists {
   gl::Program part_masks_program_, part_lists_program_;
   gl::Buffer layer_counts_, layer_plants_, layer_commands_;
   gl::Program layer_start_program_, layer_plants_program_, layer_place_program_;
+  DrawnCommands frame_drawn_, layer_drawn_;  // the non-empty draws, per band and per layer
 };
 
 }  // namespace ecoview

@@ -1,0 +1,29 @@
+#pragma once
+#include "app/gl/gl_objects.hpp"
+#include "app/render/gpu_scene.hpp"
+
+#include <cstddef>
+
+namespace ecoview {
+
+// Lists of indirect draws made on the GPU, copied without their empty draws, with each copy's
+// number of draws in a buffer for glMultiDrawElementsIndirectCount (shaders/drawn_commands.comp):
+// the GPU sampler's lists hold a draw per table and part lane, most of them empty, and a driver
+// walks every draw it is given (on an H200 the ecosystem's frame gave it 75,000 a frame).
+class DrawnCommands {
+ public:
+  // Room for `lists` copies of up to `commands_per_list` draws each.
+  DrawnCommands(std::size_t lists, std::size_t commands_per_list);
+  // Copies `count` commands of buffer `commands` from `first`, less the empty ones, into copy
+  // `list` (below `lists`), on the GPU.
+  void keep_drawn(GLuint commands, std::size_t first, std::size_t count, std::size_t list) const;
+  // `draws`, the list that keep_drawn copied as `list`, drawn from that copy.
+  GpuScene::PlantDraws from_copy(GpuScene::PlantDraws draws, std::size_t list) const;
+
+ private:
+  std::size_t lists_ = 0, commands_per_list_ = 0;
+  gl::Buffer commands_, counts_;
+  gl::Program program_;
+};
+
+}  // namespace ecoview
