@@ -3,6 +3,8 @@
 #include "app/errors.hpp"
 #include "app/gl/shader_program.hpp"
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
 
 namespace ecoview {
@@ -16,7 +18,7 @@ DrawnCommands::DrawnCommands(std::size_t lists, std::size_t commands_per_list)
     : lists_(lists), commands_per_list_(commands_per_list), program_(gl::build_program({"drawn_commands.comp"})) {
   glNamedBufferStorage(commands_.name(), static_cast<GLsizeiptr>(std::max<std::size_t>(lists * commands_per_list, 1) * GpuScene::command_bytes),
                        nullptr, 0);
-  glNamedBufferStorage(counts_.name(), static_cast<GLsizeiptr>(std::max<std::size_t>(lists, 1) * sizeof(GLuint)), nullptr, 0);
+  gl::store(counts_, std::vector<glm::uvec2>(std::max<std::size_t>(lists, 1), glm::uvec2(0)));
 }
 
 void DrawnCommands::keep_drawn(GLuint commands, std::size_t first, std::size_t count, std::size_t list) const {
@@ -39,8 +41,16 @@ GpuScene::PlantDraws DrawnCommands::from_copy(GpuScene::PlantDraws draws, std::s
   draws.commands = commands_.name();
   draws.first_command = list * commands_per_list_;
   draws.draw_counts = counts_.name();
-  draws.count_slot = list;
+  draws.count_slot = 2 * list;
   return draws;
+}
+
+std::vector<std::size_t> DrawnCommands::read_triangles() const {
+  std::vector<glm::uvec2> counts(lists_);
+  gl::read_back(counts_.name(), 0, static_cast<GLsizeiptr>(counts.size() * sizeof(glm::uvec2)), counts.data());
+  std::vector<std::size_t> triangles;
+  for (const glm::uvec2& c : counts) triangles.push_back(c.y);
+  return triangles;
 }
 
 }  // namespace ecoview

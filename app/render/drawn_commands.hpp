@@ -3,11 +3,13 @@
 #include "app/render/gpu_scene.hpp"
 
 #include <cstddef>
+#include <vector>
 
 namespace ecoview {
 
 // Lists of indirect draws made on the GPU, copied without their empty draws, with each copy's
-// number of draws in a buffer for glMultiDrawElementsIndirectCount (shaders/drawn_commands.comp):
+// number of draws (for glMultiDrawElementsIndirectCount) and of triangles in a buffer
+// (shaders/drawn_commands.comp):
 // the GPU sampler's lists hold a draw per table and part lane, most of them empty, and a driver
 // walks every draw it is given (on an H200 the ecosystem's frame gave it 75,000 a frame).
 class DrawnCommands {
@@ -19,6 +21,8 @@ class DrawnCommands {
   void keep_drawn(GLuint commands, std::size_t first, std::size_t count, std::size_t list) const;
   // `draws`, the list that keep_drawn copied as `list`, drawn from that copy.
   GpuScene::PlantDraws from_copy(GpuScene::PlantDraws draws, std::size_t list) const;
+  // The triangles each copy draws, read back.
+  std::vector<std::size_t> read_triangles() const;
 
  private:
   std::size_t lists_ = 0, commands_per_list_ = 0;

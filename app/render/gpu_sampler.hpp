@@ -102,7 +102,7 @@ class GpuSampler {
 
   // Read back, for tests and figures: per plant its points, whether drawn as polygons and its band
   // this frame (none: not in view), the draws (first point, count, first sample, plant), and the
-  // totals: the polygon plants' triangles of every band, the points and triangles of the bands the
+  // totals: the polygon plants' triangles of every band (as polygon_draws last listed them), the points and triangles of the bands the
   // frame shows (all but the casters'), and the triangles of the plants selected for each shadow
   // view this frame (select_casters; none where its views drew them all).
   struct Count {

@@ -120,17 +120,6 @@ void GpuScene::gather_point_meshes() {
   glVertexArrayAttribBinding(vao, 3, 1);
 }
 
-std::size_t GpuScene::triangles_drawn(GLuint commands, std::size_t first, std::size_t count) {
-  constexpr std::size_t command_uints = command_bytes / sizeof(GLuint);
-  std::vector<GLuint> read(command_uints * count);
-  if (read.empty()) return 0;
-  glGetNamedBufferSubData(commands, static_cast<GLintptr>(first * command_bytes), static_cast<GLsizeiptr>(read.size() * sizeof(GLuint)),
-                          read.data());
-  std::size_t triangles = 0;
-  for (std::size_t c = 0; c < read.size(); c += command_uints) triangles += static_cast<std::size_t>(read[c] / 3) * read[c + 1];
-  return triangles;
-}
-
 void GpuScene::draw_chosen(const PlantDraws& draws, GLenum mode) const {
   if (!chosen_ || draws.command_count == 0) return;
   if (draws.draw_counts == 0) throw RuntimeFailure("plant draws without their count (DrawnCommands::keep_drawn)");

@@ -17,7 +17,7 @@ class GpuScene {
   // Plants drawn as polygons (a GpuSampler's): the plants resident on the GPU (a mat4 transform
   // and a tint each, shaders/instance.glsl), a list of plant indices, and indirect draws over it
   // (DrawElementsIndirectCommand, base instance: a place in the list), at most command_count of
-  // them: as many as draw_counts holds at count_slot (DrawnCommands::keep_drawn).
+  // them: as many as draw_counts holds at count_slot, in uints (DrawnCommands::keep_drawn).
   struct PlantDraws {
     GLuint plants = 0, plant_indices = 0, commands = 0;
     std::size_t first_command = 0, command_count = 0;
@@ -25,8 +25,6 @@ class GpuScene {
     std::size_t count_slot = 0;
   };
   static constexpr std::size_t command_bytes = 5 * sizeof(GLuint);  // DrawElementsIndirectCommand
-  // The triangles that `count` indirect draws from `first` in buffer `commands` draw (read back).
-  static std::size_t triangles_drawn(GLuint commands, std::size_t first, std::size_t count);
 
   explicit GpuScene(const Scene& scene);
   enum class Parts { chosen, all };

@@ -4,6 +4,7 @@
 #include "app/gl/shader_program.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 namespace ecoview {
 namespace {
@@ -125,15 +126,14 @@ GpuScene::PlantDraws PolygonPartLists::select(int layer, const glm::mat4& map_vi
 }
 
 std::size_t PolygonPartLists::frame_triangles(int bands) const {
-  return GpuScene::triangles_drawn(part_commands_.name(), 0, table_count_ * part_lanes * static_cast<std::size_t>(bands));
+  const std::vector<std::size_t> per_band = frame_drawn_.read_triangles();
+  return std::accumulate(per_band.begin(), per_band.begin() + std::clamp<std::ptrdiff_t>(bands, 0, static_cast<std::ptrdiff_t>(per_band.size())),
+                         std::size_t{0});
 }
 
 std::vector<std::size_t> PolygonPartLists::layer_triangles() const {
-  std::vector<std::size_t> triangles;
-  const std::size_t commands = table_count_ * part_lanes;
-  for (int layer = 0; layer < layers_selected_; ++layer) {
-    triangles.push_back(GpuScene::triangles_drawn(layer_commands_.name(), static_cast<std::size_t>(layer) * commands, commands));
-  }
+  std::vector<std::size_t> triangles = layer_drawn_.read_triangles();
+  triangles.resize(static_cast<std::size_t>(layers_selected_));
   return triangles;
 }
 
