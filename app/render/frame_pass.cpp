@@ -60,7 +60,8 @@ FramePass::FramePass(int width, int height, bool aliasing)
       aliasing_wanted_(aliasing),
       surface_program_(gl::build_program({"frame.vert", "surface.frag"})),
       plant_surface_program_(gl::build_program({"frame.vert", "surface.frag"}, "#define PLANT_INDEX\n")),
-      point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})) {
+      point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})),
+      surfaces_copy_program_(gl::build_program({"surfaces_copy.comp"})) {
   glNamedBufferStorage(nearest_.name(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(histograms_.name(), most_predicted_setups * histogram_bins * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glTextureStorage2D(normals_.name(), 1, GL_RGBA32F, width, height);
@@ -117,12 +118,16 @@ void FramePass::keep_polygon_surfaces() const {
     glTextureStorage2D(polygon_surfaces_->albedos.name(), 1, GL_RGBA32F, width_, height_);
     glTextureStorage2D(polygon_surfaces_->depth.name(), 1, GL_R32F, width_, height_);
   }
-  const auto copy = [&](const gl::Texture& from, const gl::Texture& to) {
-    glCopyImageSubData(from.name(), GL_TEXTURE_2D, 0, 0, 0, 0, to.name(), GL_TEXTURE_2D, 0, 0, 0, 0, width_, height_, 1);
-  };
-  copy(normals_, polygon_surfaces_->normals);
-  copy(albedos_, polygon_surfaces_->albedos);
-  copy(depth_, polygon_surfaces_->depth);
+  glBindTextureUnit(0, normals_.name());
+  glBindTextureUnit(1, albedos_.name());
+  glBindTextureUnit(2, depth_.name());
+  glBindImageTexture(0, polygon_surfaces_->normals.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, polygon_surfaces_->albedos.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(2, polygon_surfaces_->depth.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glUseProgram(surfaces_copy_program_.name());
+  glDispatchCompute(static_cast<GLuint>((width_ + 7) / 8), static_cast<GLuint>((height_ + 7) / 8), 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
 void FramePass::add_points(const PointSplat& points, const shadow::Camera& camera) const {

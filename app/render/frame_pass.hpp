@@ -121,6 +121,7 @@ class FramePass {
   gl::Program surface_program_;
   gl::Program plant_surface_program_;  // for the GPU sampler's polygon plants (shaders/instance.glsl)
   gl::Program point_program_;
+  gl::Program surfaces_copy_program_;  // keep_polygon_surfaces'
   mutable std::map<ShadeVariant, gl::Program> shade_programs_, prediction_programs_;
   gl::Buffer histograms_;  // predict_aliasing's
   gl::VertexArray empty_vertex_array_;  // for the fullscreen triangle, which has no attributes
