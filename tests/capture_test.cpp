@@ -347,6 +347,22 @@ TEST(Capture, StatsThatCannotBeWrittenAreRefusedBeforeRendering) {
   }
 }
 
+// For timing alone: the figures of every frame and no image, and without --stats nothing to write.
+TEST(Capture, AovNoneWritesTheFiguresOfEveryFrameAndNoImage) {
+  const TempDir dir;
+  const std::filesystem::path out = dir / "out", stats = dir / "stats.json";
+  const CommandResult r = run_ecoview({"capture", "--scene", "courtyard", "--size", "64x36", "--frames", "0:2", "--aov", "none",
+                                       "--stats", stats.string(), "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(read_bytes(stats)).size(), 2u);
+  EXPECT_TRUE(files_in(out).empty());
+
+  const CommandResult refused = run_ecoview({"capture", "--scene", "courtyard", "--size", "64x36", "--aov", "none", "--out", (dir / "o2").string()});
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("--aov none"), std::string::npos) << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "o2"));
+}
+
 // Libraries write their own lines (OpenMesh on a truncated binary PLY): they are folded into ours.
 TEST(Capture, BadMeshFilesGiveOneLineWhateverTheLibrarySays) {
   const TempDir dir;

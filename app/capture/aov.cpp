@@ -27,6 +27,7 @@ std::vector<Aov> parse_aov_list(const std::string& list) {
   std::vector<Aov> aovs;
   std::stringstream stream(list);
   std::string name;
+  if (list == "none") return aovs;
   if (!list.empty() && list.back() == ',') throw InputError("--aov: empty name in '" + list + "'");
   while (std::getline(stream, name, ',')) {
     const Aov all[] = {Aov::color, Aov::shadow, Aov::depth, Aov::aliasing, Aov::shadowmap, Aov::reference};

@@ -14,7 +14,8 @@ namespace ecoview {
 enum class Aov { color, shadow, depth, aliasing, shadowmap, reference };
 
 std::string aov_name(Aov aov);
-// Parses a comma-separated --aov list; throws InputError on an unknown name or an empty list.
+// Parses a comma-separated --aov list ("none": no images); throws InputError on an unknown name or
+// an empty list.
 std::vector<Aov> parse_aov_list(const std::string& list);
 
 // The AOV of the last rendered frame as a PNG file. Depth is stored as
