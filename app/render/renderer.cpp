@@ -434,7 +434,10 @@ void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, 
   if (needs_last_frame() && !has_last_frame_) start_after(camera, light, t);
   draw(camera, light, t, settings_.method != ShadowMethod::none);
   if (needs_last_frame()) remember_last_frame();
-  stats_.host_ms += host_cpu_ms() - host_start;  // draw() added the sampling thread's
+  // draw() added the sampling thread's. The GL calls' share is an estimate (each call's clock
+  // readings are taken out at their least cost), and a frame whose own work is within its error can
+  // come out below zero (-0.2 ms on an H200): such a frame counts none.
+  stats_.host_ms = std::max(0.0, stats_.host_ms + host_cpu_ms() - host_start);
 }
 
 void Renderer::start_after(const shadow::Camera& camera, const shadow::Light& light, double t) {
