@@ -5,8 +5,7 @@
 // octave from 2^lowest_octave up, the first bin holding all below, the last all above (where the
 // light grazes the surface).
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 2) uniform sampler2D surface_normals;
-layout(binding = 4) uniform sampler2D surface_depths;  // linear view depth, negative for none
+#include "frame_surface.glsl"
 layout(std430, binding = 27) buffer Histograms { uint bins[]; };
 uniform int pixel_step;
 uniform uint first_bin;  // this candidate's histogram in `bins`
@@ -20,10 +19,11 @@ uniform float lowest_octave;
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pixel_step + pixel_step / 2;
   if (any(greaterThanEqual(pixel, ivec2(frame_size)))) return;
-  float depth = texelFetch(surface_depths, pixel, 0).r;
+  Surface surface = frame_surface(pixel);
+  float depth = surface.depth;
   if (!(depth > 0.0)) return;
   vec3 position = surface_position(vec2(pixel) + 0.5, depth);
-  vec3 n = texelFetch(surface_normals, pixel, 0).xyz;
+  vec3 n = surface.normal;
   vec3 to_light = direction_to_light(position);
   if (!(dot(n, to_light) > 0.0)) return;
   float octaves = log2(max(aliasing_factor(position, n), 1e-30)) - lowest_octave;

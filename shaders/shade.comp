@@ -6,13 +6,7 @@
 // pixel: as a fullscreen fragment pass the default view's frame took 14–21 % longer on llvmpipe
 // (docs/benchmarks.md), and on a GPU it leaves the raster units to the polygons.
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 2) uniform sampler2D surface_normals;
-layout(binding = 3) uniform sampler2D surface_albedos;
-layout(binding = 4) uniform sampler2D surface_depths;  // linear view depth, negative for none
-// The polygons' surfaces before the points were added.
-layout(binding = 5) uniform sampler2D polygon_normals;
-layout(binding = 6) uniform sampler2D polygon_albedos;
-layout(binding = 7) uniform sampler2D polygon_depths;
+#include "frame_surface.glsl"
 uniform vec3 sky;  // linear RGB
 // The frame's nearest surface (the next frame's PSM starts its near plane there): the least
 // linear view depth as float bits (positive floats order like their bits), all ones for none. A
@@ -36,7 +30,8 @@ vec3 polygon_color(ivec2 pixel) {
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, ivec2(frame_size)))) return;
-  float depth = texelFetch(surface_depths, pixel, 0).r;
+  Surface surface = frame_surface(pixel);
+  float depth = surface.depth;
   if (depth < 0.0) {
     imageStore(out_color, pixel, vec4(linear_to_srgb(sky), 1.0));
     imageStore(out_visibility, pixel, vec4(1.0));
@@ -46,8 +41,8 @@ void main() {
   uint depth_bits = floatBitsToUint(depth);
   if (depth > 0.0 && depth_bits < nearest) atomicMin(nearest, depth_bits);
   vec3 position = surface_position(vec2(pixel) + 0.5, depth);
-  vec3 n = texelFetch(surface_normals, pixel, 0).xyz;
-  vec4 albedo = texelFetch(surface_albedos, pixel, 0);
+  vec3 n = surface.normal;
+  vec4 albedo = surface.albedo;
   Shading s = shade(pixel, position, n, albedo.rgb);
   vec3 color = albedo.a < 1.0 ? mix(polygon_color(pixel), s.color, albedo.a) : s.color;
   imageStore(out_color, pixel, vec4(linear_to_srgb(color), 1.0));

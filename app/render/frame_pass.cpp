@@ -60,8 +60,7 @@ FramePass::FramePass(int width, int height, bool aliasing)
       aliasing_wanted_(aliasing),
       surface_program_(gl::build_program({"frame.vert", "surface.frag"})),
       plant_surface_program_(gl::build_program({"frame.vert", "surface.frag"}, "#define PLANT_INDEX\n")),
-      point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})),
-      surfaces_copy_program_(gl::build_program({"surfaces_copy.comp"})) {
+      point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})) {
   glNamedBufferStorage(nearest_.name(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(histograms_.name(), most_predicted_setups * histogram_bins * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glTextureStorage2D(normals_.name(), 1, GL_RGBA32F, width, height);
@@ -92,6 +91,7 @@ void FramePass::draw_surfaces(const GpuScene& scene, const shadow::Camera& camer
   const float far_depth = 1.0f;
   glClearNamedFramebufferfv(fb, GL_COLOR, 2, no_surface);
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
+  points_added_ = false;
   start_surfaces(surface_program_, camera);
   scene.draw();
 }
@@ -111,28 +111,19 @@ void FramePass::start_surfaces(const gl::Program& program, const shadow::Camera&
   set_camera(program, camera);
 }
 
-void FramePass::keep_polygon_surfaces() const {
-  if (!polygon_surfaces_) {
-    polygon_surfaces_ = std::make_unique<Surfaces>();
-    glTextureStorage2D(polygon_surfaces_->normals.name(), 1, GL_RGBA32F, width_, height_);
-    glTextureStorage2D(polygon_surfaces_->albedos.name(), 1, GL_RGBA32F, width_, height_);
-    glTextureStorage2D(polygon_surfaces_->depth.name(), 1, GL_R32F, width_, height_);
-  }
-  glBindTextureUnit(0, normals_.name());
-  glBindTextureUnit(1, albedos_.name());
-  glBindTextureUnit(2, depth_.name());
-  glBindImageTexture(0, polygon_surfaces_->normals.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glBindImageTexture(1, polygon_surfaces_->albedos.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glBindImageTexture(2, polygon_surfaces_->depth.name(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  glUseProgram(surfaces_copy_program_.name());
-  glDispatchCompute(static_cast<GLuint>((width_ + 7) / 8), static_cast<GLuint>((height_ + 7) / 8), 1);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-}
-
 void FramePass::add_points(const PointSplat& points, const shadow::Camera& camera) const {
-  keep_polygon_surfaces();
-  glBindFramebuffer(GL_FRAMEBUFFER, surfaces_.name());
+  if (!point_surfaces_) {
+    point_surfaces_ = std::make_unique<Surfaces>();
+    glTextureStorage2D(point_surfaces_->normals.name(), 1, GL_RGBA32F, width_, height_);
+    glTextureStorage2D(point_surfaces_->albedos.name(), 1, GL_RGBA32F, width_, height_);
+    glTextureStorage2D(point_surfaces_->depth.name(), 1, GL_R32F, width_, height_);
+    glNamedFramebufferTexture(point_surfaces_->framebuffer.name(), GL_DEPTH_STENCIL_ATTACHMENT, depth_buffer_.name(), 0);
+    attach(point_surfaces_->framebuffer, {&point_surfaces_->normals, &point_surfaces_->albedos, &point_surfaces_->depth});
+  }
+  const float no_surface[4] = {-1.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(point_surfaces_->framebuffer.name(), GL_COLOR, 2, no_surface);
+  points_added_ = true;
+  glBindFramebuffer(GL_FRAMEBUFFER, point_surfaces_->framebuffer.name());
   glViewport(0, 0, width_, height_);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -189,8 +180,6 @@ std::vector<float> FramePass::predict_aliasing(const shadow::Camera& surface_cam
   if (bins.empty()) return {};
   glNamedBufferSubData(histograms_.name(), 0, static_cast<GLsizeiptr>(bins.size() * sizeof(GLuint)), bins.data());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, histograms_binding, histograms_.name());
-  glBindTextureUnit(2, normals_.name());
-  glBindTextureUnit(4, depth_.name());
   const int step = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<float>(width_ * height_) / predicting_pixels))));
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   for (std::size_t i = 0; i < setups.size(); ++i) {
@@ -200,6 +189,7 @@ std::vector<float> FramePass::predict_aliasing(const shadow::Camera& surface_cam
     const gl::Program& program = prediction_program(variant);
     glUseProgram(program.name());
     set_lighting(program, surface_camera, camera, light, lookup);
+    bind_surfaces(program);
     gl::set_uniform(program, "pixel_step", step);
     gl::set_uniform(program, "first_bin", static_cast<unsigned>(i * histogram_bins));
     gl::set_uniform(program, "bin_count", static_cast<unsigned>(histogram_bins));
@@ -240,14 +230,7 @@ void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,
   const gl::Program& program = shade_program(shade_variant(shadow_map));
   glUseProgram(program.name());
   set_lighting(program, camera, camera, light, shadow_map);
-  glBindTextureUnit(2, normals_.name());
-  glBindTextureUnit(3, albedos_.name());
-  glBindTextureUnit(4, depth_.name());
-  if (polygon_surfaces_) {
-    glBindTextureUnit(5, polygon_surfaces_->normals.name());
-    glBindTextureUnit(6, polygon_surfaces_->albedos.name());
-    glBindTextureUnit(7, polygon_surfaces_->depth.name());
-  }
+  bind_surfaces(program);
   gl::set_uniform(program, "sky", srgb_to_linear(sky_color));
   // Set by an upload, not a buffer clear: on llvmpipe a clear could land after the pass behind it.
   const GLuint none = 0xFFFFFFFFu;
@@ -282,7 +265,28 @@ Image<Sample> FramePass::read(const gl::Framebuffer& framebuffer, GLenum attachm
 
 Image8 FramePass::read_color() const { return read<std::uint8_t>(lit_, GL_COLOR_ATTACHMENT0, 3, GL_RGB, GL_UNSIGNED_BYTE); }
 Image8 FramePass::read_visibility() const { return read<std::uint8_t>(lit_, GL_COLOR_ATTACHMENT1, 1, GL_RED, GL_UNSIGNED_BYTE); }
-Image<float> FramePass::read_depth() const { return read<float>(surfaces_, GL_COLOR_ATTACHMENT2, 1, GL_RED, GL_FLOAT); }
+void FramePass::bind_surfaces(const gl::Program& program) const {
+  glBindTextureUnit(2, normals_.name());
+  glBindTextureUnit(3, albedos_.name());
+  glBindTextureUnit(4, depth_.name());
+  if (point_surfaces_) {
+    glBindTextureUnit(5, point_surfaces_->normals.name());
+    glBindTextureUnit(6, point_surfaces_->albedos.name());
+    glBindTextureUnit(7, point_surfaces_->depth.name());
+  }
+  gl::set_uniform(program, "points_added", points_added_ ? 1 : 0);
+}
+
+// The point's depth where the point pass added one, else the polygons'.
+Image<float> FramePass::read_depth() const {
+  Image<float> depth = read<float>(surfaces_, GL_COLOR_ATTACHMENT2, 1, GL_RED, GL_FLOAT);
+  if (!points_added_) return depth;
+  const Image<float> points = read<float>(point_surfaces_->framebuffer, GL_COLOR_ATTACHMENT2, 1, GL_RED, GL_FLOAT);
+  for (std::size_t i = 0; i < depth.samples.size(); ++i) {
+    if (points.samples[i] >= 0.0f) depth.samples[i] = points.samples[i];
+  }
+  return depth;
+}
 
 float FramePass::nearest_depth() const {
   const GLuint none = 0xFFFFFFFFu;

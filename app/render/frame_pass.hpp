@@ -107,12 +107,16 @@ class FramePass {
   gl::Texture depth_{GL_TEXTURE_2D};
   gl::Texture depth_buffer_{GL_TEXTURE_2D};
   gl::Framebuffer surfaces_;
-  // The polygons' surfaces as they were before the points were added, made when first needed.
+  // The points' surfaces where they lie in front of the polygons (add_points), apart from the
+  // polygons' (shaders/frame_surface.glsl), made when first needed; whether this frame added any.
   struct Surfaces {
     gl::Texture normals{GL_TEXTURE_2D}, albedos{GL_TEXTURE_2D}, depth{GL_TEXTURE_2D};
+    gl::Framebuffer framebuffer;  // the three, and the frame's depth buffer
   };
-  mutable std::unique_ptr<Surfaces> polygon_surfaces_;
-  void keep_polygon_surfaces() const;
+  mutable std::unique_ptr<Surfaces> point_surfaces_;
+  mutable bool points_added_ = false;
+  // Binds both surfaces for a program that includes frame_surface.glsl.
+  void bind_surfaces(const gl::Program& program) const;
   // Their lighting: written by shade as images, read back and blitted through lit_.
   gl::Texture color_{GL_TEXTURE_2D};
   gl::Texture visibility_{GL_TEXTURE_2D};
@@ -121,7 +125,6 @@ class FramePass {
   gl::Program surface_program_;
   gl::Program plant_surface_program_;  // for the GPU sampler's polygon plants (shaders/instance.glsl)
   gl::Program point_program_;
-  gl::Program surfaces_copy_program_;  // keep_polygon_surfaces'
   mutable std::map<ShadeVariant, gl::Program> shade_programs_, prediction_programs_;
   gl::Buffer histograms_;  // predict_aliasing's
   gl::VertexArray empty_vertex_array_;  // for the fullscreen triangle, which has no attributes
