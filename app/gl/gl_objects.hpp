@@ -76,19 +76,6 @@ void store(const Buffer& buffer, const std::vector<T>& data, GLbitfield flags = 
                        data.empty() ? nullptr : data.data(), flags);
 }
 
-// `bytes` of `buffer` from `offset`, read on the host through a copy in a buffer of its own: a
-// driver may move a buffer the host reads often into host memory (NVIDIA's says so in its debug
-// output), where the GPU's own reads and atomics on it crawl; on an H200 the ecosystem's frames
-// took four times as long after a few seconds of --stats.
-inline void read_back(GLuint buffer, GLintptr offset, GLsizeiptr bytes, void* to) {
-  if (bytes <= 0) return;
-  const Buffer copy;
-  glNamedBufferStorage(copy.name(), bytes, nullptr, 0);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glCopyNamedBufferSubData(buffer, copy.name(), offset, 0, bytes);
-  glGetNamedBufferSubData(copy.name(), 0, bytes, to);
-}
-
 // The bytes of one storage buffer a shader can address on this driver (GL promises 2^27).
 inline std::size_t max_storage_block_bytes() {
   GLint64 bytes = 0;

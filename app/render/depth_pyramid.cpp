@@ -146,7 +146,7 @@ void DepthPyramid::bind_for(const gl::Program& program) const {
 
 std::vector<float> DepthPyramid::read(std::size_t level) const {
   std::vector<float> texels(static_cast<std::size_t>(sizes_[level].x) * static_cast<std::size_t>(sizes_[level].y));
-  gl::read_back(depths_.name(), static_cast<GLintptr>(offsets_[level] * sizeof(float)),
+  glGetNamedBufferSubData(depths_.name(), static_cast<GLintptr>(offsets_[level] * sizeof(float)),
                           static_cast<GLsizeiptr>(texels.size() * sizeof(float)), texels.data());
   return texels;
 }
@@ -156,7 +156,7 @@ glm::ivec2 DepthPyramid::tile_counts() const { return (size_ + tile_pixels - 1) 
 std::vector<bool> DepthPyramid::read_changed_tiles() const {
   const glm::ivec2 tiles = tile_counts();
   std::vector<GLuint> flags(static_cast<std::size_t>(tiles.x) * static_cast<std::size_t>(tiles.y));
-  gl::read_back(changed_tiles_.name(), 0, static_cast<GLsizeiptr>(flags.size() * sizeof(GLuint)), flags.data());
+  glGetNamedBufferSubData(changed_tiles_.name(), 0, static_cast<GLsizeiptr>(flags.size() * sizeof(GLuint)), flags.data());
   std::vector<bool> changed;
   for (GLuint f : flags) changed.push_back(f != 0u);
   return changed;

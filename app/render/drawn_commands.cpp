@@ -47,7 +47,7 @@ GpuScene::PlantDraws DrawnCommands::from_copy(GpuScene::PlantDraws draws, std::s
 
 std::vector<std::size_t> DrawnCommands::read_triangles() const {
   std::vector<glm::uvec2> counts(lists_);
-  gl::read_back(counts_.name(), 0, static_cast<GLsizeiptr>(counts.size() * sizeof(glm::uvec2)), counts.data());
+  glGetNamedBufferSubData(counts_.name(), 0, static_cast<GLsizeiptr>(counts.size() * sizeof(glm::uvec2)), counts.data());
   std::vector<std::size_t> triangles;
   for (const glm::uvec2& c : counts) triangles.push_back(c.y);
   return triangles;

@@ -9,9 +9,9 @@ namespace ecoview {
 
 // Lists of indirect draws made on the GPU, copied without their empty draws, with each copy's
 // number of draws (for glMultiDrawElementsIndirectCount) and of triangles in a buffer
-// (shaders/drawn_commands.comp):
-// the GPU sampler's lists hold a draw per table and part lane, most of them empty, and a driver
-// walks every draw it is given (on an H200 the ecosystem's frame gave it 75,000 a frame).
+// (shaders/drawn_commands.comp): the GPU sampler's lists hold a draw per table and part lane,
+// most of them empty (82 tables × 65 lanes a band on the ecosystem, some 75,000 draws a frame),
+// and a driver walks every draw it is given.
 class DrawnCommands {
  public:
   // Room for `lists` copies of up to `commands_per_list` draws each.

@@ -198,7 +198,7 @@ std::vector<float> FramePass::predict_aliasing(const shadow::Camera& surface_cam
     glDispatchCompute(static_cast<GLuint>((width_ / step + 8) / 8), static_cast<GLuint>((height_ / step + 8) / 8), 1);
   }
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  gl::read_back(histograms_.name(), 0, static_cast<GLsizeiptr>(bins.size() * sizeof(GLuint)), bins.data());
+  glGetNamedBufferSubData(histograms_.name(), 0, static_cast<GLsizeiptr>(bins.size() * sizeof(GLuint)), bins.data());
   std::vector<float> predicted;
   for (std::size_t i = 0; i < setups.size(); ++i) predicted.push_back(percentile_of(&bins[i * histogram_bins], fraction));
   return predicted;
@@ -292,7 +292,7 @@ float FramePass::nearest_depth() const {
   const GLuint none = 0xFFFFFFFFu;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   GLuint bits = none;
-  gl::read_back(nearest_.name(), 0, sizeof bits, &bits);
+  glGetNamedBufferSubData(nearest_.name(), 0, sizeof bits, &bits);
   float depth = 0.0f;
   if (bits != none) std::memcpy(&depth, &bits, sizeof depth);
   return depth;

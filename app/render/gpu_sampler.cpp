@@ -391,7 +391,7 @@ PointDrawList GpuSampler::draw_list() const {
 
 std::vector<GpuSampler::Count> GpuSampler::read_counts() const {
   std::vector<glm::uvec4> counts(plant_count_);
-  if (!counts.empty()) gl::read_back(counts_.name(), 0, static_cast<GLsizeiptr>(counts.size() * sizeof(glm::uvec4)), counts.data());
+  if (!counts.empty()) glGetNamedBufferSubData(counts_.name(), 0, static_cast<GLsizeiptr>(counts.size() * sizeof(glm::uvec4)), counts.data());
   std::vector<Count> out;
   out.reserve(counts.size());
   for (const glm::uvec4& c : counts) {
@@ -402,15 +402,15 @@ std::vector<GpuSampler::Count> GpuSampler::read_counts() const {
 
 std::vector<glm::uvec4> GpuSampler::read_draws() const {
   GpuTotals totals{};
-  gl::read_back(totals_.name(), 0, sizeof totals, &totals);
+  glGetNamedBufferSubData(totals_.name(), 0, sizeof totals, &totals);
   std::vector<glm::uvec4> draws(totals.draw_count);
-  if (!draws.empty()) gl::read_back(draws_.name(), 0, static_cast<GLsizeiptr>(draws.size() * sizeof(glm::uvec4)), draws.data());
+  if (!draws.empty()) glGetNamedBufferSubData(draws_.name(), 0, static_cast<GLsizeiptr>(draws.size() * sizeof(glm::uvec4)), draws.data());
   return draws;
 }
 
 GpuSampler::Totals GpuSampler::read_totals() const {
   GpuTotals totals{};
-  gl::read_back(totals_.name(), 0, sizeof totals, &totals);
+  glGetNamedBufferSubData(totals_.name(), 0, sizeof totals, &totals);
   Totals out;
   out.frame_points = totals.frame_points;
   out.triangles = every_band_drawn_->read_triangles().front();

@@ -119,7 +119,7 @@ void PointSplat::use(const PointDrawList& list, const PointSamples& samples) {
 std::size_t PointSplat::points_drawn_onto() const {
   GLuint points = 0;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  gl::read_back(points_drawn_onto_.name(), 0, sizeof points, &points);
+  glGetNamedBufferSubData(points_drawn_onto_.name(), 0, sizeof points, &points);
   return points;
 }
 
@@ -242,7 +242,7 @@ Image<std::uint32_t> PointSplat::count_points_on(const Image<float>& surface_dep
     dispatch(*count_program_, view_projection, 1, 0.0f, glm::vec2(0.0f), Points::frame);
   }
   std::vector<std::uint32_t> bottom_up(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));
-  gl::read_back(winners_.name(), 0, static_cast<GLsizeiptr>(bottom_up.size() * sizeof(std::uint32_t)), bottom_up.data());
+  glGetNamedBufferSubData(winners_.name(), 0, static_cast<GLsizeiptr>(bottom_up.size() * sizeof(std::uint32_t)), bottom_up.data());
   return from_bottom_up(size_.x, size_.y, 1, bottom_up);
 }
 
