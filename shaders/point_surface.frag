@@ -1,6 +1,7 @@
 #version 450 core
-// Pass 3 of point splatting: each pixel's point becomes the frame's surface there (as surface.frag
-// writes a polygon's), at its depth, so the depth test composites points and polygons. The point
+// Pass 3 of point splatting: each pixel's point becomes the frame's surface there where the depth
+// test finds it in front of the polygons, written as surface.frag writes a polygon's but into the
+// points' own targets (frame_surface.glsl picks between the two). The point
 // is the nearest of those whose centre falls in the pixel, else the nearest whose splat reaches
 // it: a splat's nearest point shows the front of a tuft or crown over its neighbours' pixels too,
 // darker than the surface there on the default view (docs/point_density.md). Its albedo's alpha is
