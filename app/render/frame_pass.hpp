@@ -18,9 +18,9 @@ namespace ecoview {
 
 // Renders the camera's view in two steps (deferred shading): first the nearest surface of each
 // pixel, polygons and point splats depth-tested together, into normal, albedo and linear view
-// depth (the points into targets of their own, shaders/frame_surface.glsl); then Blinn-Phong lighting once per pixel, at the point of that depth on the ray through
-// the pixel's centre, into sRGB colour, light visibility (the `shadow` AOV) and the shadow map's
-// aliasing factor.
+// depth (the points into targets of their own, shaders/frame_surface.glsl); then Blinn-Phong
+// lighting once per pixel, at the point of that depth on the ray through the pixel's centre, into
+// sRGB colour, light visibility (the `shadow` AOV) and the shadow map's aliasing factor.
 class FramePass {
  public:
   // `aliasing`: also fill the aliasing target (it costs shading time; otherwise it holds 0).
