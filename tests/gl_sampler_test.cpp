@@ -3,6 +3,7 @@
 #include "app/gl/context.hpp"
 #include "depth_coverage.hpp"
 #include "app/render/depth_pyramid.hpp"
+#include "app/render/drawn_commands.hpp"
 #include "app/render/gpu_sampler.hpp"
 #include "app/render/renderer.hpp"
 #include "app/scene/scene_file.hpp"
@@ -335,6 +336,46 @@ TEST(DepthPyramidBuild, IsKeptWhereNothingChangedAndBuiltAgainWhole) {
   pyramid.build(depth.name(), no_points.name());
   EXPECT_TRUE(all_at(0.25f)) << "built again";
   EXPECT_EQ(pyramid.read(pyramid.levels() - 1), std::vector<float>{0.25f}) << "to its top";
+}
+
+// A list of indirect draws, some empty (no indices or no instances), copied into one of several
+// places: the copy holds the others in their order, and the counts the number of them and the
+// triangles the whole list draws.
+TEST(DrawnCommands, KeepsTheDrawsThatDrawInTheirOrderAndCountsThemAndTheirTriangles) {
+  const std::unique_ptr<GlContext> context = create_headless_context("egl");
+  constexpr std::size_t first = 300, count = 1000;  // not a multiple of the 256 threads
+  std::vector<glm::uvec4> heads;                     // index count, instances, first index, base vertex
+  std::vector<GLuint> commands;
+  pointgen::Random random(11);
+  for (std::size_t c = 0; c < first + count + 200; ++c) {
+    const GLuint indices[] = {0, 3, 6, 30};
+    const GLuint instances[] = {0, 1, 5};
+    const glm::uvec4 head(indices[random.below(4)], instances[random.below(3)], random.below(1000), random.below(1000));
+    heads.push_back(head);
+    for (GLuint word : {head.x, head.y, head.z, head.w, static_cast<GLuint>(random.below(1000))}) commands.push_back(word);
+  }
+  gl::Buffer list;
+  gl::store(list, commands);
+  const DrawnCommands drawn(3, count);
+  drawn.keep_drawn(list.name(), first, count, 2);
+
+  std::vector<GLuint> expected;
+  std::size_t triangles = 0;
+  for (std::size_t c = first; c < first + count; ++c) {
+    triangles += static_cast<std::size_t>(heads[c].x / 3) * heads[c].y;
+    if (heads[c].x > 0 && heads[c].y > 0) expected.insert(expected.end(), commands.begin() + 5 * c, commands.begin() + 5 * c + 5);
+  }
+  ASSERT_GT(expected.size(), 0u);
+  ASSERT_LT(expected.size(), 5 * count);
+  const GpuScene::PlantDraws copy = drawn.from_copy({0, 0, list.name(), first, count}, 2);
+  GLuint draws = 0;
+  glGetNamedBufferSubData(copy.draw_counts, static_cast<GLintptr>(copy.count_slot * sizeof(GLuint)), sizeof draws, &draws);
+  EXPECT_EQ(draws * 5, expected.size());
+  std::vector<GLuint> kept(expected.size());
+  glGetNamedBufferSubData(copy.commands, static_cast<GLintptr>(copy.first_command * GpuScene::command_bytes),
+                          static_cast<GLsizeiptr>(kept.size() * sizeof(GLuint)), kept.data());
+  EXPECT_EQ(kept, expected);
+  EXPECT_EQ(drawn.read_triangles().at(2), triangles);
 }
 
 // A cascade draws the polygon plants that shadow the surfaces looking it up: a near beech under a
