@@ -33,7 +33,7 @@ std::vector<Aov> parse_aov_list(const std::string& list) {
     const Aov all[] = {Aov::color, Aov::shadow, Aov::depth, Aov::aliasing, Aov::shadowmap, Aov::reference};
     const auto* found = std::find_if(std::begin(all), std::end(all), [&](Aov a) { return aov_name(a) == name; });
     if (found == std::end(all)) {
-      throw InputError("--aov: unknown AOV '" + name + "' (available: color, shadow, depth, aliasing, shadowmap, reference)");
+      throw InputError("--aov: unknown AOV '" + name + "' (available: color, shadow, depth, aliasing, shadowmap, reference; or none alone)");
     }
     if (std::find(aovs.begin(), aovs.end(), *found) == aovs.end()) aovs.push_back(*found);
   }

@@ -568,7 +568,12 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
   if (!shadow_points_) shadow_points_ = std::make_unique<PointSplat>(glm::ivec2(settings_.shadow_size));
   shadow_points_->use(gpu_sampler_->draw_list(), samples_);
   shadow_timer_.start();
-  const GpuScene::PlantDraws every_band = gpu_sampler_->polygon_draws(0, gpu_sampler_->band_count());
+  // Every band's polygon plants, listed on the GPU for the first map that draws them all.
+  std::optional<GpuScene::PlantDraws> every_band;
+  const auto every_band_draws = [&] {
+    if (!every_band) every_band = gpu_sampler_->polygon_draws(0, gpu_sampler_->band_count());
+    return *every_band;
+  };
   // One projective map: the receiver mask over it was built for the casters' band.
   const bool one_map = setup_.views.size() == 1 && !setup_.views.front().paraboloid && gpu_sampler_->casters_band();
   std::vector<glm::mat4> earlier;  // the cascades before this one
@@ -577,7 +582,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
     const GpuScene::PlantDraws plants = setup_.selection == shadow::ViewSelection::first_containing
                                             ? cascade_casters(static_cast<int>(layer), v.view_projection(), earlier)
                                         : one_map ? gpu_sampler_->select_casters(0, v.view_projection(), settings_.shadow_size, *receivers_)
-                                                  : every_band;
+                                                  : every_band_draws();
     earlier.push_back(v.view_projection());
     stages_.end("map choice");
     shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer), &plants);
