@@ -91,7 +91,7 @@ void main() {
   if (slot >= polygon_count) return;
   uint plant = polygon_instances[slot];
   if (counts[plant].z == 0u) return;  // the map draws it as points (sample_bins.comp, HIDDEN_KEYS)
-  mat4 model = instances[plant].model;
+  mat4 model = instance_model(plant);
   SampledMesh mesh = meshes[plant_meshes[plant].x];
   if (shadows_nothing(map_view_projection, model, mesh)) return;
   uint first_list = table_of(plant) * lanes;

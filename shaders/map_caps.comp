@@ -22,7 +22,7 @@ void main() {
     map_caps[d] = draw.y;
     return;
   }
-  mat4 model = instances[draw.w].model;
+  mat4 model = instance_model(draw.w);
   SampledMesh mesh = meshes[plant_meshes[draw.w].x];
   vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
   float scale = model_scale(model);

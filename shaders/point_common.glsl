@@ -2,15 +2,16 @@
 // point count, first sample, instance), the drawn instances, the surface samples, and per pixel
 // the nearest point's depth, the point that has it and how much of it the points cover
 // (point_coverage.glsl).
-struct Instance {
-  mat4 model;
-  vec4 tint;
-};
 layout(std430, binding = 1) readonly buffer Draws { uvec4 draws[]; };
-layout(std430, binding = 2) readonly buffer Instances { Instance instances[]; };
-layout(std430, binding = 3) readonly buffer Positions { vec4 positions[]; };
-layout(std430, binding = 4) readonly buffer Normals { vec4 normals[]; };
-layout(std430, binding = 5) readonly buffer Colors { vec4 colors[]; };
+#include "plant_instances.glsl"
+// The surface samples (app/render/point_samples.hpp) as buffer textures, read as the instances
+// are (plant_instances.glsl): position, normal with its list's area as w, colour.
+layout(binding = 9) uniform samplerBuffer positions;
+layout(binding = 10) uniform samplerBuffer normals;
+layout(binding = 11) uniform samplerBuffer colors;
+vec3 sample_position(uint s) { return texelFetch(positions, int(s)).xyz; }
+vec4 sample_normal(uint s) { return texelFetch(normals, int(s)); }
+vec3 sample_color(uint s) { return texelFetch(colors, int(s)).rgb; }
 layout(std430, binding = 6) buffer Depths { uint depths[]; };
 layout(std430, binding = 7) buffer Winners { uint winners[]; };
 layout(std430, binding = 36) buffer Coverage { uint coverage[]; };

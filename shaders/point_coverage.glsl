@@ -17,12 +17,13 @@ uniform float pixels_per_radian;
 // The image area point p of draw d stands for, in pixels.
 float image_area(uint p, uvec4 d, vec3 world) {
   uint s = d.z + (p - d.x);
-  mat4 model = instances[d.w].model;
+  mat4 model = instance_model(d.w);
   vec3 to_eye = eye - world;
   float distance = max(length(to_eye), 1e-6);
   float z = max(-dot(to_eye, forward), 1e-3);
-  vec3 n = mat3(model) * normals[s].xyz;  // as long as the model's scale
-  float share = normals[s].w * dot(n, n) / float(d.y);
+  vec4 normal = sample_normal(s);
+  vec3 n = mat3(model) * normal.xyz;  // as long as the model's scale
+  float share = normal.w * dot(n, n) / float(d.y);
   float facing = abs(dot(normalize(n), to_eye)) / distance;
   return pixels_per_radian * pixels_per_radian * share * facing * distance / (z * z * z);
 }

@@ -5,14 +5,10 @@
 //    binary search in `draws` (first point, count, first sample, instance), as the compute splat does;
 //  - indirect draws: v is the sample index itself (a command's `first` is its mesh's first sample),
 //    and the instance comes from an attribute with divisor 1 (a command's baseInstance).
-struct Instance {
-  mat4 model;
-  vec4 tint;
-};
 layout(std430, binding = 0) readonly buffer Draws { uvec4 draws[]; };
-layout(std430, binding = 1) readonly buffer Instances { Instance instances[]; };
-layout(std430, binding = 2) readonly buffer Positions { vec4 positions[]; };
-layout(std430, binding = 3) readonly buffer Colors { vec4 colors[]; };
+#include "plant_instances.glsl"
+layout(binding = 9) uniform samplerBuffer positions;  // the surface samples, as point_common.glsl reads them
+layout(binding = 11) uniform samplerBuffer colors;
 
 layout(location = 0) in uint instance_attribute;  // indirect draws only
 uniform bool indirect;
@@ -36,6 +32,6 @@ void main() {
     sample_index = draw.z + (sample_index - draw.x);
     instance = draw.w;
   }
-  gl_Position = view_projection * (instances[instance].model * vec4(positions[sample_index].xyz, 1.0));
-  point_color = colors[sample_index].rgb * instances[instance].tint.rgb;
+  gl_Position = view_projection * (instance_model(instance) * vec4(texelFetch(positions, int(sample_index)).xyz, 1.0));
+  point_color = texelFetch(colors, int(sample_index)).rgb * instance_tint(instance);
 }

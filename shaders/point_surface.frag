@@ -44,12 +44,13 @@ void main() {
   if (point == no_point) discard;
   uint draw = draw_of(point);
   uint s = sample_of(point, draw);
-  Instance instance = instances[draws[draw].w];
-  vec3 position = (instance.model * vec4(positions[s].xyz, 1.0)).xyz;
-  vec3 n = normalize(mat3(instance.model) * normals[s].xyz);
+  uint instance = draws[draw].w;
+  mat4 model = instance_model(instance);
+  vec3 position = (model * vec4(sample_position(s), 1.0)).xyz;
+  vec3 n = normalize(mat3(model) * sample_normal(s).xyz);
   if (dot(n, camera_position - position) < 0.0) n = -n;
   gl_FragDepth = uintBitsToFloat(centred ? centre_depths[index] : depths[index]);
   out_normal = vec4(n, 0.0);
-  out_albedo = vec4(colors[s].rgb * instance.tint.rgb, covered_share(pixel));
+  out_albedo = vec4(sample_color(s) * instance_tint(instance), covered_share(pixel));
   out_depth = -(view * vec4(position, 1.0)).z;
 }

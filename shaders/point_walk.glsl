@@ -45,7 +45,7 @@ void main() {
     }
     if (p - d.x >= drawn) continue;
     ++kept;
-    vec4 world = instances[d.w].model * vec4(positions[d.z + (p - d.x)].xyz, 1.0);
+    vec4 world = instance_model(d.w) * vec4(sample_position(d.z + (p - d.x)), 1.0);
     vec4 clip = paraboloid.x == 0.0 ? view_projection * world : paraboloid_clip(view_projection, paraboloid, world.xyz);
     // Written to be false for NaN too (a GPU may turn a NaN corner into pixel 0).
     vec3 ndc = clip.xyz / clip.w;

@@ -38,7 +38,7 @@ uniform float points_per_triangle;
 uniform bool projective_map;  // a paraboloid map draws every polygon plant: none are moved to points
 
 bool map_takes_points(uint i) {
-  mat4 model = instances[i].model;
+  mat4 model = instance_model(i);
   SampledMesh mesh = meshes[plant_meshes[i].x];
   vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
   float scale = model_scale(model);
@@ -90,7 +90,7 @@ const uint triangles_a_plant = 128u;
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= plant_count) return;
-  mat4 model = instances[i].model;
+  mat4 model = instance_model(i);
   vec4 bounds = meshes[plant_meshes[i].x].center_radius;
   vec3 center = (model * vec4(bounds.xyz, 1.0)).xyz;
   if (!in_view(center, bounds.w * model_scale(model))) return;
@@ -111,7 +111,7 @@ void main() {
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= plant_count) return;
-  mat4 model = instances[i].model;
+  mat4 model = instance_model(i);
   vec4 bounds = meshes[plant_meshes[i].x].center_radius;
   vec3 center = (model * vec4(bounds.xyz, 1.0)).xyz;
   float radius = bounds.w * model_scale(model);

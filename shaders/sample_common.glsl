@@ -1,10 +1,6 @@
 // The GPU sampler's buffers (app/render/gpu_sampler.hpp): the plants resident on the GPU, what it
 // knows of their meshes, the frame's plants in view sorted into distance bands, and per plant its
 // count and its place in the frame's lists.
-struct Instance {
-  mat4 model;
-  vec4 tint;
-};
 struct SampledMesh {
   vec4 center_radius;    // of its bounds, in the mesh's frame
   vec4 half_size_area;   // its bounds' half sizes; w: its surface area, square metres
@@ -12,7 +8,7 @@ struct SampledMesh {
   uvec4 sizes;           // triangles, samples, its list's first sample among all meshes', 0
   uvec4 polygon_parts;   // its first polygon part among all meshes', their number (none: drawn whole), 0, 0
 };
-layout(std430, binding = 2) readonly buffer Instances { Instance instances[]; };
+#include "plant_instances.glsl"
 layout(std430, binding = 10) readonly buffer PlantMeshes { uvec2 plant_meshes[]; };  // mesh, rounding's float bits
 layout(std430, binding = 11) readonly buffer SampledMeshes { SampledMesh meshes[]; };
 // Per plant, once counted: (points, the number of its band from 1, 1 when drawn as polygons,

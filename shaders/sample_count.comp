@@ -31,7 +31,7 @@ uniform float points_per_triangle;
 
 // (points, 1 when drawn as polygons, hidden_in_frame when hidden) of plant i.
 uvec3 count_plant(uint i) {
-  mat4 model = instances[i].model;
+  mat4 model = instance_model(i);
   SampledMesh mesh = meshes[plant_meshes[i].x];
   // Off screen or behind what nearer bands drew over all of its bounds box's rectangle.
   vec3 lo, hi;

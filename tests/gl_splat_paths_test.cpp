@@ -64,12 +64,27 @@ std::vector<T> storage_at(GLuint binding) {
   return data;
 }
 
+// The content of the buffer behind the buffer texture bound to texture unit `unit`.
+std::vector<glm::vec4> texels_at(GLuint unit) {
+  GLint texture = 0;
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glGetIntegerv(GL_TEXTURE_BINDING_BUFFER, &texture);
+  glActiveTexture(GL_TEXTURE0);
+  GLint buffer = 0;
+  glGetTextureLevelParameteriv(static_cast<GLuint>(texture), 0, GL_TEXTURE_BUFFER_DATA_STORE_BINDING, &buffer);
+  GLint64 bytes = 0;
+  glGetNamedBufferParameteri64v(static_cast<GLuint>(buffer), GL_BUFFER_SIZE, &bytes);
+  std::vector<glm::vec4> data(static_cast<std::size_t>(bytes) / sizeof(glm::vec4));
+  glGetNamedBufferSubData(static_cast<GLuint>(buffer), 0, static_cast<GLsizeiptr>(data.size() * sizeof(glm::vec4)), data.data());
+  return data;
+}
+
 // Nearest window depth per pixel (rows from the top) of the points, each landing in the pixel that
 // holds its window position, as GL's viewport transform and the compute splat place it.
 Image<float> cpu_splat(const std::vector<pointgen::PointDraw>& draws, const Scene& scene, const PointSamples& samples,
                        const glm::mat4& view_projection) {
   samples.bind(0, 1, 2);
-  const std::vector<glm::vec4> positions = storage_at<glm::vec4>(0);
+  const std::vector<glm::vec4> positions = texels_at(0);
   Image<float> image{width, height, 1, std::vector<float>(static_cast<std::size_t>(width) * height, no_point)};
   for (const pointgen::PointDraw& d : draws) {
     const pointgen::InstanceTable& table = scene.groups[d.table];

@@ -18,8 +18,9 @@ struct DrawCommand {
   GLuint count, instance_count, first, base_instance;
 };
 
-constexpr GLuint draws_binding = 0, instances_binding = 1, positions_binding = 2, colors_binding = 3,
-                 normals_binding = 4;  // point_raster.vert; normals are not read
+constexpr GLuint draws_binding = 0;  // point_raster.vert
+// Texture units, as the compute splat's (shaders/point_common.glsl); normals are not read.
+constexpr GLuint instance_texels_unit = 8, position_texels_unit = 9, normal_texels_unit = 10, color_texels_unit = 11;
 
 }  // namespace
 
@@ -62,6 +63,7 @@ void PointRaster::upload(const std::vector<pointgen::PointDraw>& draws, const st
   instance_indices_ = gl::Buffer();
   gl::store(draws_, gpu_draws);
   gl::store(instances_, instances);
+  instance_texels_ = gl::rgba32f_texels(instances_);
   gl::store(commands_, commands);
   gl::store(instance_indices_, instance_indices);
   glVertexArrayVertexBuffer(vertex_array_.name(), 0, instance_indices_.name(), 0, sizeof(GLuint));
@@ -81,8 +83,8 @@ void PointRaster::begin(const glm::mat4& view_projection, bool indirect) {
   glDisable(GL_PROGRAM_POINT_SIZE);
   glPointSize(1.0f);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draws_binding, draws_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, instances_binding, instances_.name());
-  if (samples_ != nullptr) samples_->bind(positions_binding, normals_binding, colors_binding);
+  glBindTextureUnit(instance_texels_unit, instance_texels_.name());
+  if (samples_ != nullptr) samples_->bind(position_texels_unit, normal_texels_unit, color_texels_unit);
   gl::set_uniform(program_, "view_projection", view_projection);
   gl::set_uniform(program_, "draw_count", static_cast<unsigned>(draw_count_));
   gl::set_uniform(program_, "indirect", indirect ? 1 : 0);

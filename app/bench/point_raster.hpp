@@ -37,6 +37,7 @@ class PointRaster {
   gl::Program program_;
   gl::VertexArray vertex_array_;
   gl::Buffer draws_, instances_, commands_, instance_indices_;
+  gl::Texture instance_texels_{GL_TEXTURE_BUFFER};
   const PointSamples* samples_ = nullptr;
 };
 

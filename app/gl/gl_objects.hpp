@@ -83,8 +83,23 @@ inline std::size_t max_storage_block_bytes() {
   return static_cast<std::size_t>(bytes);
 }
 
+// The texels of one buffer texture this driver holds (GL promises 2^16; llvmpipe 2^27).
+inline std::size_t max_texel_buffer_texels() {
+  GLint64 texels = 0;
+  glGetInteger64v(GL_MAX_TEXTURE_BUFFER_SIZE, &texels);
+  return static_cast<std::size_t>(texels);
+}
+
 using VertexArray = Object<VertexArrayKind>;
 using Texture = Object<TextureKind>;
+
+// `buffer`'s content as RGBA32F texels, for shaders that read it by texelFetch (a buffer texture
+// over its store). Made once a store: attaching again each frame slowed llvmpipe's draws.
+inline Texture rgba32f_texels(const Buffer& buffer) {
+  Texture texels(GL_TEXTURE_BUFFER);
+  glTextureBuffer(texels.name(), GL_RGBA32F, buffer.name());
+  return texels;
+}
 using TextureView = Object<TextureViewKind>;
 using Framebuffer = Object<FramebufferKind>;
 using Program = Object<ProgramKind>;

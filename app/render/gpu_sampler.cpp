@@ -33,7 +33,8 @@ struct GpuTotals {
 };
 constexpr std::size_t command_uints = GpuScene::command_bytes / sizeof(GLuint);
 
-constexpr GLuint draws_binding = 1, instances_binding = 2, block_draws_binding = 8, plant_meshes_binding = 10,
+constexpr GLuint instance_texels_unit = 8;  // a texture unit (shaders/plant_instances.glsl)
+constexpr GLuint draws_binding = 1, block_draws_binding = 8, plant_meshes_binding = 10,
                  meshes_binding = 11, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
                  polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19, band_list_binding = 20,
                  band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24,
@@ -149,11 +150,14 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   // Room for as many points as every plant's whole list, or as a splat's buffers address (one
   // uvec2 per point where the frame's splat puts it).
   point_capacity_ = std::min(most_points, gl::max_storage_block_bytes() / sizeof(glm::uvec2));
-  if (plant_count_ * sizeof(GpuInstance) > gl::max_storage_block_bytes()) {
+  // A plant's pose is five texels (shaders/plant_instances.glsl); its largest entry in shader
+  // storage a uvec4 (counts_, offsets_, draws_).
+  if (plant_count_ * sizeof(glm::uvec4) > gl::max_storage_block_bytes() || plant_count_ * 5 > gl::max_texel_buffer_texels()) {
     throw RuntimeFailure("the scene's " + std::to_string(plant_count_) + " plants need more than the " +
                          std::to_string(gl::max_storage_block_bytes() >> 20) + " MiB a shader of this driver addresses; use fewer plants");
   }
   gl::store(instances_, instances, GL_DYNAMIC_STORAGE_BIT);  // moving plants are posed each frame
+  instance_texels_ = gl::rgba32f_texels(instances_);
   gl::store(plant_meshes_, plant_meshes);
   gl::store(meshes_, gpu_meshes);
   gl::store(polygon_parts_, polygon_parts);
@@ -188,7 +192,7 @@ void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed)
 
 void GpuSampler::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draws_binding, draws_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, instances_binding, instances_.name());
+  glBindTextureUnit(instance_texels_unit, instance_texels_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, block_draws_binding, block_draws_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, plant_meshes_binding, plant_meshes_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, meshes_binding, meshes_.name());
@@ -356,7 +360,7 @@ void GpuSampler::sample(const pointgen::SamplerView& view) {
 
 GpuScene::PlantDraws GpuSampler::polygon_draws(int first, int end) const {
   const std::size_t tables = table_count_;
-  const GpuScene::PlantDraws draws{instances_.name(), polygon_instances_.name(), commands_.name(), static_cast<std::size_t>(first) * tables,
+  const GpuScene::PlantDraws draws{instance_texels_.name(), polygon_instances_.name(), commands_.name(), static_cast<std::size_t>(first) * tables,
                                    static_cast<std::size_t>(std::max(end - first, 0)) * tables};
   if (draws.command_count == 0) return draws;
   every_band_drawn_->keep_drawn(draws.commands, draws.first_command, draws.command_count, 0);
@@ -365,13 +369,13 @@ GpuScene::PlantDraws GpuSampler::polygon_draws(int first, int end) const {
 
 GpuScene::PlantDraws GpuSampler::frame_polygon_draws(int band) const {
   if (!in_frame(band)) return {};
-  return part_lists_->frame_draws(band, instances_.name());
+  return part_lists_->frame_draws(band, instance_texels_.name());
 }
 
 GpuScene::PlantDraws GpuSampler::select_casters(int layer, const glm::mat4& map_view, int map_size, const DepthPyramid& receivers) {
   if (plant_count_ == 0 || table_count_ == 0) return {};
   bind();
-  return part_lists_->select(layer, map_view, map_size, receivers, instances_.name());
+  return part_lists_->select(layer, map_view, map_size, receivers, instance_texels_.name());
 }
 
 void GpuSampler::cap_for_map(const glm::mat4& map_view, float texels, float points_per_texel) {
@@ -385,7 +389,7 @@ void GpuSampler::cap_for_map(const glm::mat4& map_view, float texels, float poin
 }
 
 PointDrawList GpuSampler::draw_list() const {
-  return {draws_.name(), instances_.name(), block_draws_.name(), totals_.name(), point_capacity_, map_caps_.name()};
+  return {draws_.name(), instance_texels_.name(), block_draws_.name(), totals_.name(), point_capacity_, map_caps_.name()};
 }
 
 

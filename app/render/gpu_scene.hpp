@@ -14,8 +14,8 @@ namespace ecoview {
 // 7–9 normal matrix, 10 colour.
 class GpuScene {
  public:
-  // Plants drawn as polygons (a GpuSampler's): the plants resident on the GPU (a mat4 transform
-  // and a tint each, shaders/instance.glsl), a list of plant indices, and indirect draws over it
+  // Plants drawn as polygons (a GpuSampler's): the plants resident on the GPU as a buffer texture
+  // (shaders/plant_instances.glsl), a list of plant indices, and indirect draws over it
   // (DrawElementsIndirectCommand, base instance: a place in the list), at most command_count of
   // them: as many as draw_counts holds at count_slot, in uints (DrawnCommands::keep_drawn).
   struct PlantDraws {

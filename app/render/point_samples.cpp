@@ -63,20 +63,23 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle, bool p
     }
     meshes_.push_back(std::move(info));
   }
-  if (const std::size_t limit = gl::max_storage_block_bytes(); positions.size() * sizeof(glm::vec4) > limit) {
-    throw RuntimeFailure("the scene's point samples need " + std::to_string((positions.size() * sizeof(glm::vec4)) >> 20) +
-                         " MiB in one buffer, more than this driver's shaders address (" + std::to_string(limit >> 20) +
-                         " MiB); use --geometry polygons");
+  if (const std::size_t limit = gl::max_texel_buffer_texels(); positions.size() > limit) {
+    throw RuntimeFailure("the scene's point samples are " + std::to_string(positions.size()) +
+                         ", more than the texels of one of this driver's buffer textures (" + std::to_string(limit) +
+                         "); use --geometry polygons");
   }
   gl::store(positions_, positions);
   gl::store(normals_, normals);
   gl::store(colors_, colors);
+  position_texels_ = gl::rgba32f_texels(positions_);
+  normal_texels_ = gl::rgba32f_texels(normals_);
+  color_texels_ = gl::rgba32f_texels(colors_);
 }
 
 void PointSamples::bind(GLuint positions, GLuint normals, GLuint colors) const {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, positions, positions_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, normals, normals_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, colors, colors_.name());
+  glBindTextureUnit(positions, position_texels_.name());
+  glBindTextureUnit(normals, normal_texels_.name());
+  glBindTextureUnit(colors, color_texels_.name());
 }
 
 }  // namespace ecoview

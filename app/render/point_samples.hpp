@@ -19,12 +19,14 @@ class PointSamples {
 
   const std::vector<pointgen::SampledMesh>& meshes() const { return meshes_; }
   std::uint32_t first_sample(std::size_t mesh) const { return first_[mesh]; }
-  void bind(GLuint positions, GLuint normals, GLuint colors) const;  // shader storage binding points
+  // Binds the lists as RGBA32F buffer textures to these texture units.
+  void bind(GLuint positions, GLuint normals, GLuint colors) const;
 
  private:
   std::vector<pointgen::SampledMesh> meshes_;
   std::vector<std::uint32_t> first_;
   gl::Buffer positions_, normals_, colors_;
+  gl::Texture position_texels_{GL_TEXTURE_BUFFER}, normal_texels_{GL_TEXTURE_BUFFER}, color_texels_{GL_TEXTURE_BUFFER};
 };
 
 }  // namespace ecoview

@@ -13,8 +13,8 @@ struct GpuInstance {
   glm::vec4 tint;
 };
 
-constexpr GLuint draws_binding = 1, instances_binding = 2, positions_binding = 3, normals_binding = 4,
-                 colors_binding = 5, depths_binding = 6, winners_binding = 7, block_draws_binding = 8,
+constexpr GLuint instance_texels_unit = 8, position_texels_unit = 9, normal_texels_unit = 10, color_texels_unit = 11;  // texture units
+constexpr GLuint draws_binding = 1, depths_binding = 6, winners_binding = 7, block_draws_binding = 8,
                  projected_binding = 9, totals_binding = 15, dispatch_binding = 16, points_drawn_binding = 30,
                  map_caps_binding = 35, coverage_binding = 36, centre_depths_binding = 37, centre_winners_binding = 38;
 constexpr int coverage_margin = 8;  // point_common.glsl
@@ -25,10 +25,10 @@ constexpr std::uint64_t points_per_block = 16;   // point_common.glsl
 constexpr std::uint64_t max_points = 0xFFFFFFFFu - points_per_thread;
 
 // Makes room for `count` elements of T, with new storage (its content lost) when it is too small,
-// and no more than the shaders can address.
+// and no more than the shaders can address. Whether it made new storage.
 template <class T>
-void reserve(gl::Buffer& buffer, std::size_t& capacity, std::size_t count) {
-  if (count <= capacity) return;
+bool reserve(gl::Buffer& buffer, std::size_t& capacity, std::size_t count) {
+  if (count <= capacity) return false;
   const std::size_t limit = gl::max_storage_block_bytes() / sizeof(T);
   if (count > limit) {
     throw RuntimeFailure("a frame's points need " + std::to_string((count * sizeof(T)) >> 20) + " MiB in one buffer, more than "
@@ -37,13 +37,15 @@ void reserve(gl::Buffer& buffer, std::size_t& capacity, std::size_t count) {
   buffer = gl::Buffer();
   capacity = std::min(std::max<std::size_t>(count * 3 / 2, 64), limit);
   glNamedBufferStorage(buffer.name(), static_cast<GLsizeiptr>(capacity * sizeof(T)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  return true;
 }
 
-// Replaces a buffer's content, growing its storage when it is too small.
+// Replaces a buffer's content, growing its storage when it is too small; whether it made new storage.
 template <class T>
-void fill(gl::Buffer& buffer, std::size_t& capacity, const std::vector<T>& data) {
-  reserve<T>(buffer, capacity, data.size());
+bool fill(gl::Buffer& buffer, std::size_t& capacity, const std::vector<T>& data) {
+  const bool grown = reserve<T>(buffer, capacity, data.size());
   if (!data.empty()) glNamedBufferSubData(buffer.name(), 0, static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data());
+  return grown;
 }
 
 // Before the buffers are overwritten. GL orders that after earlier passes that read them, but on
@@ -103,11 +105,11 @@ void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std
     while (block_draws.size() * points_per_block < first_point) block_draws.push_back(draw);
   }
   fill(draws_, draws_capacity_, gpu_draws);
-  fill(instances_, instances_capacity_, instances);
+  if (fill(instances_, instances_capacity_, instances)) instance_texels_ = gl::rgba32f_texels(instances_);
   fill(block_draws_, block_draws_capacity_, block_draws);
   const GLuint totals[4] = {static_cast<GLuint>(first_point), static_cast<GLuint>(draws.size()), 0, static_cast<GLuint>(first_point)};
   glNamedBufferSubData(totals_.name(), 0, sizeof totals, totals);
-  use({draws_.name(), instances_.name(), block_draws_.name(), totals_.name(), static_cast<std::size_t>(first_point)}, samples);
+  use({draws_.name(), instance_texels_.name(), block_draws_.name(), totals_.name(), static_cast<std::size_t>(first_point)}, samples);
 }
 
 void PointSplat::use(const PointDrawList& list, const PointSamples& samples) {
@@ -125,7 +127,7 @@ std::size_t PointSplat::points_drawn_onto() const {
 
 void PointSplat::bind_for(const gl::Program& program) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draws_binding, list_.draws);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, instances_binding, list_.instances);
+  glBindTextureUnit(instance_texels_unit, list_.instance_texels);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, block_draws_binding, list_.block_draws);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, totals_binding, list_.totals);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, depths_binding, depths_.name());
@@ -134,7 +136,7 @@ void PointSplat::bind_for(const gl::Program& program) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, centre_depths_binding, centre_depths_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, centre_winners_binding, centre_winners_.name());
   if (projected_capacity_ > 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, projected_binding, projected_.name());
-  if (samples_ != nullptr) samples_->bind(positions_binding, normals_binding, colors_binding);
+  if (samples_ != nullptr) samples_->bind(position_texels_unit, normal_texels_unit, color_texels_unit);
   gl::set_uniform(program, "target_size", size_);
   gl::set_uniform(program, "splat_size", frame_splat_size_);
 }
@@ -200,8 +202,6 @@ void PointSplat::resolve(const glm::mat4& view_projection, int splat_size, float
   dispatch(resolve_program_, view_projection, splat_size, depth_bias, glm::vec2(0.0f), Points::frame);
 }
 
-// The layer's depths go into the depth buffer and back, copied by GL from and to a pixel buffer:
-// on llvmpipe a fullscreen pass writing each texel's depth took 80-140 ms a 4096² layer.
 void PointSplat::splat_onto(GLuint depth_texture, int layer, const glm::mat4& view_projection, int splat_size,
                             float depth_bias, glm::vec2 paraboloid) {
   if (list_.most_points == 0) return;

@@ -10,11 +10,11 @@ namespace ecoview {
 
 // A frame's point draws in GL buffers, wherever they were made (PointSplat::upload on the CPU,
 // GpuSampler on the GPU): per draw (first point, count, first sample, instance), the instances
-// (model matrix, tint), per block of 16 points the draw holding its first point, and the totals
-// (points, draws, where the band last added begins) as three uints, so that a list made on the GPU
-// is drawn without a read-back.
+// (model matrix, tint) as a buffer texture (shaders/plant_instances.glsl), per block of 16 points
+// the draw holding its first point, and the totals (points, draws, where the band last added
+// begins) as three uints, so that a list made on the GPU is drawn without a read-back.
 struct PointDrawList {
-  GLuint draws = 0, instances = 0, block_draws = 0, totals = 0;
+  GLuint draws = 0, instance_texels = 0, block_draws = 0, totals = 0;
   std::size_t most_points = 0;  // the most points the list may hold
   // A GpuSampler's list: per draw the most points a shadow map takes of it (GpuSampler::cap_for_map).
   // None for others.
@@ -74,6 +74,7 @@ class PointSplat {
   glm::ivec2 size_;
   PointDrawList list_;  // the one drawn: uploaded_ or another's
   gl::Buffer draws_, instances_, block_draws_, totals_, depths_, winners_, projected_, dispatch_, points_drawn_onto_;
+  gl::Texture instance_texels_{GL_TEXTURE_BUFFER};  // over instances_, made again with its store
   gl::Buffer coverage_, centre_depths_, centre_winners_;  // point_common.glsl
   std::size_t draws_capacity_ = 0, instances_capacity_ = 0, block_draws_capacity_ = 0, projected_capacity_ = 0;
   // Which of the list's points a pass takes: the frame's, those of the band last added, or every
