@@ -255,5 +255,36 @@ TEST_F(SplatPaths, MeasuresEveryPathOnTheSamePoints) {
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
+// The point-cost sweep: the same view at growing k and break-even draws more points each time, and
+// its fit is the least-squares line through the runs' (points, ms), computed here.
+TEST_F(SplatPaths, MeasuresAPointsCostOnGrowingListsOfTheSameView) {
+  RenderSettings settings;
+  settings.width = width;
+  settings.height = height;
+  settings.k = 1.5f;
+  const std::vector<BenchRun> runs = measure_point_cost(scene, "spheres", settings, 0, 1);
+  ASSERT_EQ(runs.size(), std::size(point_cost_scales) + 1);
+  double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (std::size_t i = 0; i + 1 < runs.size(); ++i) {
+    EXPECT_EQ(runs[i].params["sweep"], "point_cost");
+    EXPECT_EQ(runs[i].params["scale"], point_cost_scales[i]);
+    const auto points = runs[i].figures["points"].get<double>(), ms = runs[i].figures["ms"].get<double>();
+    if (i > 0) {
+      EXPECT_GT(points, runs[i - 1].figures["points"].get<double>()) << "scale " << point_cost_scales[i];
+    }
+    n += 1.0;
+    sx += points;
+    sy += ms;
+    sxx += points * points;
+    sxy += points * ms;
+  }
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const nlohmann::json& fit = runs.back().figures;
+  EXPECT_EQ(runs.back().params["scale"], "fit");
+  EXPECT_NEAR(fit["ns_per_point"].get<double>(), slope * 1e6, 1e-9 * std::abs(slope * 1e6) + 1e-12);
+  EXPECT_NEAR(fit["fixed_ms"].get<double>(), (sy - slope * sx) / n, 1e-9 * std::abs(sy / n) + 1e-12);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 }  // namespace
 }  // namespace ecoview

@@ -195,9 +195,11 @@ class DensityBench {
     progress.step();
   }
 
-  // Splat paths: the same points as one GL_POINTS draw, indirect draws and compute splats.
+  // Splat paths: the same points as one GL_POINTS draw, indirect draws and compute splats; and a
+  // point's cost in the compute splat, from lists of up to several million points.
   void paths(const Scene& scene, const std::string& scene_name, Progress& progress) {
     for (BenchRun& run : measure_splat_paths(scene, scene_name, base_, plan_.warmup, plan_.frames)) results_.runs.push_back(std::move(run));
+    for (BenchRun& run : measure_point_cost(scene, scene_name, base_, plan_.warmup, plan_.frames)) results_.runs.push_back(std::move(run));
     progress.step();
   }
 

@@ -36,13 +36,72 @@ PathTime time_path(int warmup, int frames, const std::function<void()>& draw) {
   return {median(wall), median(gpu)};
 }
 
+glm::mat4 camera_view_projection(const Scene& scene, glm::ivec2 size) {
+  return scene.camera.projection(static_cast<float>(size.x) / static_cast<float>(size.y)) * scene.camera.view();
+}
+
+// The least-squares line through (x, y): y = intercept + slope x.
+struct Line {
+  double slope = 0.0, intercept = 0.0;
+};
+Line fit_line(const std::vector<double>& x, const std::vector<double>& y) {
+  const auto n = static_cast<double>(x.size());
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    sx += x[i];
+    sy += y[i];
+    sxx += x[i] * x[i];
+    sxy += x[i] * y[i];
+  }
+  const double spread = n * sxx - sx * sx;
+  if (spread <= 0.0) return {};
+  const double slope = (n * sxy - sx * sy) / spread;
+  return {slope, (sy - slope * sx) / n};
+}
+
 }  // namespace
+
+std::vector<BenchRun> measure_point_cost(const Scene& scene, const std::string& scene_name, const RenderSettings& settings,
+                                         int warmup, int frames) {
+  const glm::ivec2 size(settings.width, settings.height);
+  const glm::mat4 view_projection = camera_view_projection(scene, size);
+  const PointSamples samples(scene, settings.points_per_triangle, true);
+  std::vector<BenchRun> runs;
+  std::vector<double> points, ms;
+  for (int scale : point_cost_scales) {
+    // k and the point-or-polygon break-even scaled alike: the same plants, scale times their points
+    // (up to their lists).
+    RenderSettings denser = settings;
+    denser.k *= static_cast<float>(scale);
+    denser.points_per_triangle *= static_cast<float>(scale);
+    const pointgen::SampledFrame selection =
+        pointgen::sample_view(sampler_view(scene.camera, denser, {view_projection}), scene.groups, samples.meshes());
+    PointSplat splat(size);
+    splat.upload(selection.points, scene.groups, samples);
+    std::size_t count = 0;
+    for (const pointgen::PointDraw& d : selection.points) count += d.count;
+    const PathTime t = time_path(warmup, frames, [&] { splat.splat(view_projection, settings.splat_size, 0.0f); });
+    points.push_back(static_cast<double>(count));
+    ms.push_back(t.ms);
+    BenchRun run;
+    run.params = {{"sweep", "point_cost"}, {"scene", scene_name}, {"scale", scale}, {"splat", settings.splat_size},
+                  {"width", size.x}, {"height", size.y}, {"frames", frames}};
+    run.figures = {{"points", count}, {"ms", t.ms}};
+    runs.push_back(run);
+  }
+  const Line line = fit_line(points, ms);
+  BenchRun fit;
+  fit.params = {{"sweep", "point_cost"}, {"scene", scene_name}, {"scale", "fit"}, {"splat", settings.splat_size},
+                {"width", size.x}, {"height", size.y}, {"frames", frames}};
+  fit.figures = {{"ns_per_point", line.slope * 1e6}, {"fixed_ms", line.intercept}};
+  runs.push_back(fit);
+  return runs;
+}
 
 std::vector<BenchRun> measure_splat_paths(const Scene& scene, const std::string& scene_name, const RenderSettings& settings,
                                           int warmup, int frames) {
   const glm::ivec2 size(settings.width, settings.height);
-  const glm::mat4 view_projection =
-      scene.camera.projection(static_cast<float>(size.x) / static_cast<float>(size.y)) * scene.camera.view();
+  const glm::mat4 view_projection = camera_view_projection(scene, size);
   const PointSamples samples(scene, settings.points_per_triangle, true);
   const pointgen::SampledFrame selection =
       pointgen::sample_view(sampler_view(scene.camera, settings, {view_projection}), scene.groups, samples.meshes());

@@ -21,4 +21,14 @@ namespace ecoview {
 std::vector<BenchRun> measure_splat_paths(const Scene& scene, const std::string& scene_name, const RenderSettings& settings,
                                           int warmup, int frames);
 
+// A point's cost in the frame's compute splat (PointSplat passes 1 and 2, the settings' splat
+// size): the same view's points with k and the point-or-polygon break-even at each of
+// point_cost_scales times the settings' (the same plants, up to several million points), timed as
+// above. A run per scale: params {sweep "point_cost", scene, scale, splat, width, height, frames},
+// figures {points, ms}; then one with scale "fit": figures {ns_per_point, fixed_ms}, the slope and
+// intercept of the least-squares line of ms against points.
+inline constexpr int point_cost_scales[] = {1, 2, 3, 4};
+std::vector<BenchRun> measure_point_cost(const Scene& scene, const std::string& scene_name, const RenderSettings& settings,
+                                         int warmup, int frames);
+
 }  // namespace ecoview
