@@ -92,18 +92,18 @@ inline std::size_t max_texel_buffer_texels() {
 
 using VertexArray = Object<VertexArrayKind>;
 using Texture = Object<TextureKind>;
-
-// `buffer`'s content as RGBA32F texels, for shaders that read it by texelFetch (a buffer texture
-// over its store). Made once a store: attaching again each frame slowed llvmpipe's draws.
-inline Texture rgba32f_texels(const Buffer& buffer) {
-  Texture texels(GL_TEXTURE_BUFFER);
-  glTextureBuffer(texels.name(), GL_RGBA32F, buffer.name());
-  return texels;
-}
 using TextureView = Object<TextureViewKind>;
 using Framebuffer = Object<FramebufferKind>;
 using Program = Object<ProgramKind>;
 using Shader = Object<ShaderKind>;
 using Query = Object<QueryKind>;
+
+// `buffer`'s content as RGBA32F texels, for shaders that read it by texelFetch (a buffer texture
+// over its store). Made once a store: attaching it again at every bind slowed llvmpipe's draws.
+inline Texture rgba32f_texels(const Buffer& buffer) {
+  Texture texels(GL_TEXTURE_BUFFER);
+  glTextureBuffer(texels.name(), GL_RGBA32F, buffer.name());
+  return texels;
+}
 
 }  // namespace ecoview::gl

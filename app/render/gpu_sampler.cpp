@@ -153,8 +153,9 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   // A plant's pose is five texels (shaders/plant_instances.glsl); its largest entry in shader
   // storage a uvec4 (counts_, offsets_, draws_).
   if (plant_count_ * sizeof(glm::uvec4) > gl::max_storage_block_bytes() || plant_count_ * 5 > gl::max_texel_buffer_texels()) {
-    throw RuntimeFailure("the scene's " + std::to_string(plant_count_) + " plants need more than the " +
-                         std::to_string(gl::max_storage_block_bytes() >> 20) + " MiB a shader of this driver addresses; use fewer plants");
+    throw RuntimeFailure("the scene's " + std::to_string(plant_count_) + " plants need more than this driver's shaders address (" +
+                         std::to_string(gl::max_storage_block_bytes() >> 20) + " MiB a buffer, " +
+                         std::to_string(gl::max_texel_buffer_texels()) + " texels a buffer texture); use fewer plants");
   }
   gl::store(instances_, instances, GL_DYNAMIC_STORAGE_BIT);  // moving plants are posed each frame
   instance_texels_ = gl::rgba32f_texels(instances_);
