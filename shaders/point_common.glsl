@@ -4,14 +4,7 @@
 // (point_coverage.glsl).
 layout(std430, binding = 1) readonly buffer Draws { uvec4 draws[]; };
 #include "plant_instances.glsl"
-// The surface samples (app/render/point_samples.hpp) as buffer textures, read as the instances
-// are (plant_instances.glsl): position, normal with its list's area as w, colour.
-layout(binding = 9) uniform samplerBuffer positions;
-layout(binding = 10) uniform samplerBuffer normals;
-layout(binding = 11) uniform samplerBuffer colors;
-vec3 sample_position(uint s) { return texelFetch(positions, int(s)).xyz; }
-vec4 sample_normal(uint s) { return texelFetch(normals, int(s)); }
-vec3 sample_color(uint s) { return texelFetch(colors, int(s)).rgb; }
+#include "point_samples.glsl"
 layout(std430, binding = 6) buffer Depths { uint depths[]; };
 layout(std430, binding = 7) buffer Winners { uint winners[]; };
 layout(std430, binding = 36) buffer Coverage { uint coverage[]; };

@@ -7,8 +7,7 @@
 //    and the instance comes from an attribute with divisor 1 (a command's baseInstance).
 layout(std430, binding = 0) readonly buffer Draws { uvec4 draws[]; };
 #include "plant_instances.glsl"
-layout(binding = 9) uniform samplerBuffer positions;  // the surface samples, as point_common.glsl reads them
-layout(binding = 11) uniform samplerBuffer colors;
+#include "point_samples.glsl"
 
 layout(location = 0) in uint instance_attribute;  // indirect draws only
 uniform bool indirect;
@@ -32,6 +31,6 @@ void main() {
     sample_index = draw.z + (sample_index - draw.x);
     instance = draw.w;
   }
-  gl_Position = view_projection * (instance_model(instance) * vec4(texelFetch(positions, int(sample_index)).xyz, 1.0));
-  point_color = texelFetch(colors, int(sample_index)).rgb * instance_tint(instance);
+  gl_Position = view_projection * (instance_model(instance) * vec4(sample_position(sample_index), 1.0));
+  point_color = sample_color(sample_index) * instance_tint(instance);
 }

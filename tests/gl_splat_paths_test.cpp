@@ -4,6 +4,7 @@
 #include "app/bench/splat_paths.hpp"
 #include "app/gl/context.hpp"
 #include "app/gl/gl_objects.hpp"
+#include "app/render/buffer_texture_units.hpp"
 #include "pointgen/primitives.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -83,8 +84,8 @@ std::vector<glm::vec4> texels_at(GLuint unit) {
 // holds its window position, as GL's viewport transform and the compute splat place it.
 Image<float> cpu_splat(const std::vector<pointgen::PointDraw>& draws, const Scene& scene, const PointSamples& samples,
                        const glm::mat4& view_projection) {
-  samples.bind(0, 1, 2);
-  const std::vector<glm::vec4> positions = texels_at(0);
+  samples.bind();
+  const std::vector<glm::vec4> positions = texels_at(position_texels_unit);
   Image<float> image{width, height, 1, std::vector<float>(static_cast<std::size_t>(width) * height, no_point)};
   for (const pointgen::PointDraw& d : draws) {
     const pointgen::InstanceTable& table = scene.groups[d.table];

@@ -2,6 +2,7 @@
 
 #include "app/errors.hpp"
 #include "app/gl/shader_program.hpp"
+#include "app/render/buffer_texture_units.hpp"
 
 #include <numeric>
 
@@ -19,8 +20,6 @@ struct DrawCommand {
 };
 
 constexpr GLuint draws_binding = 0;  // point_raster.vert
-// Texture units, as the compute splat's (shaders/point_common.glsl); normals are not read.
-constexpr GLuint instance_texels_unit = 8, position_texels_unit = 9, normal_texels_unit = 10, color_texels_unit = 11;
 
 }  // namespace
 
@@ -84,7 +83,7 @@ void PointRaster::begin(const glm::mat4& view_projection, bool indirect) {
   glPointSize(1.0f);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draws_binding, draws_.name());
   glBindTextureUnit(instance_texels_unit, instance_texels_.name());
-  if (samples_ != nullptr) samples_->bind(position_texels_unit, normal_texels_unit, color_texels_unit);
+  if (samples_ != nullptr) samples_->bind();
   gl::set_uniform(program_, "view_projection", view_projection);
   gl::set_uniform(program_, "draw_count", static_cast<unsigned>(draw_count_));
   gl::set_uniform(program_, "indirect", indirect ? 1 : 0);

@@ -2,6 +2,7 @@
 
 #include "app/errors.hpp"
 #include "app/gl/shader_program.hpp"
+#include "app/render/buffer_texture_units.hpp"
 #include "pointgen/random.hpp"
 #include "pointgen/sampling/frustum_culling.hpp"
 
@@ -33,7 +34,6 @@ struct GpuTotals {
 };
 constexpr std::size_t command_uints = GpuScene::command_bytes / sizeof(GLuint);
 
-constexpr GLuint instance_texels_unit = 8;  // a texture unit (shaders/plant_instances.glsl)
 constexpr GLuint draws_binding = 1, block_draws_binding = 8, plant_meshes_binding = 10,
                  meshes_binding = 11, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
                  polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19, band_list_binding = 20,

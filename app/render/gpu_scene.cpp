@@ -1,6 +1,7 @@
 #include "app/render/gpu_scene.hpp"
 
 #include "app/errors.hpp"
+#include "app/render/buffer_texture_units.hpp"
 
 #include "pointgen/sampling/mesh_parts.hpp"
 
@@ -29,8 +30,6 @@ std::vector<Instance> instances_of(const pointgen::InstanceTable& table) {
   }
   return instances;
 }
-
-constexpr GLuint resident_plants_unit = 8;  // a texture unit: shaders/plant_instances.glsl
 
 void attribute(GLuint vao, GLuint location, GLuint binding, GLint size, GLuint offset) {
   glEnableVertexArrayAttrib(vao, location);
@@ -125,7 +124,7 @@ void GpuScene::draw_chosen(const PlantDraws& draws, GLenum mode) const {
   if (draws.draw_counts == 0) throw RuntimeFailure("plant draws without their count (DrawnCommands::keep_drawn)");
   glVertexArrayVertexBuffer(chosen_->vertex_array.name(), 1, draws.plant_indices, 0, sizeof(GLuint));
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws.commands);
-  glBindTextureUnit(resident_plants_unit, draws.plants);
+  glBindTextureUnit(instance_texels_unit, draws.plants);
   glBindBuffer(GL_PARAMETER_BUFFER_ARB, draws.draw_counts);
   glBindVertexArray(chosen_->vertex_array.name());
   glMultiDrawElementsIndirectCountARB(mode, GL_UNSIGNED_INT, reinterpret_cast<const void*>(draws.first_command * GpuScene::command_bytes),

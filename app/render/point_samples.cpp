@@ -1,5 +1,7 @@
 #include "app/render/point_samples.hpp"
 
+#include "app/render/buffer_texture_units.hpp"
+
 #include "app/errors.hpp"
 
 #include "pointgen/random.hpp"
@@ -76,10 +78,10 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle, bool p
   color_texels_ = gl::rgba32f_texels(colors_);
 }
 
-void PointSamples::bind(GLuint positions, GLuint normals, GLuint colors) const {
-  glBindTextureUnit(positions, position_texels_.name());
-  glBindTextureUnit(normals, normal_texels_.name());
-  glBindTextureUnit(colors, color_texels_.name());
+void PointSamples::bind() const {
+  glBindTextureUnit(position_texels_unit, position_texels_.name());
+  glBindTextureUnit(normal_texels_unit, normal_texels_.name());
+  glBindTextureUnit(color_texels_unit, color_texels_.name());
 }
 
 }  // namespace ecoview

@@ -19,8 +19,8 @@ class PointSamples {
 
   const std::vector<pointgen::SampledMesh>& meshes() const { return meshes_; }
   std::uint32_t first_sample(std::size_t mesh) const { return first_[mesh]; }
-  // Binds the lists as RGBA32F buffer textures to these texture units.
-  void bind(GLuint positions, GLuint normals, GLuint colors) const;
+  // Binds the lists as RGBA32F buffer textures to their texture units (buffer_texture_units.hpp).
+  void bind() const;
 
  private:
   std::vector<pointgen::SampledMesh> meshes_;

@@ -2,6 +2,7 @@
 
 #include "app/errors.hpp"
 #include "app/gl/shader_program.hpp"
+#include "app/render/buffer_texture_units.hpp"
 
 #include <algorithm>
 
@@ -13,7 +14,6 @@ struct GpuInstance {
   glm::vec4 tint;
 };
 
-constexpr GLuint instance_texels_unit = 8, position_texels_unit = 9, normal_texels_unit = 10, color_texels_unit = 11;  // texture units
 constexpr GLuint draws_binding = 1, depths_binding = 6, winners_binding = 7, block_draws_binding = 8,
                  projected_binding = 9, totals_binding = 15, dispatch_binding = 16, points_drawn_binding = 30,
                  map_caps_binding = 35, coverage_binding = 36, centre_depths_binding = 37, centre_winners_binding = 38;
@@ -136,7 +136,7 @@ void PointSplat::bind_for(const gl::Program& program) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, centre_depths_binding, centre_depths_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, centre_winners_binding, centre_winners_.name());
   if (projected_capacity_ > 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, projected_binding, projected_.name());
-  if (samples_ != nullptr) samples_->bind(position_texels_unit, normal_texels_unit, color_texels_unit);
+  if (samples_ != nullptr) samples_->bind();
   gl::set_uniform(program, "target_size", size_);
   gl::set_uniform(program, "splat_size", frame_splat_size_);
 }
