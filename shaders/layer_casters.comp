@@ -92,7 +92,7 @@ void main() {
   uint plant = polygon_instances[slot];
   if (counts[plant].z == 0u) return;  // the map draws it as points (sample_bins.comp, HIDDEN_KEYS)
   mat4 model = instance_model(plant);
-  SampledMesh mesh = meshes[plant_meshes[plant].x];
+  SampledMesh mesh = plant_mesh(plant);
   if (shadows_nothing(map_view_projection, model, mesh)) return;
   uint first_list = table_of(plant) * lanes;
   uvec2 casting = parts_kept(map_view_projection, pixels, model, mesh, true, false);

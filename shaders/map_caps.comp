@@ -23,9 +23,9 @@ void main() {
     return;
   }
   mat4 model = instance_model(draw.w);
-  SampledMesh mesh = meshes[plant_meshes[draw.w].x];
+  SampledMesh mesh = plant_mesh(draw.w);
   vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
   float scale = model_scale(model);
   float asked = points_a_map_asks(map_view_projection, map_texels, k, center, mesh.half_size_area.w * scale * scale);
-  map_caps[d] = min(draw.y, uint(floor(asked + uintBitsToFloat(plant_meshes[draw.w].y))));
+  map_caps[d] = min(draw.y, uint(floor(asked + plant_rounding(draw.w))));
 }

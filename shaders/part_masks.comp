@@ -26,6 +26,6 @@ void main() {
   uint slot = band_polygons().x + group_number();
   if (slot >= polygon_count) return;
   uint i = polygon_instances[slot];
-  uvec2 kept = parts_kept(view_projection, pixels, instance_model(i), meshes[plant_meshes[i].x], false, occlusion);
+  uvec2 kept = parts_kept(view_projection, pixels, instance_model(i), plant_mesh(i), false, occlusion);
   if (gl_LocalInvocationID.x == 0u) part_masks[slot] = kept;
 }

@@ -51,7 +51,7 @@ float pixels_in(vec3 lo, vec3 hi, vec2 pixels) {
 uvec2 lane_indices(uint table, uint lane) {
   uvec4 plants = tables[2u * table], mesh_draw = tables[2u * table + 1u];
   if (lane == whole_lane) return mesh_draw.xy;
-  uvec4 parts = meshes[plant_meshes[plants.x].x].polygon_parts;
+  uvec4 parts = plant_mesh(plants.x).polygon_parts;
   if (lane >= parts.y) return uvec2(0u, mesh_draw.y);
   uvec4 part = polygon_parts[parts.x + lane].indices;
   return uvec2(part.y, mesh_draw.y + part.x);

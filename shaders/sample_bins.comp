@@ -39,7 +39,7 @@ uniform bool projective_map;  // a paraboloid map draws every polygon plant: non
 
 bool map_takes_points(uint i) {
   mat4 model = instance_model(i);
-  SampledMesh mesh = meshes[plant_meshes[i].x];
+  SampledMesh mesh = plant_mesh(i);
   vec3 center = (model * vec4(mesh.center_radius.xyz, 1.0)).xyz;
   float scale = model_scale(model);
   float asked = points_a_map_asks(map_view_projection, map_texels, k, center, mesh.half_size_area.w * scale * scale);
@@ -91,7 +91,7 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= plant_count) return;
   mat4 model = instance_model(i);
-  vec4 bounds = meshes[plant_meshes[i].x].center_radius;
+  vec4 bounds = plant_mesh(i).center_radius;
   vec3 center = (model * vec4(bounds.xyz, 1.0)).xyz;
   if (!in_view(center, bounds.w * model_scale(model))) return;
   float from_eye = length(eye - center);
@@ -102,7 +102,7 @@ void main() {
     float start = band > 0u ? ladder_ends[band - 1u] : 0.0;
     quarter = min(uint(4.0 * (from_eye - start) / (ladder_ends[band] - start)), 3u);
   }
-  SampledMesh mesh = meshes[plant_meshes[i].x];
+  SampledMesh mesh = plant_mesh(i);
   float needed = points_needed(model, mesh, eye, forward, edge_cos, pixels_per_radian, k);
   uint weight = as_polygons(needed, mesh, points_per_triangle) ? max(mesh.sizes.x / triangles_a_plant, 1u) : 1u;
   atomicAdd(quarter_counts[4u * band + quarter], weight);
@@ -112,7 +112,7 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= plant_count) return;
   mat4 model = instance_model(i);
-  vec4 bounds = meshes[plant_meshes[i].x].center_radius;
+  vec4 bounds = plant_mesh(i).center_radius;
   vec3 center = (model * vec4(bounds.xyz, 1.0)).xyz;
   float radius = bounds.w * model_scale(model);
   uint key = no_band;

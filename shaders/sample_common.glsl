@@ -9,8 +9,24 @@ struct SampledMesh {
   uvec4 polygon_parts;   // its first polygon part among all meshes', their number (none: drawn whole), 0, 0
 };
 #include "plant_instances.glsl"
-layout(std430, binding = 10) readonly buffer PlantMeshes { uvec2 plant_meshes[]; };  // mesh, rounding's float bits
-layout(std430, binding = 11) readonly buffer SampledMeshes { SampledMesh meshes[]; };
+// The meshes, seven RGBA32UI texels each (SampledMesh's fields in order, floats as their bits), and
+// per plant its mesh and the threshold its count is rounded at (the float's bits), one RG32UI
+// texel: buffer textures, read as the poses are (plant_instances.glsl) and for the same reason.
+layout(binding = 12) uniform usamplerBuffer mesh_texels;
+layout(binding = 13) uniform usamplerBuffer plant_mesh_texels;
+
+SampledMesh sampled_mesh(uint m) {
+  int first = int(m) * 7;
+  SampledMesh mesh;
+  mesh.center_radius = uintBitsToFloat(texelFetch(mesh_texels, first));
+  mesh.half_size_area = uintBitsToFloat(texelFetch(mesh_texels, first + 1));
+  for (int c = 0; c < 3; ++c) mesh.moments[c] = uintBitsToFloat(texelFetch(mesh_texels, first + 2 + c));
+  mesh.sizes = texelFetch(mesh_texels, first + 5);
+  mesh.polygon_parts = texelFetch(mesh_texels, first + 6);
+  return mesh;
+}
+SampledMesh plant_mesh(uint i) { return sampled_mesh(texelFetch(plant_mesh_texels, int(i)).x); }
+float plant_rounding(uint i) { return uintBitsToFloat(texelFetch(plant_mesh_texels, int(i)).y); }
 // Per plant, once counted: (points, the number of its band from 1, 1 when drawn as polygons,
 // hidden_in_frame where its box is behind what nearer bands drew, else 0); zero before.
 layout(std430, binding = 12) buffer Counts { uvec4 counts[]; };

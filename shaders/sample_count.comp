@@ -32,7 +32,7 @@ uniform float points_per_triangle;
 // (points, 1 when drawn as polygons, hidden_in_frame when hidden) of plant i.
 uvec3 count_plant(uint i) {
   mat4 model = instance_model(i);
-  SampledMesh mesh = meshes[plant_meshes[i].x];
+  SampledMesh mesh = plant_mesh(i);
   // Off screen or behind what nearer bands drew over all of its bounds box's rectangle.
   vec3 lo, hi;
   bool before_eye = occlusion && box_rect(view_projection, model, mesh, lo, hi);
@@ -48,7 +48,7 @@ uvec3 count_plant(uint i) {
   float ratio = triangles_ratio(needed, mesh, points_per_triangle);
   bool polygons = as_polygons(needed, mesh, points_per_triangle);
   float drawn = (polygons ? clamp((band_high - ratio) / (band_high - band_low), 0.0, 1.0) : 1.0) * needed;
-  uint points = uint(min(floor(drawn + uintBitsToFloat(plant_meshes[i].y)), samples));
+  uint points = uint(min(floor(drawn + plant_rounding(i)), samples));
   bool as_points = ratio < band_high && mesh.sizes.y > 0u;
   // What the frame draws of it may change the pyramid's tiles under its rectangle (all where its
   // box reaches behind the eye): a 16-pixel splat reaches 8 pixels past its point, level 0 one

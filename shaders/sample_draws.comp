@@ -21,7 +21,7 @@ void main() {
   if (c.x == 0u && c.z == 0u) return;
   uvec4 at = offsets[place] + group_sums[place / plants_per_group];
   if (c.x > 0u) {
-    draws[at.y] = uvec4(at.x, c.x, meshes[plant_meshes[i].x].sizes.z, i);
+    draws[at.y] = uvec4(at.x, c.x, plant_mesh(i).sizes.z, i);
     for (uint b = (at.x + points_per_block - 1u) / points_per_block; b * points_per_block < at.x + c.x && b < block_capacity; ++b) {
       block_draws[b] = at.y;
     }

@@ -62,7 +62,7 @@ void PointRaster::upload(const std::vector<pointgen::PointDraw>& draws, const st
   instance_indices_ = gl::Buffer();
   gl::store(draws_, gpu_draws);
   gl::store(instances_, instances);
-  instance_texels_ = gl::rgba32f_texels(instances_);
+  instance_texels_ = gl::buffer_texels(instances_);
   gl::store(commands_, commands);
   gl::store(instance_indices_, instance_indices);
   glVertexArrayVertexBuffer(vertex_array_.name(), 0, instance_indices_.name(), 0, sizeof(GLuint));

@@ -98,11 +98,11 @@ using Program = Object<ProgramKind>;
 using Shader = Object<ShaderKind>;
 using Query = Object<QueryKind>;
 
-// `buffer`'s content as RGBA32F texels, for shaders that read it by texelFetch (a buffer texture
+// `buffer`'s content as texels of `format`, for shaders that read it by texelFetch (a buffer texture
 // over its store). Made once a store: attaching it again at every bind slowed llvmpipe's draws.
-inline Texture rgba32f_texels(const Buffer& buffer) {
+inline Texture buffer_texels(const Buffer& buffer, GLenum format = GL_RGBA32F) {
   Texture texels(GL_TEXTURE_BUFFER);
-  glTextureBuffer(texels.name(), GL_RGBA32F, buffer.name());
+  glTextureBuffer(texels.name(), format, buffer.name());
   return texels;
 }
 

@@ -3,8 +3,9 @@
 
 namespace ecoview {
 
-// The texture units of the buffer textures the shaders read plants and point samples from
-// (shaders/plant_instances.glsl, shaders/point_samples.glsl).
-inline constexpr GLuint instance_texels_unit = 8, position_texels_unit = 9, normal_texels_unit = 10, color_texels_unit = 11;
+// The texture units of the buffer textures the shaders read plants, point samples and the sampled
+// meshes from (shaders/plant_instances.glsl, shaders/point_samples.glsl, shaders/sample_common.glsl).
+inline constexpr GLuint instance_texels_unit = 8, position_texels_unit = 9, normal_texels_unit = 10, color_texels_unit = 11,
+                        mesh_texels_unit = 12, plant_mesh_texels_unit = 13;
 
 }  // namespace ecoview

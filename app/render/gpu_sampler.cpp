@@ -12,7 +12,7 @@
 namespace ecoview {
 namespace {
 
-// As shaders/sample_common.glsl and sample_draws.comp declare them.
+// As shaders/sample_common.glsl and sample_draws.comp read them.
 struct GpuInstance {
   glm::mat4 model;
   glm::vec4 tint;
@@ -34,8 +34,7 @@ struct GpuTotals {
 };
 constexpr std::size_t command_uints = GpuScene::command_bytes / sizeof(GLuint);
 
-constexpr GLuint draws_binding = 1, block_draws_binding = 8, plant_meshes_binding = 10,
-                 meshes_binding = 11, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
+constexpr GLuint draws_binding = 1, block_draws_binding = 8, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
                  polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19, band_list_binding = 20,
                  band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24,
                  polygon_parts_binding = 25, band_ends_binding = 34, map_caps_binding = 35;
@@ -158,9 +157,11 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
                          std::to_string(gl::max_texel_buffer_texels()) + " texels a buffer texture); use fewer plants");
   }
   gl::store(instances_, instances, GL_DYNAMIC_STORAGE_BIT);  // moving plants are posed each frame
-  instance_texels_ = gl::rgba32f_texels(instances_);
+  instance_texels_ = gl::buffer_texels(instances_);
   gl::store(plant_meshes_, plant_meshes);
+  plant_mesh_texels_ = gl::buffer_texels(plant_meshes_, GL_RG32UI);
   gl::store(meshes_, gpu_meshes);
+  mesh_texels_ = gl::buffer_texels(meshes_, GL_RGBA32UI);
   gl::store(polygon_parts_, polygon_parts);
   gl::store(tables_, table_ranges);
   storage<glm::uvec4>(counts_, plant_count_);
@@ -195,8 +196,8 @@ void GpuSampler::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draws_binding, draws_.name());
   glBindTextureUnit(instance_texels_unit, instance_texels_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, block_draws_binding, block_draws_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, plant_meshes_binding, plant_meshes_.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, meshes_binding, meshes_.name());
+  glBindTextureUnit(plant_mesh_texels_unit, plant_mesh_texels_.name());
+  glBindTextureUnit(mesh_texels_unit, mesh_texels_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, counts_binding, counts_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, offsets_binding, offsets_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, group_sums_binding, group_sums_.name());

@@ -135,6 +135,7 @@ class GpuSampler {
   gl::Buffer instances_, plant_meshes_, meshes_, counts_, offsets_, group_sums_, draws_, block_draws_, totals_;
   gl::Buffer polygon_instances_, tables_, commands_;
   gl::Texture instance_texels_{GL_TEXTURE_BUFFER};  // instances_ for the compute passes
+  gl::Texture plant_mesh_texels_{GL_TEXTURE_BUFFER}, mesh_texels_{GL_TEXTURE_BUFFER};  // plant_meshes_, meshes_
   gl::Buffer band_keys_, group_bands_, band_list_, band_ranges_, band_dispatch_, band_ends_;
   gl::Program histogram_program_, band_ends_program_, keys_program_, hidden_keys_program_, bin_count_program_, bands_program_, place_program_;
   gl::Program count_program_, groups_program_, draws_program_, commands_program_;

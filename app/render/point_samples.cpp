@@ -73,9 +73,9 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle, bool p
   gl::store(positions_, positions);
   gl::store(normals_, normals);
   gl::store(colors_, colors);
-  position_texels_ = gl::rgba32f_texels(positions_);
-  normal_texels_ = gl::rgba32f_texels(normals_);
-  color_texels_ = gl::rgba32f_texels(colors_);
+  position_texels_ = gl::buffer_texels(positions_);
+  normal_texels_ = gl::buffer_texels(normals_);
+  color_texels_ = gl::buffer_texels(colors_);
 }
 
 void PointSamples::bind() const {

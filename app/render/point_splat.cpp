@@ -105,7 +105,7 @@ void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std
     while (block_draws.size() * points_per_block < first_point) block_draws.push_back(draw);
   }
   fill(draws_, draws_capacity_, gpu_draws);
-  if (fill(instances_, instances_capacity_, instances)) instance_texels_ = gl::rgba32f_texels(instances_);
+  if (fill(instances_, instances_capacity_, instances)) instance_texels_ = gl::buffer_texels(instances_);
   fill(block_draws_, block_draws_capacity_, block_draws);
   const GLuint totals[4] = {static_cast<GLuint>(first_point), static_cast<GLuint>(draws.size()), 0, static_cast<GLuint>(first_point)};
   glNamedBufferSubData(totals_.name(), 0, sizeof totals, totals);
