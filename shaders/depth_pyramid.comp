@@ -23,7 +23,7 @@ float nearest_at(ivec2 pixel) {
 }
 
 void store(int level, ivec2 texel, float depth) {
-  if (all(lessThan(texel, pyramid_size[level]))) pyramid[pyramid_offset[level] + uint(texel.y * pyramid_size[level].x + texel.x)] = depth;
+  if (all(lessThan(texel, pyramid_size[level]))) pyramid[pyramid_index(level, texel)] = depth;
 }
 
 // A work group per changed tile (changed_list), its 32 × 32 pixels and a pixel around them read
@@ -86,6 +86,6 @@ void main() {
       if (all(lessThan(child, below))) farthest = max(farthest, pyramid_at(level - 1, child));
     }
   }
-  pyramid[pyramid_offset[level] + uint(texel.y * pyramid_size[level].x + texel.x)] = farthest;
+  pyramid[pyramid_index(level, texel)] = farthest;
 }
 #endif

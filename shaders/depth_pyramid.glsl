@@ -1,18 +1,20 @@
 // A farthest-depth pyramid over the frame (app/render/depth_pyramid.hpp): window depths, level 0
 // per pixel (the nearest within a pixel of it), each level above the farthest of the 2 × 2 below;
 // levels packed one after another.
-#ifdef PYRAMID_WRITTEN
-layout(std430, binding = 17) buffer Pyramid { float pyramid[]; };
-#else
-layout(std430, binding = 17) readonly buffer Pyramid { float pyramid[]; };
-#endif
 uniform uint pyramid_offset[16];
 uniform ivec2 pyramid_size[16];
 uniform int pyramid_levels;
 
-float pyramid_at(int level, ivec2 texel) {
-  return pyramid[pyramid_offset[level] + uint(texel.y * pyramid_size[level].x + texel.x)];
-}
+uint pyramid_index(int level, ivec2 texel) { return pyramid_offset[level] + uint(texel.y * pyramid_size[level].x + texel.x); }
+#ifdef PYRAMID_WRITTEN
+layout(std430, binding = 17) buffer Pyramid { float pyramid[]; };
+float pyramid_at(int level, ivec2 texel) { return pyramid[pyramid_index(level, texel)]; }
+#else
+// Its readers fetch it as R32F texels of a buffer texture over the same store: llvmpipe loads
+// shader storage lane by lane (plant_instances.glsl), and a hidden plant's test reads up to 256.
+layout(binding = 14) uniform samplerBuffer pyramid_texels;
+float pyramid_at(int level, ivec2 texel) { return texelFetch(pyramid_texels, int(pyramid_index(level, texel))).r; }
+#endif
 
 // Whether every depth drawn over the pixels from `lo` to `hi` (inclusive, level 0's) lies nearer
 // than `depth` (with `or_at`, or at it): read at the lowest level where they span at most 16 × 16

@@ -16,7 +16,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #ifdef CLEAR
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  if (all(lessThan(texel, pyramid_size[0]))) pyramid[pyramid_offset[0] + uint(texel.y * pyramid_size[0].x + texel.x)] = 0.0;
+  if (all(lessThan(texel, pyramid_size[0]))) pyramid[pyramid_index(0, texel)] = 0.0;
 }
 #else
 layout(std430, binding = 25) readonly buffer FrameDepths { float frame_depths[]; };  // the frame's level 0

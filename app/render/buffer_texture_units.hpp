@@ -3,9 +3,10 @@
 
 namespace ecoview {
 
-// The texture units of the buffer textures the shaders read plants, point samples and the sampled
-// meshes from (shaders/plant_instances.glsl, shaders/point_samples.glsl, shaders/sample_common.glsl).
+// The texture units of the buffer textures the shaders read plants, point samples, the sampled
+// meshes and depth pyramids from (shaders/plant_instances.glsl, shaders/point_samples.glsl,
+// shaders/sample_common.glsl, shaders/depth_pyramid.glsl).
 inline constexpr GLuint instance_texels_unit = 8, position_texels_unit = 9, normal_texels_unit = 10, color_texels_unit = 11,
-                        mesh_texels_unit = 12, plant_mesh_texels_unit = 13;
+                        mesh_texels_unit = 12, plant_mesh_texels_unit = 13, pyramid_texels_unit = 14;
 
 }  // namespace ecoview

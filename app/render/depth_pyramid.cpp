@@ -2,6 +2,7 @@
 
 #include "app/errors.hpp"
 #include "app/gl/shader_program.hpp"
+#include "app/render/buffer_texture_units.hpp"
 
 #include <algorithm>
 #include <string>
@@ -40,6 +41,7 @@ DepthPyramid::DepthPyramid(glm::ivec2 size)
     if (s.x == 1 && s.y == 1) break;
   }
   glNamedBufferStorage(depths_.name(), static_cast<GLsizeiptr>(total * sizeof(float)), nullptr, 0);
+  depth_texels_ = gl::buffer_texels(depths_, GL_R32F);
   const glm::ivec2 tiles = tile_counts();
   const auto tile_count = static_cast<std::size_t>(tiles.x) * static_cast<std::size_t>(tiles.y);
   gl::store(changed_tiles_, std::vector<GLuint>(tile_count, 0u));
@@ -135,11 +137,11 @@ void DepthPyramid::reduce(const gl::Buffer& passes, std::size_t first_level) con
     gl::set_uniform(reduce_program_, "level", static_cast<int>(level));
     dispatch(passes, level);
   }
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);  // its readers fetch texels
 }
 
 void DepthPyramid::bind_for(const gl::Program& program) const {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, pyramid_binding, depths_.name());
+  glBindTextureUnit(pyramid_texels_unit, depth_texels_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, changed_tiles_binding, changed_tiles_.name());
   set_levels(program);
 }

@@ -55,6 +55,7 @@ class DepthPyramid {
   std::vector<glm::ivec2> sizes_;      // per level
   std::vector<GLuint> offsets_;        // per level, in floats
   gl::Buffer depths_;
+  gl::Texture depth_texels_{GL_TEXTURE_BUFFER};  // depths_ for the passes that read it (bind_for)
   // The build's passes as indirect dispatches, a uvec4 each: [0] the base's, a work group per
   // tile, [l] level l's from the one below. whole_ holds each over the whole image (the receiver
   // mask's levels read it); commands_ a build's (shaders/pyramid_dispatch.comp): the base over the
