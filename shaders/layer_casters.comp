@@ -90,7 +90,7 @@ void main() {
   uint slot = group_number();
   if (slot >= polygon_count) return;
   uint plant = polygon_instances[slot];
-  if (counts[plant].z == 0u) return;  // the map draws it as points (sample_bins.comp, HIDDEN_KEYS)
+  if (!count_of(plant).polygons) return;  // the map draws it as points (sample_bins.comp, HIDDEN_KEYS)
   mat4 model = instance_model(plant);
   SampledMesh mesh = plant_mesh(plant);
   if (shadows_nothing(map_view_projection, model, mesh)) return;

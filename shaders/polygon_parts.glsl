@@ -33,7 +33,7 @@ bool in_lane(uvec2 drawn, uint lane) {
 // list of the frame's polygon plants, and the end.
 uvec2 band_polygons() {
   uvec2 band = this_band();
-  return uvec2(band.y > 0u ? offsets[0].z + group_sums[0].z : polygon_count, polygon_count);
+  return uvec2(band.y > 0u ? in_group_offset(0u).z + group_sums[0].z : polygon_count, polygon_count);
 }
 
 // The passes with a work group per polygon plant (part_masks.comp, layer_casters.comp) lay their

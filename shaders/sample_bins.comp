@@ -50,9 +50,9 @@ bool map_takes_points(uint i) {
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= plant_count) return;
-  uvec4 c = counts[i];
-  bool hidden = c.w == hidden_in_frame && band_ends[c.y - 1u] <= hidden_reach;
-  band_keys[i] = hidden || (projective_map && c.z != 0u && c.x == 0u && map_takes_points(i)) ? 0u : no_band;
+  Count c = count_of(i);
+  bool hidden = c.hidden && band_ends[c.band - 1u] <= hidden_reach;
+  band_keys[i] = hidden || (projective_map && c.polygons && c.points == 0u && map_takes_points(i)) ? 0u : no_band;
 }
 #elif defined(KEYS) || defined(HISTOGRAM)
 layout(local_size_x = 256) in;
@@ -125,7 +125,7 @@ void main() {
     key = band_count - 1u;
   }
   band_keys[i] = key;
-  counts[i] = uvec4(0u);
+  counts[i] = 0u;
 }
 #endif
 #else

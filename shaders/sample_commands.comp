@@ -24,7 +24,7 @@ uint place_of(uvec2 band, uint plant) {
 
 // The polygon plants before a place in the band, in the lists of this band and the bands' before.
 uint polygons_before(uvec2 band, uint place) {
-  return place < band.y ? offsets[place].z + group_sums[place / plants_per_group].z : polygon_count;
+  return place < band.y ? in_group_offset(place).z + group_sums[place / plants_per_group].z : polygon_count;
 }
 
 void main() {

@@ -27,13 +27,32 @@ SampledMesh sampled_mesh(uint m) {
 }
 SampledMesh plant_mesh(uint i) { return sampled_mesh(texelFetch(plant_mesh_texels, int(i)).x); }
 float plant_rounding(uint i) { return uintBitsToFloat(texelFetch(plant_mesh_texels, int(i)).y); }
-// Per plant, once counted: (points, the number of its band from 1, 1 when drawn as polygons,
-// hidden_in_frame where its box is behind what nearer bands drew, else 0); zero before.
-layout(std430, binding = 12) buffer Counts { uvec4 counts[]; };
+// Per plant, once counted, in one uint (count_of): its points (bits 0-23; a mesh's list holds at
+// most 2^17 samples), the number of its band from 1 (bits 24-29), whether drawn as polygons (bit
+// 30) and whether hidden (bit 31: its box is behind what nearer bands drew); zero before.
+layout(std430, binding = 12) buffer Counts { uint counts[]; };
+struct Count {
+  uint points;
+  uint band;  // its number from 1; 0: not counted this frame
+  bool polygons;
+  bool hidden;
+};
+uint packed_count(uint points, uint band, bool polygons, bool hidden) {
+  return points | (band << 24) | (polygons ? 1u << 30 : 0u) | (hidden ? 1u << 31 : 0u);
+}
+Count count_of(uint plant) {
+  uint c = counts[plant];
+  return Count(c & 0xFFFFFFu, (c >> 24) & 63u, (c & (1u << 30)) != 0u, (c >> 31) != 0u);
+}
 // Per place in the band being added: the exclusive prefix sums of (points, plants with points,
-// plants as polygons) within its work group, until the groups' sums (after the bands before) are
-// added.
-layout(std430, binding = 13) buffer Offsets { uvec4 offsets[]; };
+// plants as polygons) within its work group (in_group_offset; the plants' two in 16 bits each, a
+// group holding 1,024), until the groups' sums (after the bands before) are added.
+layout(std430, binding = 13) buffer Offsets { uvec2 offsets[]; };
+void set_in_group_offset(uint place, uvec4 offset) { offsets[place] = uvec2(offset.x, offset.y | (offset.z << 16)); }
+uvec4 in_group_offset(uint place) {
+  uvec2 o = offsets[place];
+  return uvec4(o.x, o.y & 0xFFFFu, o.y >> 16, 0u);
+}
 layout(std430, binding = 14) buffer GroupSums { uvec4 group_sums[]; };
 // The lists' sizes: the points a splat draws (no more than its buffers hold), the point draws,
 // where this band's points begin, the points of the bands the frame shows (the others are for
@@ -57,7 +76,6 @@ uniform uint band_number;  // the band being counted, from 1
 
 const uint plants_per_group = 1024u;  // 256 threads of 4 plants (app/render/gpu_sampler.cpp)
 const uint no_band = 0xFFFFFFFFu;
-const uint hidden_in_frame = 1u;  // counts[].w of a plant in view that its band left out as hidden
 
 // The band's first place in the band list, and its plants.
 uvec2 this_band() { return band_ranges[band_number - 1u]; }

@@ -29,14 +29,14 @@ uniform float k;
 uniform float points_per_triangle;
 
 
-// (points, 1 when drawn as polygons, hidden_in_frame when hidden) of plant i.
+// (points, 1 when drawn as polygons, 1 when hidden) of plant i.
 uvec3 count_plant(uint i) {
   mat4 model = instance_model(i);
   SampledMesh mesh = plant_mesh(i);
   // Off screen or behind what nearer bands drew over all of its bounds box's rectangle.
   vec3 lo, hi;
   bool before_eye = occlusion && box_rect(view_projection, model, mesh, lo, hi);
-  if (before_eye && rect_hidden(lo, hi, true)) return uvec3(0u, 0u, hidden_in_frame);
+  if (before_eye && rect_hidden(lo, hi, true)) return uvec3(0u, 0u, 1u);
   if (receivers_only && shadows_nothing(map_view_projection, model, mesh)) return uvec3(0u);
   float needed = points_needed(model, mesh, eye, forward, edge_cos, pixels_per_radian, k);
   if (cap_to_map) {
@@ -78,7 +78,7 @@ void main() {
     uint plant = band_list[band.x + first + j];
     uvec3 c = count_plant(plant);
     total += uvec4(c.x, c.x > 0u ? 1u : 0u, c.y, 0u);
-    counts[plant] = uvec4(c.x, band_number, c.y, c.z);
+    counts[plant] = packed_count(c.x, band_number, c.y != 0u, c.z != 0u);
   }
   // Inclusive scan of the threads' totals (Hillis-Steele), then each plant's exclusive offset.
   uint t = gl_LocalInvocationID.x;
@@ -92,7 +92,7 @@ void main() {
   }
   uvec4 thread_offset = sums[t] - total;
   for (uint j = 0u; j < 4u; ++j) {
-    if (first + j < band.y) offsets[first + j] = thread_offset + own[j];
+    if (first + j < band.y) set_in_group_offset(first + j, thread_offset + own[j]);
   }
   if (t == 255u) group_sums[gl_WorkGroupID.x] = sums[t];
 }

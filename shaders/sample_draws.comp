@@ -17,14 +17,14 @@ void main() {
   uint place = gl_GlobalInvocationID.x;
   if (place >= band.y) return;
   uint i = band_list[band.x + place];
-  uvec4 c = counts[i];
-  if (c.x == 0u && c.z == 0u) return;
-  uvec4 at = offsets[place] + group_sums[place / plants_per_group];
-  if (c.x > 0u) {
-    draws[at.y] = uvec4(at.x, c.x, plant_mesh(i).sizes.z, i);
-    for (uint b = (at.x + points_per_block - 1u) / points_per_block; b * points_per_block < at.x + c.x && b < block_capacity; ++b) {
+  Count c = count_of(i);
+  if (c.points == 0u && !c.polygons) return;
+  uvec4 at = in_group_offset(place) + group_sums[place / plants_per_group];
+  if (c.points > 0u) {
+    draws[at.y] = uvec4(at.x, c.points, plant_mesh(i).sizes.z, i);
+    for (uint b = (at.x + points_per_block - 1u) / points_per_block; b * points_per_block < at.x + c.points && b < block_capacity; ++b) {
       block_draws[b] = at.y;
     }
   }
-  if (c.z > 0u) polygon_instances[at.z] = i;
+  if (c.polygons) polygon_instances[at.z] = i;
 }

@@ -3,16 +3,13 @@
 #include "app/errors.hpp"
 #include "app/gl/shader_program.hpp"
 #include "app/render/buffer_texture_units.hpp"
+#include "app/render/plant_pose.hpp"
 
 #include <numeric>
 
 namespace ecoview {
 namespace {
 
-struct GpuInstance {
-  glm::mat4 model;
-  glm::vec4 tint;
-};
 
 // glMultiDrawArraysIndirect's command layout.
 struct DrawCommand {
@@ -41,7 +38,7 @@ PointRaster::PointRaster(glm::ivec2 size) : size_(size), program_(gl::build_prog
 void PointRaster::upload(const std::vector<pointgen::PointDraw>& draws, const std::vector<pointgen::InstanceTable>& tables,
                          const PointSamples& samples) {
   std::vector<glm::uvec4> gpu_draws;
-  std::vector<GpuInstance> instances;
+  std::vector<PlantPose> instances;
   std::vector<DrawCommand> commands;
   std::uint64_t first_point = 0;
   for (const pointgen::PointDraw& d : draws) {
@@ -49,7 +46,7 @@ void PointRaster::upload(const std::vector<pointgen::PointDraw>& draws, const st
     const auto instance = static_cast<GLuint>(instances.size());
     gpu_draws.emplace_back(static_cast<GLuint>(first_point), d.count, samples.first_sample(table.mesh) + d.first, instance);
     commands.push_back({d.count, 1, samples.first_sample(table.mesh) + d.first, instance});
-    instances.push_back({table.transform(d.instance), glm::vec4(table.tints[d.instance], 1.0f)});
+    instances.push_back(plant_pose(table, d.instance));
     first_point += d.count;
   }
   if (first_point > 0x7FFFFFFFu) throw RuntimeFailure("the point raster draws at most 2^31 points at once");

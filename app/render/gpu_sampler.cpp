@@ -3,6 +3,7 @@
 #include "app/errors.hpp"
 #include "app/gl/shader_program.hpp"
 #include "app/render/buffer_texture_units.hpp"
+#include "app/render/plant_pose.hpp"
 #include "pointgen/random.hpp"
 #include "pointgen/sampling/frustum_culling.hpp"
 
@@ -13,10 +14,6 @@ namespace ecoview {
 namespace {
 
 // As shaders/sample_common.glsl and sample_draws.comp read them.
-struct GpuInstance {
-  glm::mat4 model;
-  glm::vec4 tint;
-};
 struct GpuMesh {
   glm::vec4 center_radius;
   glm::vec4 half_size_area;
@@ -55,10 +52,10 @@ constexpr int most_distance_bands = 24;
 // points; on a dense stand of 10^5 plants they added 0.8 M map triangles (docs/benchmarks.md).
 constexpr float hidden_casters_reach = 41.0f;
 
-std::vector<GpuInstance> instances_of(const pointgen::InstanceTable& table) {
-  std::vector<GpuInstance> instances;
+std::vector<PlantPose> instances_of(const pointgen::InstanceTable& table) {
+  std::vector<PlantPose> instances;
   instances.reserve(table.size());
-  for (std::size_t i = 0; i < table.size(); ++i) instances.push_back({table.transform(i), glm::vec4(table.tints[i], 1.0f)});
+  for (std::size_t i = 0; i < table.size(); ++i) instances.push_back(plant_pose(table, i));
   return instances;
 }
 
@@ -110,7 +107,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
       commands_program_(gl::build_program({"sample_commands.comp"})),
       map_caps_program_(gl::build_program({"map_caps.comp"})) {
   const std::vector<pointgen::SampledMesh>& meshes = samples.meshes();
-  std::vector<GpuInstance> instances;
+  std::vector<PlantPose> instances;
   std::vector<glm::uvec2> plant_meshes;
   std::vector<glm::uvec4> table_ranges;  // per table of plants: first plant, end, then (sample_commands.comp)
   std::size_t most_points = 0;  // the draw list's points if every plant took its whole list
@@ -121,7 +118,7 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
     if (!holds_plants_.back()) continue;
     ++table_count_;
     const auto first = static_cast<std::uint32_t>(instances.size());
-    const std::vector<GpuInstance> own = instances_of(table);
+    const std::vector<PlantPose> own = instances_of(table);
     instances.insert(instances.end(), own.begin(), own.end());
     for (std::size_t i = 0; i < table.size(); ++i) {
       plant_meshes.emplace_back(static_cast<std::uint32_t>(table.mesh), glm::floatBitsToUint(rounding(table, i)));
@@ -149,9 +146,9 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   // Room for as many points as every plant's whole list, or as a splat's buffers address (one
   // uvec2 per point where the frame's splat puts it).
   point_capacity_ = std::min(most_points, gl::max_storage_block_bytes() / sizeof(glm::uvec2));
-  // A plant's pose is five texels (shaders/plant_instances.glsl); its largest entry in shader
-  // storage a uvec4 (counts_, offsets_, draws_).
-  if (plant_count_ * sizeof(glm::uvec4) > gl::max_storage_block_bytes() || plant_count_ * 5 > gl::max_texel_buffer_texels()) {
+  // A plant's pose is four texels (shaders/plant_instances.glsl); its largest entry in shader
+  // storage a uvec4 (draws_).
+  if (plant_count_ * sizeof(glm::uvec4) > gl::max_storage_block_bytes() || plant_count_ * sizeof(PlantPose) / sizeof(glm::vec4) > gl::max_texel_buffer_texels()) {
     throw RuntimeFailure("the scene's " + std::to_string(plant_count_) + " plants need more than this driver's shaders address (" +
                          std::to_string(gl::max_storage_block_bytes() >> 20) + " MiB a buffer, " +
                          std::to_string(gl::max_texel_buffer_texels()) + " texels a buffer texture); use fewer plants");
@@ -164,8 +161,8 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   mesh_texels_ = gl::buffer_texels(meshes_, GL_RGBA32UI);
   gl::store(polygon_parts_, polygon_parts);
   gl::store(tables_, table_ranges);
-  storage<glm::uvec4>(counts_, plant_count_);
-  storage<glm::uvec4>(offsets_, plant_count_);
+  storage<GLuint>(counts_, plant_count_);
+  storage<glm::uvec2>(offsets_, plant_count_);
   storage<glm::uvec4>(group_sums_, group_count_);
   storage<glm::uvec4>(draws_, plant_count_);
   storage<GLuint>(map_caps_, plant_count_);
@@ -187,9 +184,9 @@ void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed)
   if (!holds_plants_[table]) return;
   const std::size_t end = table + 1 < first_plant_.size() ? first_plant_[table + 1] : plant_count_;
   if (posed.size() != end - first_plant_[table]) throw RuntimeFailure("a posed table changed its number of instances");
-  const std::vector<GpuInstance> instances = instances_of(posed);
-  glNamedBufferSubData(instances_.name(), static_cast<GLintptr>(first_plant_[table] * sizeof(GpuInstance)),
-                       static_cast<GLsizeiptr>(instances.size() * sizeof(GpuInstance)), instances.data());
+  const std::vector<PlantPose> instances = instances_of(posed);
+  glNamedBufferSubData(instances_.name(), static_cast<GLintptr>(first_plant_[table] * sizeof(PlantPose)),
+                       static_cast<GLsizeiptr>(instances.size() * sizeof(PlantPose)), instances.data());
 }
 
 void GpuSampler::bind() const {
@@ -396,12 +393,13 @@ PointDrawList GpuSampler::draw_list() const {
 
 
 std::vector<GpuSampler::Count> GpuSampler::read_counts() const {
-  std::vector<glm::uvec4> counts(plant_count_);
-  if (!counts.empty()) glGetNamedBufferSubData(counts_.name(), 0, static_cast<GLsizeiptr>(counts.size() * sizeof(glm::uvec4)), counts.data());
+  std::vector<GLuint> counts(plant_count_);
+  if (!counts.empty()) glGetNamedBufferSubData(counts_.name(), 0, static_cast<GLsizeiptr>(counts.size() * sizeof(GLuint)), counts.data());
   std::vector<Count> out;
   out.reserve(counts.size());
-  for (const glm::uvec4& c : counts) {
-    out.push_back({c.x, c.z != 0, c.y > 0 ? std::optional<int>(static_cast<int>(c.y) - 1) : std::nullopt});
+  for (const GLuint c : counts) {  // as shaders/sample_common.glsl packs it
+    const GLuint band = (c >> 24) & 63u;
+    out.push_back({c & 0xFFFFFFu, (c & (1u << 30)) != 0, band > 0 ? std::optional<int>(static_cast<int>(band) - 1) : std::nullopt});
   }
   return out;
 }

@@ -3,16 +3,13 @@
 #include "app/errors.hpp"
 #include "app/gl/shader_program.hpp"
 #include "app/render/buffer_texture_units.hpp"
+#include "app/render/plant_pose.hpp"
 
 #include <algorithm>
 
 namespace ecoview {
 namespace {
 
-struct GpuInstance {
-  glm::mat4 model;
-  glm::vec4 tint;
-};
 
 constexpr GLuint draws_binding = 1, depths_binding = 6, winners_binding = 7, block_draws_binding = 8,
                  projected_binding = 9, totals_binding = 15, dispatch_binding = 16, points_drawn_binding = 30,
@@ -87,7 +84,7 @@ PointSplat::PointSplat(glm::ivec2 size)
 void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std::vector<pointgen::InstanceTable>& tables,
                         const PointSamples& samples) {
   std::vector<glm::uvec4> gpu_draws;
-  std::vector<GpuInstance> instances;
+  std::vector<PlantPose> instances;
   gpu_draws.reserve(draws.size());
   instances.reserve(draws.size());
   std::vector<std::uint32_t> block_draws;  // per block of points, the draw holding its first point
@@ -100,7 +97,7 @@ void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std
     const auto draw = static_cast<std::uint32_t>(gpu_draws.size());
     gpu_draws.emplace_back(static_cast<std::uint32_t>(first_point), d.count, samples.first_sample(table.mesh) + d.first,
                            static_cast<std::uint32_t>(instances.size()));
-    instances.push_back({table.transform(d.instance), glm::vec4(table.tints[d.instance], 1.0f)});
+    instances.push_back(plant_pose(table, d.instance));
     first_point += d.count;
     while (block_draws.size() * points_per_block < first_point) block_draws.push_back(draw);
   }
