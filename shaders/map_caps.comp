@@ -6,9 +6,9 @@
 // map's density, a texel is shadowed about as often as leaves cover it, as by a sampling made for
 // the map (the casters' bands are counted so: sample_count.comp, cap_to_map).
 #include "sample_common.glsl"
+#include "point_draws.glsl"
 layout(local_size_x = 256) in;
 
-layout(std430, binding = 1) readonly buffer Draws { uvec4 draws[]; };
 layout(std430, binding = 35) writeonly buffer MapCaps { uint map_caps[]; };
 uniform mat4 map_view_projection;
 uniform float map_texels;
@@ -17,7 +17,7 @@ uniform float k;  // none: every point (a paraboloid view)
 void main() {
   uint d = gl_GlobalInvocationID.x;
   if (d >= draw_count) return;
-  uvec4 draw = draws[d];
+  uvec4 draw = draw_at(d);
   if (k <= 0.0) {
     map_caps[d] = draw.y;
     return;

@@ -1,8 +1,8 @@
-// The buffers of a point splat (app/render/point_splat.hpp): the frame's draws (first point,
-// point count, first sample, instance), the drawn instances, the surface samples, and per pixel
+// The buffers of a point splat (app/render/point_splat.hpp): the frame's draws (point_draws.glsl),
+// the drawn instances, the surface samples, and per pixel
 // the nearest point's depth, the point that has it and how much of it the points cover
 // (point_coverage.glsl).
-layout(std430, binding = 1) readonly buffer Draws { uvec4 draws[]; };
+#include "point_draws.glsl"
 #include "plant_instances.glsl"
 #include "point_samples.glsl"
 layout(std430, binding = 6) buffer Depths { uint depths[]; };
@@ -50,8 +50,8 @@ uint coverage_entry(ivec2 entry) { return uint(entry.y * (target_size.x + covera
 // hundred thousand draws takes 17.
 uint draw_of(uint p) {
   uint d = block_draws[p / points_per_block];
-  while (d + 1u < draw_count && draws[d + 1u].x <= p) ++d;
+  while (d + 1u < draw_count && draw_points[d + 1u].x <= p) ++d;
   return d;
 }
 
-uint sample_of(uint p, uint draw) { return draws[draw].z + (p - draws[draw].x); }
+uint sample_of(uint p, uint draw) { return draw_samples[draw].x + (p - draw_points[draw].x); }

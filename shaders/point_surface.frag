@@ -44,7 +44,7 @@ void main() {
   if (point == no_point) discard;
   uint draw = draw_of(point);
   uint s = sample_of(point, draw);
-  uint instance = draws[draw].w;
+  uint instance = draw_samples[draw].y;
   mat4 model = instance_model(instance);
   vec3 position = (model * vec4(sample_position(s), 1.0)).xyz;
   vec3 n = normalize(mat3(model) * sample_normal(s).xyz);

@@ -35,12 +35,12 @@ void main() {
   uvec2 run = thread_points();
   if (run.x >= run.y) return;
   uint draw = draw_of(run.x);
-  uvec4 d = draws[draw];
+  uvec4 d = draw_at(draw);
   uint drawn = points_drawn(draw, d);
   uint kept = 0u;
   for (uint p = run.x; p < run.y; ++p) {
     while (p >= d.x + d.y) {
-      d = draws[++draw];
+      d = draw_at(++draw);
       drawn = points_drawn(draw, d);
     }
     if (p - d.x >= drawn) continue;

@@ -6,7 +6,7 @@
 #include "sample_common.glsl"
 layout(local_size_x = 256) in;
 
-layout(std430, binding = 1) writeonly buffer Draws { uvec4 draws[]; };
+#include "point_draws.glsl"
 layout(std430, binding = 8) writeonly buffer BlockDraws { uint block_draws[]; };
 layout(std430, binding = 16) writeonly buffer PolygonInstances { uint polygon_instances[]; };
 const uint points_per_block = 16u;  // point_common.glsl
@@ -21,7 +21,8 @@ void main() {
   if (c.points == 0u && !c.polygons) return;
   uvec4 at = in_group_offset(place) + group_sums[place / plants_per_group];
   if (c.points > 0u) {
-    draws[at.y] = uvec4(at.x, c.points, plant_mesh(i).sizes.z, i);
+    draw_points[at.y] = uvec2(at.x, c.points);
+    draw_samples[at.y] = uvec2(plant_mesh(i).sizes.z, i);
     for (uint b = (at.x + points_per_block - 1u) / points_per_block; b * points_per_block < at.x + c.points && b < block_capacity; ++b) {
       block_draws[b] = at.y;
     }

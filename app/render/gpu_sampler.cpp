@@ -31,7 +31,7 @@ struct GpuTotals {
 };
 constexpr std::size_t command_uints = GpuScene::command_bytes / sizeof(GLuint);
 
-constexpr GLuint draws_binding = 1, block_draws_binding = 8, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
+constexpr GLuint draw_points_binding = 1, draw_samples_binding = 10, block_draws_binding = 8, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
                  polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19, band_list_binding = 20,
                  band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24,
                  polygon_parts_binding = 25, band_ends_binding = 34, map_caps_binding = 35;
@@ -146,9 +146,9 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   // Room for as many points as every plant's whole list, or as a splat's buffers address (one
   // uvec2 per point where the frame's splat puts it).
   point_capacity_ = std::min(most_points, gl::max_storage_block_bytes() / sizeof(glm::uvec2));
-  // A plant's pose is four texels (shaders/plant_instances.glsl); its largest entry in shader
-  // storage a uvec4 (draws_).
-  if (plant_count_ * sizeof(glm::uvec4) > gl::max_storage_block_bytes() || plant_count_ * sizeof(PlantPose) / sizeof(glm::vec4) > gl::max_texel_buffer_texels()) {
+  // A plant's pose is four texels (shaders/plant_instances.glsl); its largest entries in shader
+  // storage a uvec2 (offsets_, draw_points_, draw_samples_, two places in band_list_).
+  if (plant_count_ * sizeof(glm::uvec2) > gl::max_storage_block_bytes() || plant_count_ * sizeof(PlantPose) / sizeof(glm::vec4) > gl::max_texel_buffer_texels()) {
     throw RuntimeFailure("the scene's " + std::to_string(plant_count_) + " plants need more than this driver's shaders address (" +
                          std::to_string(gl::max_storage_block_bytes() >> 20) + " MiB a buffer, " +
                          std::to_string(gl::max_texel_buffer_texels()) + " texels a buffer texture); use fewer plants");
@@ -164,7 +164,8 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   storage<GLuint>(counts_, plant_count_);
   storage<glm::uvec2>(offsets_, plant_count_);
   storage<glm::uvec4>(group_sums_, group_count_);
-  storage<glm::uvec4>(draws_, plant_count_);
+  storage<glm::uvec2>(draw_points_, plant_count_);
+  storage<glm::uvec2>(draw_samples_, plant_count_);
   storage<GLuint>(map_caps_, plant_count_);
   storage<GLuint>(block_draws_, (point_capacity_ + points_per_block - 1) / points_per_block);
   gl::store(totals_, std::vector<GpuTotals>(1, GpuTotals{}));  // stays so in a scene without plants
@@ -190,7 +191,8 @@ void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed)
 }
 
 void GpuSampler::bind() const {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draws_binding, draws_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draw_points_binding, draw_points_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draw_samples_binding, draw_samples_.name());
   glBindTextureUnit(instance_texels_unit, instance_texels_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, block_draws_binding, block_draws_.name());
   glBindTextureUnit(plant_mesh_texels_unit, plant_mesh_texels_.name());
@@ -388,7 +390,7 @@ void GpuSampler::cap_for_map(const glm::mat4& map_view, float texels, float poin
 }
 
 PointDrawList GpuSampler::draw_list() const {
-  return {draws_.name(), instance_texels_.name(), block_draws_.name(), totals_.name(), point_capacity_, map_caps_.name()};
+  return {draw_points_.name(), draw_samples_.name(), instance_texels_.name(), block_draws_.name(), totals_.name(), point_capacity_, map_caps_.name()};
 }
 
 
@@ -407,8 +409,13 @@ std::vector<GpuSampler::Count> GpuSampler::read_counts() const {
 std::vector<glm::uvec4> GpuSampler::read_draws() const {
   GpuTotals totals{};
   glGetNamedBufferSubData(totals_.name(), 0, sizeof totals, &totals);
-  std::vector<glm::uvec4> draws(totals.draw_count);
-  if (!draws.empty()) glGetNamedBufferSubData(draws_.name(), 0, static_cast<GLsizeiptr>(draws.size() * sizeof(glm::uvec4)), draws.data());
+  std::vector<glm::uvec2> points(totals.draw_count), samples(totals.draw_count);
+  if (points.empty()) return {};
+  glGetNamedBufferSubData(draw_points_.name(), 0, static_cast<GLsizeiptr>(points.size() * sizeof(glm::uvec2)), points.data());
+  glGetNamedBufferSubData(draw_samples_.name(), 0, static_cast<GLsizeiptr>(samples.size() * sizeof(glm::uvec2)), samples.data());
+  std::vector<glm::uvec4> draws;
+  draws.reserve(points.size());
+  for (std::size_t d = 0; d < points.size(); ++d) draws.emplace_back(points[d], samples[d]);
   return draws;
 }
 

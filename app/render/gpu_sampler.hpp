@@ -132,7 +132,7 @@ class GpuSampler {
   std::vector<std::uint32_t> first_plant_;
   std::vector<bool> holds_plants_;  // per table
   std::size_t table_count_ = 0;  // tables holding plants: a polygon draw each per band or lane
-  gl::Buffer instances_, plant_meshes_, meshes_, counts_, offsets_, group_sums_, draws_, block_draws_, totals_;
+  gl::Buffer instances_, plant_meshes_, meshes_, counts_, offsets_, group_sums_, draw_points_, draw_samples_, block_draws_, totals_;
   gl::Buffer polygon_instances_, tables_, commands_;
   gl::Texture instance_texels_{GL_TEXTURE_BUFFER};  // instances_ for the compute passes
   gl::Texture plant_mesh_texels_{GL_TEXTURE_BUFFER}, mesh_texels_{GL_TEXTURE_BUFFER};  // plant_meshes_, meshes_

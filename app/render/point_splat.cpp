@@ -11,7 +11,7 @@ namespace ecoview {
 namespace {
 
 
-constexpr GLuint draws_binding = 1, depths_binding = 6, winners_binding = 7, block_draws_binding = 8,
+constexpr GLuint draw_points_binding = 1, draw_samples_binding = 10, depths_binding = 6, winners_binding = 7, block_draws_binding = 8,
                  projected_binding = 9, totals_binding = 15, dispatch_binding = 16, points_drawn_binding = 30,
                  map_caps_binding = 35, coverage_binding = 36, centre_depths_binding = 37, centre_winners_binding = 38;
 constexpr int coverage_margin = 8;  // point_common.glsl
@@ -83,9 +83,10 @@ PointSplat::PointSplat(glm::ivec2 size)
 
 void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std::vector<pointgen::InstanceTable>& tables,
                         const PointSamples& samples) {
-  std::vector<glm::uvec4> gpu_draws;
+  std::vector<glm::uvec2> draw_points, draw_samples;
   std::vector<PlantPose> instances;
-  gpu_draws.reserve(draws.size());
+  draw_points.reserve(draws.size());
+  draw_samples.reserve(draws.size());
   instances.reserve(draws.size());
   std::vector<std::uint32_t> block_draws;  // per block of points, the draw holding its first point
   std::uint64_t first_point = 0;
@@ -94,19 +95,20 @@ void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std
     if (first_point + d.count > max_points) {
       throw RuntimeFailure("a frame needs more than " + std::to_string(max_points) + " points; lower --k or the frame size");
     }
-    const auto draw = static_cast<std::uint32_t>(gpu_draws.size());
-    gpu_draws.emplace_back(static_cast<std::uint32_t>(first_point), d.count, samples.first_sample(table.mesh) + d.first,
-                           static_cast<std::uint32_t>(instances.size()));
+    const auto draw = static_cast<std::uint32_t>(draw_points.size());
+    draw_points.emplace_back(static_cast<std::uint32_t>(first_point), d.count);
+    draw_samples.emplace_back(samples.first_sample(table.mesh) + d.first, static_cast<std::uint32_t>(instances.size()));
     instances.push_back(plant_pose(table, d.instance));
     first_point += d.count;
     while (block_draws.size() * points_per_block < first_point) block_draws.push_back(draw);
   }
-  fill(draws_, draws_capacity_, gpu_draws);
+  fill(draw_points_, draw_points_capacity_, draw_points);
+  fill(draw_samples_, draw_samples_capacity_, draw_samples);
   if (fill(instances_, instances_capacity_, instances)) instance_texels_ = gl::buffer_texels(instances_);
   fill(block_draws_, block_draws_capacity_, block_draws);
   const GLuint totals[4] = {static_cast<GLuint>(first_point), static_cast<GLuint>(draws.size()), 0, static_cast<GLuint>(first_point)};
   glNamedBufferSubData(totals_.name(), 0, sizeof totals, totals);
-  use({draws_.name(), instance_texels_.name(), block_draws_.name(), totals_.name(), static_cast<std::size_t>(first_point)}, samples);
+  use({draw_points_.name(), draw_samples_.name(), instance_texels_.name(), block_draws_.name(), totals_.name(), static_cast<std::size_t>(first_point)}, samples);
 }
 
 void PointSplat::use(const PointDrawList& list, const PointSamples& samples) {
@@ -123,7 +125,8 @@ std::size_t PointSplat::points_drawn_onto() const {
 }
 
 void PointSplat::bind_for(const gl::Program& program) const {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draws_binding, list_.draws);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draw_points_binding, list_.draw_points);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, draw_samples_binding, list_.draw_samples);
   glBindTextureUnit(instance_texels_unit, list_.instance_texels);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, block_draws_binding, list_.block_draws);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, totals_binding, list_.totals);

@@ -9,12 +9,13 @@
 namespace ecoview {
 
 // A frame's point draws in GL buffers, wherever they were made (PointSplat::upload on the CPU,
-// GpuSampler on the GPU): per draw (first point, count, first sample, instance), the instances
+// GpuSampler on the GPU): per draw its points (first point, count) and in a second buffer its
+// samples (first sample, instance; shaders/point_draws.glsl), the instances
 // (model matrix, tint) as a buffer texture (shaders/plant_instances.glsl), per block of 16 points
 // the draw holding its first point, and the totals (points, draws, where the band last added
 // begins) as three uints, so that a list made on the GPU is drawn without a read-back.
 struct PointDrawList {
-  GLuint draws = 0, instance_texels = 0, block_draws = 0, totals = 0;
+  GLuint draw_points = 0, draw_samples = 0, instance_texels = 0, block_draws = 0, totals = 0;
   std::size_t most_points = 0;  // the most points the list may hold
   // A GpuSampler's list: per draw the most points a shadow map takes of it (GpuSampler::cap_for_map).
   // None for others.
@@ -73,10 +74,10 @@ class PointSplat {
  private:
   glm::ivec2 size_;
   PointDrawList list_;  // the one drawn: uploaded_ or another's
-  gl::Buffer draws_, instances_, block_draws_, totals_, depths_, winners_, projected_, dispatch_, points_drawn_onto_;
+  gl::Buffer draw_points_, draw_samples_, instances_, block_draws_, totals_, depths_, winners_, projected_, dispatch_, points_drawn_onto_;
   gl::Texture instance_texels_{GL_TEXTURE_BUFFER};  // over instances_, made again with its store
   gl::Buffer coverage_, centre_depths_, centre_winners_;  // point_common.glsl
-  std::size_t draws_capacity_ = 0, instances_capacity_ = 0, block_draws_capacity_ = 0, projected_capacity_ = 0;
+  std::size_t draw_points_capacity_ = 0, draw_samples_capacity_ = 0, instances_capacity_ = 0, block_draws_capacity_ = 0, projected_capacity_ = 0;
   // Which of the list's points a pass takes: the frame's, those of the band last added, or every
   // one, the shadow maps' alone too.
   enum class Points { frame, last_band, all };
