@@ -1,7 +1,6 @@
 // The buffers of a point splat (app/render/point_splat.hpp): the frame's draws (point_draws.glsl),
-// the drawn instances, the surface samples, and per pixel
-// the nearest point's depth, the point that has it and how much of it the points cover
-// (point_coverage.glsl).
+// the drawn instances, the surface samples, and per pixel the nearest point's depth, the point that
+// has it and how much of it the points cover (point_coverage.glsl).
 #include "point_draws.glsl"
 #include "plant_instances.glsl"
 #include "point_samples.glsl"

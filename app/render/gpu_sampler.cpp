@@ -31,7 +31,8 @@ struct GpuTotals {
 };
 constexpr std::size_t command_uints = GpuScene::command_bytes / sizeof(GLuint);
 
-constexpr GLuint draw_points_binding = 1, draw_samples_binding = 10, block_draws_binding = 8, counts_binding = 12, offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
+constexpr GLuint draw_points_binding = 1, draw_samples_binding = 10, block_draws_binding = 8, counts_binding = 12,
+                 offsets_binding = 13, group_sums_binding = 14, totals_binding = 15,
                  polygon_instances_binding = 16, tables_binding = 18, commands_binding = 19, band_list_binding = 20,
                  band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24,
                  polygon_parts_binding = 25, band_ends_binding = 34, map_caps_binding = 35;
@@ -148,7 +149,8 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
   point_capacity_ = std::min(most_points, gl::max_storage_block_bytes() / sizeof(glm::uvec2));
   // A plant's pose is four texels (shaders/plant_instances.glsl); its largest entries in shader
   // storage a uvec2 (offsets_, draw_points_, draw_samples_, two places in band_list_).
-  if (plant_count_ * sizeof(glm::uvec2) > gl::max_storage_block_bytes() || plant_count_ * sizeof(PlantPose) / sizeof(glm::vec4) > gl::max_texel_buffer_texels()) {
+  const std::size_t pose_texels = plant_count_ * sizeof(PlantPose) / sizeof(glm::vec4);
+  if (plant_count_ * sizeof(glm::uvec2) > gl::max_storage_block_bytes() || pose_texels > gl::max_texel_buffer_texels()) {
     throw RuntimeFailure("the scene's " + std::to_string(plant_count_) + " plants need more than this driver's shaders address (" +
                          std::to_string(gl::max_storage_block_bytes() >> 20) + " MiB a buffer, " +
                          std::to_string(gl::max_texel_buffer_texels()) + " texels a buffer texture); use fewer plants");
