@@ -248,7 +248,7 @@ TEST_F(SplatPaths, MeasuresEveryPathOnTheSamePoints) {
   settings.width = width;
   settings.height = height;
   settings.k = 1.5f;  // low enough that the spheres are points
-  const std::vector<BenchRun> runs = measure_splat_paths(scene, "spheres", settings, 0, 1);
+  const std::vector<BenchRun> runs = measure_splat_paths(scene, "spheres", PointSamples(scene, settings.points_per_triangle, true), settings, 0, 1);
   ASSERT_EQ(runs.size(), 3u);
   EXPECT_GT(runs[0].figures["points"].get<std::size_t>(), 1000u);
   for (const BenchRun& run : runs) EXPECT_EQ(run.params["sweep"], "paths");
@@ -263,7 +263,7 @@ TEST_F(SplatPaths, MeasuresAPointsCostOnGrowingListsOfTheSameView) {
   settings.width = width;
   settings.height = height;
   settings.k = 1.5f;
-  const std::vector<BenchRun> runs = measure_point_cost(scene, "spheres", settings, 0, 1);
+  const std::vector<BenchRun> runs = measure_point_cost(scene, "spheres", PointSamples(scene, settings.points_per_triangle, true), settings, 0, 1);
   ASSERT_EQ(runs.size(), std::size(point_cost_scales) + 1);
   double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
   for (std::size_t i = 0; i + 1 < runs.size(); ++i) {

@@ -198,8 +198,9 @@ class DensityBench {
   // Splat paths: the same points as one GL_POINTS draw, indirect draws and compute splats; and a
   // point's cost in the compute splat, from lists of up to several million points.
   void paths(const Scene& scene, const std::string& scene_name, Progress& progress) {
-    for (BenchRun& run : measure_splat_paths(scene, scene_name, base_, plan_.warmup, plan_.frames)) results_.runs.push_back(std::move(run));
-    for (BenchRun& run : measure_point_cost(scene, scene_name, base_, plan_.warmup, plan_.frames)) results_.runs.push_back(std::move(run));
+    const PointSamples samples(scene, base_.points_per_triangle, true);
+    for (BenchRun& run : measure_splat_paths(scene, scene_name, samples, base_, plan_.warmup, plan_.frames)) results_.runs.push_back(std::move(run));
+    for (BenchRun& run : measure_point_cost(scene, scene_name, samples, base_, plan_.warmup, plan_.frames)) results_.runs.push_back(std::move(run));
     progress.step();
   }
 

@@ -61,11 +61,14 @@ Line fit_line(const std::vector<double>& x, const std::vector<double>& y) {
 
 }  // namespace
 
-std::vector<BenchRun> measure_point_cost(const Scene& scene, const std::string& scene_name, const RenderSettings& settings,
-                                         int warmup, int frames) {
+std::vector<BenchRun> measure_point_cost(const Scene& scene, const std::string& scene_name, const PointSamples& samples,
+                                         const RenderSettings& settings, int warmup, int frames) {
   const glm::ivec2 size(settings.width, settings.height);
   const glm::mat4 view_projection = camera_view_projection(scene, size);
-  const PointSamples samples(scene, settings.points_per_triangle, true);
+  const auto params = [&](const nlohmann::json& scale) {
+    return nlohmann::json{{"sweep", "point_cost"}, {"scene", scene_name}, {"scale", scale}, {"splat", settings.splat_size},
+                          {"width", size.x}, {"height", size.y}, {"frames", frames}};
+  };
   std::vector<BenchRun> runs;
   std::vector<double> points, ms;
   for (int scale : point_cost_scales) {
@@ -84,25 +87,22 @@ std::vector<BenchRun> measure_point_cost(const Scene& scene, const std::string& 
     points.push_back(static_cast<double>(count));
     ms.push_back(t.ms);
     BenchRun run;
-    run.params = {{"sweep", "point_cost"}, {"scene", scene_name}, {"scale", scale}, {"splat", settings.splat_size},
-                  {"width", size.x}, {"height", size.y}, {"frames", frames}};
+    run.params = params(scale);
     run.figures = {{"points", count}, {"ms", t.ms}};
     runs.push_back(run);
   }
   const Line line = fit_line(points, ms);
   BenchRun fit;
-  fit.params = {{"sweep", "point_cost"}, {"scene", scene_name}, {"scale", "fit"}, {"splat", settings.splat_size},
-                {"width", size.x}, {"height", size.y}, {"frames", frames}};
+  fit.params = params("fit");
   fit.figures = {{"ns_per_point", line.slope * 1e6}, {"fixed_ms", line.intercept}};
   runs.push_back(fit);
   return runs;
 }
 
-std::vector<BenchRun> measure_splat_paths(const Scene& scene, const std::string& scene_name, const RenderSettings& settings,
-                                          int warmup, int frames) {
+std::vector<BenchRun> measure_splat_paths(const Scene& scene, const std::string& scene_name, const PointSamples& samples,
+                                          const RenderSettings& settings, int warmup, int frames) {
   const glm::ivec2 size(settings.width, settings.height);
   const glm::mat4 view_projection = camera_view_projection(scene, size);
-  const PointSamples samples(scene, settings.points_per_triangle, true);
   const pointgen::SampledFrame selection =
       pointgen::sample_view(sampler_view(scene.camera, settings, {view_projection}), scene.groups, samples.meshes());
 
