@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <memory>
+#include <random>
 #include <sstream>
 
 namespace ecoview {
@@ -113,6 +114,71 @@ TEST(PointCoverage, FarBirchesOfPointsHideAsMuchOfTheSkyAsTheirPolygons) {
   std::cout << "sky hidden by points / polygons: " << ratio << "\n";
   EXPECT_GT(ratio, 0.8);
   EXPECT_LT(ratio, 1.25);
+}
+
+// A crown of 3,000 leaves, 0.3 m squares in random places and turns within 2 m of (0, 3, 0), as
+// the OBJ text a user's tree could be.
+std::string leafy_crown_obj() {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  std::ostringstream obj;
+  for (int leaf = 0; leaf < 3000; ++leaf) {
+    const glm::vec3 center = glm::vec3(0, 3, 0) + 2.0f * glm::vec3(unit(random), unit(random), unit(random));
+    const glm::vec3 a = 0.15f * glm::normalize(glm::vec3(unit(random), unit(random), unit(random)) + glm::vec3(0.01f));
+    const glm::vec3 b = 0.15f * glm::normalize(glm::cross(a, glm::vec3(unit(random), unit(random), unit(random)) + glm::vec3(0.01f)));
+    for (const glm::vec3& corner : {center - a - b, center + a - b, center + a + b, center - a + b}) {
+      obj << "v " << corner.x << " " << corner.y << " " << corner.z << "\n";
+    }
+    const int v = 4 * leaf + 1;
+    obj << "f " << v << " " << v + 1 << " " << v + 2 << "\nf " << v << " " << v + 2 << " " << v + 3 << "\n";
+  }
+  return obj.str();
+}
+
+// A mesh object with "points": true is a species like the built-in plants: the sampler draws its
+// far instances as points and its near ones as polygons. Forty crowns 100-180 m away are all
+// points; one 6 m from the camera is all polygons; the same file without "points" is polygons at
+// any distance.
+TEST(MeshSpecies, AMeshFromAFileIsPointsFarAndPolygonsNear) {
+  const std::unique_ptr<GlContext> context = create_headless_context("egl");
+  const std::string crown = leafy_crown_obj();
+  const auto scene_of = [&](const std::string& positions, bool points) {
+    std::string transforms;
+    std::istringstream list(positions);
+    for (float x, z; list >> x >> z;) {
+      transforms += std::string(transforms.empty() ? "" : ", ") + "[1,0,0,0, 0,1,0,0, 0,0,1,0, " + std::to_string(x) +
+                    ",0," + std::to_string(z) + ",1]";
+    }
+    const std::string json = R"({"camera": {"position": [0, 3, 0], "target": [0, 3, -60], "fov_y_deg": 40, "near": 0.5, "far": 400},
+        "lights": [{"type": "directional", "direction": [0.4, -0.8, -0.3]}],
+        "objects": [{"type": "mesh", "file": "crown.obj", "points": )" + std::string(points ? "true" : "false") +
+                             R"(, "transforms": [)" + transforms + "]}]}";
+    return load_scene({"crowns.json", json, [&](const std::string& path) -> std::optional<std::string> {
+                         if (path == "crown.obj") return crown;
+                         return std::nullopt;
+                       }});
+  };
+  std::string far, near = "0 -6";
+  for (int i = 0; i < 40; ++i) far += std::to_string((i % 8) * 12 - 42) + " " + std::to_string(-100 - (i / 8) * 20) + " ";
+  RenderSettings settings;
+  settings.width = 480;
+  settings.height = 270;
+  const auto frame_stats = [&](const Scene& scene) {
+    Renderer renderer(scene, settings);
+    renderer.render(scene.camera, scene.lights[0]);
+    return renderer.stats();
+  };
+  const std::size_t crown_triangles = 6000;
+  const FrameStats far_points = frame_stats(scene_of(far, true));
+  EXPECT_GT(far_points.points, 10000u) << "the far crowns should be points";
+  EXPECT_EQ(far_points.triangles, 0u);
+  EXPECT_GT(far_points.shadow_points, 0u) << "and cast their shadows as points";
+  const FrameStats near_polygons = frame_stats(scene_of(near, true));
+  EXPECT_EQ(near_polygons.points, 0u) << "the near crown should be polygons";
+  EXPECT_EQ(near_polygons.triangles, crown_triangles);
+  const FrameStats far_polygons = frame_stats(scene_of(far, false));
+  EXPECT_EQ(far_polygons.points, 0u) << "without \"points\" a mesh is always polygons";
+  EXPECT_EQ(far_polygons.triangles, 40 * crown_triangles);
 }
 
 // With every plant as polygons, plants out of view are not drawn and those in view are: five

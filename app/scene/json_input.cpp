@@ -121,6 +121,11 @@ std::string JsonField::string() const {
   return value_->get<std::string>();
 }
 
+bool JsonField::boolean() const {
+  if (!value_->is_boolean()) fail("expected true or false, got " + type_name(*value_));
+  return value_->get<bool>();
+}
+
 double JsonField::number(double min, double max) const {
   if (!value_->is_number()) fail("expected a number, got " + type_name(*value_));
   const double v = value_->get<double>();

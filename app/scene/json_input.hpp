@@ -34,6 +34,7 @@ class JsonField {
   // Leaves.
   bool is_string() const { return value_->is_string(); }
   std::string string() const;
+  bool boolean() const;
   double number(double min, double max) const;
   float number_f(double min, double max) const { return static_cast<float>(number(min, max)); }
   int integer(int min, int max) const;

@@ -55,9 +55,10 @@ class SceneBuilder {
       const float radius = object["radius"].number_f(1e-6, JsonField::max_coordinate);
       add_instance(primitive("sphere"), glm::scale(glm::translate(glm::mat4(1.0f), object["center"].vec3()), glm::vec3(radius)), color);
     } else if (type == "mesh") {
-      object.only_keys({"type", "file", "transforms", "color"});
+      object.only_keys({"type", "file", "transforms", "color", "points"});
       const glm::vec3 color = color_of(object, default_color);
-      const std::size_t mesh = mesh_file(object["file"]);
+      const bool points = object.has("points") && object["points"].boolean();
+      const std::size_t mesh = mesh_file(object["file"], points);
       if (!object.has("transforms")) {
         add_instance(mesh, glm::mat4(1.0f), color);
         return;
@@ -103,16 +104,20 @@ class SceneBuilder {
     return primitives_[kind] = scene_.meshes.size() - 1;
   }
 
-  std::size_t mesh_file(const JsonField& field) {
-    const std::string path = field.string();
-    const auto it = files_.find(path);
+  // A file's mesh, loaded once for its polygon instances and once for its point instances (a point
+  // mesh's far instances are drawn as points: plants, people, animals).
+  std::size_t mesh_file(const JsonField& field, bool points) {
+    const std::pair<std::string, bool> key(field.string(), points);
+    const auto it = files_.find(key);
     if (it != files_.end()) return it->second;
     try {
-      scene_.meshes.push_back(pointgen::load_mesh_file(path, source_.read_relative));
+      scene_.meshes.push_back(pointgen::load_mesh_file(key.first, source_.read_relative));
     } catch (const pointgen::FileError& e) {
       field.fail(e.what());
     }
-    return files_[path] = scene_.meshes.size() - 1;
+    const std::size_t mesh = scene_.meshes.size() - 1;
+    if (points) mark_point_meshes(mesh, mesh + 1);
+    return files_[key] = mesh;
   }
 
   static glm::mat4 read_transform(const JsonField& field) {
@@ -228,7 +233,7 @@ class SceneBuilder {
   double reserved_bytes_ = 0.0;
   std::uint64_t next_instance_ = 0;
   std::map<std::string, std::size_t> primitives_;
-  std::map<std::string, std::size_t> files_;
+  std::map<std::pair<std::string, bool>, std::size_t> files_;
   std::map<std::size_t, std::size_t> group_of_mesh_;
 };
 
