@@ -3,6 +3,7 @@
 #include "pointgen/file_error.hpp"
 #include "pointgen/mesh_file.hpp"
 
+#include <stb/stb_image.h>
 #include <tiny_gltf.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -11,6 +12,7 @@
 
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <set>
 
 namespace pointgen {
@@ -42,9 +44,46 @@ struct FileAccess {
   }
 };
 
-// Images are not used (colour comes from materials and COLOR_0); skip decoding them.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                const unsigned char*, int, void*) {
+// Images are decoded by stb_image (PNG, JPEG) into 8-bit RGBA. Their size is read from the
+// header and checked before anything is allocated for the pixels.
+constexpr int max_texture_side = 16384;
+constexpr std::size_t max_texture_bytes_per_file = std::size_t{1} << 30;
+
+struct ImageDecoding {
+  std::size_t bytes = 0;  // decoded so far, in this file
+  int failed_image = -1;
+  std::string problem;
+};
+
+bool decode_image(tinygltf::Image* image, const int image_index, std::string* error, std::string*, int, int,
+                  const unsigned char* bytes, int size, void* user) {
+  auto& decoding = *static_cast<ImageDecoding*>(user);
+  const auto refuse = [&](const std::string& problem) {
+    decoding.failed_image = image_index;
+    decoding.problem = problem;
+    if (error) *error += "image " + std::to_string(image_index) + ": " + problem + "\n";
+    return false;
+  };
+  int width = 0, height = 0, channels = 0;
+  if (!stbi_info_from_memory(bytes, size, &width, &height, &channels)) {
+    return refuse(std::string("cannot be decoded (") + stbi_failure_reason() + ")");
+  }
+  if (width <= 0 || height <= 0 || width > max_texture_side || height > max_texture_side) {
+    return refuse(std::to_string(width) + " x " + std::to_string(height) + " texels, more than " +
+                  std::to_string(max_texture_side) + " a side");
+  }
+  const std::size_t image_bytes = 4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  if (image_bytes > max_texture_bytes_per_file - decoding.bytes) return refuse("the file's images exceed 1 GiB decoded");
+  stbi_uc* pixels = stbi_load_from_memory(bytes, size, &width, &height, &channels, 4);
+  if (!pixels) return refuse(std::string("cannot be decoded (") + stbi_failure_reason() + ")");
+  image->width = width;
+  image->height = height;
+  image->component = 4;
+  image->bits = 8;
+  image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+  image->image.assign(pixels, pixels + image_bytes);
+  stbi_image_free(pixels);
+  decoding.bytes += image_bytes;
   return true;
 }
 
@@ -269,11 +308,46 @@ glm::mat4 node_matrix(const tinygltf::Node& node) {
   return m;
 }
 
-glm::vec3 base_color(const tinygltf::Model& model, int material) {
-  if (material < 0 || static_cast<std::size_t>(material) >= model.materials.size()) return glm::vec3(1.0f);
-  const auto& factor = model.materials[static_cast<std::size_t>(material)].pbrMetallicRoughness.baseColorFactor;
-  if (factor.size() < 3) return glm::vec3(1.0f);
-  return glm::clamp(glm::vec3(factor[0], factor[1], factor[2]), 0.0f, 1.0f);
+const tinygltf::Material* material_of(const tinygltf::Model& model, int material) {
+  if (material < 0 || static_cast<std::size_t>(material) >= model.materials.size()) return nullptr;
+  return &model.materials[static_cast<std::size_t>(material)];
+}
+
+glm::vec4 base_color(const tinygltf::Material* material) {
+  if (!material || material->pbrMetallicRoughness.baseColorFactor.size() < 4) return glm::vec4(1.0f);
+  const auto& f = material->pbrMetallicRoughness.baseColorFactor;
+  return glm::clamp(glm::vec4(f[0], f[1], f[2], f[3]), 0.0f, 1.0f);
+}
+
+SurfaceTexture::Wrap wrap_mode(int gl_wrap) {
+  if (gl_wrap == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return SurfaceTexture::Wrap::clamp;
+  if (gl_wrap == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return SurfaceTexture::Wrap::mirror;
+  return SurfaceTexture::Wrap::repeat;
+}
+
+// What the file has that ecoview does not use, for its one line at load.
+std::string ignored_features(const tinygltf::Model& model) {
+  std::vector<std::string> ignored;
+  if (!model.skins.empty()) ignored.push_back("skins");
+  if (!model.animations.empty()) ignored.push_back("animations");
+  for (const tinygltf::Mesh& mesh : model.meshes) {
+    if (std::any_of(mesh.primitives.begin(), mesh.primitives.end(), [](const tinygltf::Primitive& p) { return !p.targets.empty(); })) {
+      ignored.push_back("morph targets");
+      break;
+    }
+  }
+  const auto any_material = [&](auto has) { return std::any_of(model.materials.begin(), model.materials.end(), has); };
+  if (any_material([](const tinygltf::Material& m) { return m.alphaMode == "BLEND"; })) ignored.push_back("alpha blending (drawn as MASK at 0.5)");
+  if (any_material([](const tinygltf::Material& m) { return m.normalTexture.index >= 0; })) ignored.push_back("normal maps");
+  if (any_material([](const tinygltf::Material& m) { return m.emissiveTexture.index >= 0; })) ignored.push_back("emission");
+  if (any_material([](const tinygltf::Material& m) { return m.pbrMetallicRoughness.baseColorTexture.index >= 0 &&
+                                                            m.pbrMetallicRoughness.baseColorTexture.texCoord != 0; })) {
+    ignored.push_back("texture coordinate sets other than TEXCOORD_0 (TEXCOORD_0 used)");
+  }
+  for (const std::string& extension : model.extensionsUsed) ignored.push_back(extension);
+  std::string line;
+  for (const std::string& what : ignored) line += (line.empty() ? "" : ", ") + what;
+  return line;
 }
 
 // Triangle list indices for a primitive of any triangle mode.
@@ -357,7 +431,8 @@ class MeshBuilder {
       part.normals = vertex_normals(part.positions, part.indices);
     }
 
-    const glm::vec3 tint = base_color(model_, primitive.material);
+    const tinygltf::Material* material = material_of(model_, primitive.material);
+    const glm::vec3 tint(base_color(material));
     part.colors.assign(n, tint);
     const auto color = primitive.attributes.find("COLOR_0");
     if (color != primitive.attributes.end()) {
@@ -372,23 +447,75 @@ class MeshBuilder {
         part.colors[i] = tint * glm::clamp(glm::vec3(c[0], c[1], c[2]), 0.0f, 1.0f);
       }
     }
+    add_material(part, primitive, material);
     return part;
+  }
+
+  // The base-colour texture and alpha mask of a primitive's material, when it has either.
+  void add_material(TriangleMesh& part, const tinygltf::Primitive& primitive, const tinygltf::Material* material) const {
+    if (!material) return;
+    SurfaceMaterial surface;
+    surface.alpha = base_color(material).a;
+    if (material->alphaMode == "MASK") surface.alpha_cutoff = static_cast<float>(std::clamp(material->alphaCutoff, 0.0, 1.0));
+    if (material->alphaMode == "BLEND") surface.alpha_cutoff = 0.5f;
+    const auto texcoord = primitive.attributes.find("TEXCOORD_0");
+    const int texture = material->pbrMetallicRoughness.baseColorTexture.index;
+    if (texture >= 0 && texcoord != primitive.attributes.end()) surface.texture = texture_of(texture);
+    if (!surface.texture && !surface.masked()) return;
+    const std::size_t n = part.positions.size();
+    part.texcoords.assign(n, glm::vec2(0.0f));
+    if (texcoord != primitive.attributes.end()) {
+      const std::vector<float> uv = reader_.floats(texcoord->second, 2, "TEXCOORD_0");
+      if (uv.size() != 2 * n) reader_.fail("TEXCOORD_0 and POSITION counts differ");
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(uv[2 * i]) || !std::isfinite(uv[2 * i + 1])) reader_.fail("a TEXCOORD_0 value is NaN or infinite");
+        part.texcoords[i] = {uv[2 * i], uv[2 * i + 1]};
+      }
+    }
+    part.materials = {SurfaceMaterial{}, surface};
+    part.vertex_materials.assign(n, 1u);
+  }
+
+  // The texture's image with its sampler's wrap modes, decoded once however many materials use it.
+  std::shared_ptr<const SurfaceTexture> texture_of(int index) const {
+    if (static_cast<std::size_t>(index) >= model_.textures.size()) reader_.fail("texture " + std::to_string(index) + " does not exist");
+    const tinygltf::Texture& texture = model_.textures[static_cast<std::size_t>(index)];
+    if (texture.source < 0 || static_cast<std::size_t>(texture.source) >= model_.images.size()) {
+      reader_.fail("texture " + std::to_string(index) + " has no image");
+    }
+    auto& cached = textures_[index];
+    if (cached) return cached;
+    const tinygltf::Image& image = model_.images[static_cast<std::size_t>(texture.source)];
+    auto surface = std::make_shared<SurfaceTexture>();
+    surface->width = image.width;
+    surface->height = image.height;
+    surface->rgba = image.image;
+    if (texture.sampler >= 0 && static_cast<std::size_t>(texture.sampler) < model_.samplers.size()) {
+      surface->wrap_s = wrap_mode(model_.samplers[static_cast<std::size_t>(texture.sampler)].wrapS);
+      surface->wrap_t = wrap_mode(model_.samplers[static_cast<std::size_t>(texture.sampler)].wrapT);
+    }
+    if (surface->rgba.size() != 4 * static_cast<std::size_t>(surface->width) * static_cast<std::size_t>(surface->height)) {
+      reader_.fail("image " + std::to_string(texture.source) + " was not decoded");
+    }
+    return cached = std::move(surface);
   }
 
   const tinygltf::Model& model_;
   AccessorReader reader_;
   TriangleMesh mesh_;
   std::set<int> visited_;
+  mutable std::map<int, std::shared_ptr<const SurfaceTexture>> textures_;
 };
 
 }  // namespace
 
-TriangleMesh load_gltf(const std::string& path, const std::string& bytes, const ReadFile& read) {
+TriangleMesh load_gltf(const std::string& path, const std::string& bytes, const ReadFile& read, const Note& note) {
   FileAccess access{&read};
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&FileAccess::exists, &FileAccess::expand, &FileAccess::read_whole,
                          &FileAccess::no_write, &access});
-  loader.SetImageLoader(&skip_image, nullptr);
+  ImageDecoding decoding;
+  loader.SetImageLoader(&decode_image, &decoding);
   tinygltf::Model model;
   std::string error, warning;
   const std::string base_dir = std::filesystem::path(path).parent_path().string();
@@ -399,6 +526,9 @@ TriangleMesh load_gltf(const std::string& path, const std::string& bytes, const 
                                            static_cast<unsigned int>(bytes.size()), base_dir)
              : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(),
                                           static_cast<unsigned int>(bytes.size()), base_dir);
+  if (!ok && decoding.failed_image >= 0) {
+    throw FileError(path, "image " + std::to_string(decoding.failed_image) + " " + decoding.problem);
+  }
   if (!ok) {
     const std::string first_line = error.substr(0, error.find('\n'));
     throw FileError(path, "not a valid glTF file: " + (first_line.empty() ? "parse failed" : first_line));
@@ -419,6 +549,9 @@ TriangleMesh load_gltf(const std::string& path, const std::string& bytes, const 
     for (std::size_t i = 0; i < model.nodes.size(); ++i) {
       if (!is_child[i]) builder.add_node(static_cast<int>(i), glm::mat4(1.0f));
     }
+  }
+  if (note) {
+    if (const std::string ignored = ignored_features(model); !ignored.empty()) note(path + ": ignored: " + ignored);
   }
   return builder.take();
 }

@@ -27,7 +27,7 @@ void check_mesh(const std::string& path, const TriangleMesh& mesh) {
 
 }  // namespace
 
-TriangleMesh load_mesh_file(const std::string& path, const ReadFile& read) {
+TriangleMesh load_mesh_file(const std::string& path, const ReadFile& read, const Note& note) {
   const std::optional<std::string> bytes = read(path);
   if (!bytes) throw FileError(path, "no such file (or not a readable one)");
   // OpenMesh reserves for counts an empty file never gave: it is refused before any reader sees it.
@@ -35,7 +35,7 @@ TriangleMesh load_mesh_file(const std::string& path, const ReadFile& read) {
   const std::string ext = lower_extension(path);
   TriangleMesh mesh;
   if (ext == ".gltf" || ext == ".glb") {
-    mesh = load_gltf(path, *bytes, read);
+    mesh = load_gltf(path, *bytes, read, note);
   } else if (ext == ".obj" || ext == ".ply" || ext == ".off") {
     mesh = load_openmesh_format(path, *bytes);
   } else {

@@ -1,5 +1,7 @@
 #include "pointgen/triangle_mesh.hpp"
 
+#include <set>
+
 namespace pointgen {
 
 Bounds TriangleMesh::bounds() const {
@@ -17,6 +19,31 @@ void TriangleMesh::append(const TriangleMesh& other, const glm::mat4& transform)
     colors.push_back(other.colors[i]);
   }
   for (std::uint32_t index : other.indices) indices.push_back(base + index);
+  if (materials.empty() && other.materials.empty()) return;
+  if (materials.empty()) {
+    materials.push_back({});
+    texcoords.assign(base, glm::vec2(0.0f));
+    vertex_materials.assign(base, 0u);
+  }
+  if (other.materials.empty()) {
+    texcoords.resize(positions.size(), glm::vec2(0.0f));
+    vertex_materials.resize(positions.size(), 0u);
+    return;
+  }
+  const auto shift = static_cast<std::uint32_t>(materials.size() - 1);  // both meshes' material 0 is the plain one
+  materials.insert(materials.end(), other.materials.begin() + 1, other.materials.end());
+  texcoords.insert(texcoords.end(), other.texcoords.begin(), other.texcoords.end());
+  for (std::uint32_t m : other.vertex_materials) vertex_materials.push_back(m == 0 ? 0 : m + shift);
+}
+
+std::size_t TriangleMesh::texture_bytes() const {
+  std::set<const SurfaceTexture*> textures;
+  for (const SurfaceMaterial& material : materials) {
+    if (material.texture) textures.insert(material.texture.get());
+  }
+  std::size_t bytes = 0;
+  for (const SurfaceTexture* texture : textures) bytes += texture->bytes();
+  return bytes;
 }
 
 std::vector<glm::vec3> vertex_normals(const std::vector<glm::vec3>& positions,

@@ -1,4 +1,6 @@
 #pragma once
+#include "pointgen/surface_texture.hpp"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -26,8 +28,16 @@ struct TriangleMesh {
   std::vector<glm::vec3> normals;
   std::vector<glm::vec3> colors;
   std::vector<std::uint32_t> indices;  // three per triangle
+  // Meshes with textures or alpha masks (glTF materials): per vertex a texture coordinate and
+  // the index of its material; all three empty for meshes of vertex colours alone. Material 0 is
+  // always the plain one (vertex colours, opaque), for vertices without a material of their own.
+  std::vector<glm::vec2> texcoords;
+  std::vector<std::uint32_t> vertex_materials;
+  std::vector<SurfaceMaterial> materials;
 
   std::size_t triangle_count() const { return indices.size() / 3; }
+  // Bytes of its materials' texture images, each counted once.
+  std::size_t texture_bytes() const;
   Bounds bounds() const;
   // Appends `other`, its vertices moved by `transform`.
   void append(const TriangleMesh& other, const glm::mat4& transform = glm::mat4(1.0f));

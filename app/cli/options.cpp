@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <regex>
 
 namespace ecoview {
@@ -188,8 +189,10 @@ Scene load_scene_option(const std::string& scene, double memory_budget_gib) {
   if (!std::isfinite(memory_budget_gib) || memory_budget_gib <= 0.0) {
     throw InputError("--memory-budget: must be a positive number of GiB");
   }
-  return load_scene(open_input(scene.empty() ? default_scene_name : scene, "scenes"),
-                    {memory_budget_gib * 1024.0 * 1024.0 * 1024.0});
+  Scene loaded = load_scene(open_input(scene.empty() ? default_scene_name : scene, "scenes"),
+                             {memory_budget_gib * 1024.0 * 1024.0 * 1024.0});
+  for (const std::string& note : loaded.notes) std::cerr << "ecoview: note: " << note << "\n";
+  return loaded;
 }
 
 const shadow::Light& select_light(const Scene& scene, int index) {

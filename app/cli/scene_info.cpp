@@ -16,10 +16,14 @@ double resident_mib() {
 }
 
 std::string describe_scene(const Scene& scene, double load_seconds) {
-  char text[256];
-  std::snprintf(text, sizeof text, "scene: %s: %zu instances, %.3g triangles as polygons, %zu meshes; loaded in %.2f s, %.0f MiB resident",
+  char textures[64] = "";
+  if (const std::size_t bytes = scene.texture_bytes(); bytes > 0) {
+    std::snprintf(textures, sizeof textures, ", %.3g MiB of textures", static_cast<double>(bytes) / (1024.0 * 1024.0));
+  }
+  char text[512];
+  std::snprintf(text, sizeof text, "scene: %s: %zu instances, %.3g triangles as polygons, %zu meshes%s; loaded in %.2f s, %.0f MiB resident",
                 scene.name.c_str(), scene.instance_count(), static_cast<double>(scene.triangle_count()), scene.meshes.size(),
-                load_seconds, resident_mib());
+                textures, load_seconds, resident_mib());
   return text;
 }
 

@@ -38,6 +38,7 @@ PointSamples::PointSamples(const Scene& scene, float points_per_triangle, bool p
     if (points && scene.point_meshes[m]) {
       info.samples = std::min(max_samples, static_cast<std::size_t>(std::ceil(list_per_polygon_equivalent * points_per_triangle * static_cast<float>(info.triangles))));
       const std::vector<pointgen::SurfaceSample> samples = pointgen::sample_surface(mesh, info.samples, pointgen::derive_seed(0x5a3, m));
+      info.samples = samples.size();  // shorter where an alpha mask keeps little of the mesh
       std::vector<glm::vec3> sample_normals;
       for (const pointgen::SurfaceSample& s : samples) {
         info.sample_positions.push_back(s.position);

@@ -41,4 +41,10 @@ std::size_t Scene::instance_count() const {
   return count;
 }
 
+std::size_t Scene::texture_bytes() const {
+  std::size_t bytes = 0;
+  for (const pointgen::TriangleMesh& mesh : meshes) bytes += mesh.texture_bytes();
+  return bytes;
+}
+
 }  // namespace ecoview

@@ -30,6 +30,8 @@ struct Scene {
   std::vector<bool> point_meshes;
   std::vector<pointgen::InstanceTable> groups;  // each drawn with one instanced call; moving ones posed at t = 0
   std::vector<Animation> animations;
+  // What the scene's files have that is not used, a line per file, for the user.
+  std::vector<std::string> notes;
 
   // Bounds of everything at any time.
   shadow::Box bounds() const;
@@ -38,6 +40,8 @@ struct Scene {
   std::size_t instance_count() const;
   // Whether any mesh may be drawn as points (a scene without one renders the same with points off).
   bool has_point_meshes() const;
+  // Bytes of the meshes' textures, each counted once.
+  std::size_t texture_bytes() const;
 };
 
 }  // namespace ecoview

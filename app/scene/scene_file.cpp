@@ -111,11 +111,14 @@ class SceneBuilder {
     const auto it = files_.find(key);
     if (it != files_.end()) return it->second;
     try {
-      scene_.meshes.push_back(pointgen::load_mesh_file(key.first, source_.read_relative));
+      scene_.meshes.push_back(pointgen::load_mesh_file(key.first, source_.read_relative,
+                                                       [this](const std::string& line) { scene_.notes.push_back(line); }));
     } catch (const pointgen::FileError& e) {
       field.fail(e.what());
     }
     const std::size_t mesh = scene_.meshes.size() - 1;
+    // Its textures decoded, and again as mipmapped GL textures (4/3 of the image each).
+    reserve_memory(field, (1.0 + 4.0 / 3.0) * static_cast<double>(scene_.meshes[mesh].texture_bytes()));
     if (points) mark_point_meshes(mesh, mesh + 1);
     return files_[key] = mesh;
   }

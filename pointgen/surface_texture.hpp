@@ -1,0 +1,37 @@
+#pragma once
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace pointgen {
+
+// A material's base-colour image (glTF baseColorTexture): 8-bit RGBA, colour in sRGB, alpha
+// linear, row 0 at texture coordinate v = 0, looked up as GL does with its sampler's wrap modes.
+struct SurfaceTexture {
+  enum class Wrap { repeat, clamp, mirror };
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgba;  // width × height × 4
+  Wrap wrap_s = Wrap::repeat, wrap_t = Wrap::repeat;
+
+  // Bilinear between the four texels around `uv` (GL_LINEAR on the full image): linear RGB and alpha.
+  glm::vec4 sample(glm::vec2 uv) const;
+  std::size_t bytes() const { return rgba.size(); }
+};
+
+// How a surface is coloured and cut beyond its vertex colours: a texture multiplied in, and an
+// alpha mask (glTF alphaMode MASK): the surface exists only where texture alpha × `alpha` is at
+// least `alpha_cutoff`.
+struct SurfaceMaterial {
+  std::shared_ptr<const SurfaceTexture> texture;  // none: vertex colours alone
+  float alpha = 1.0f;                             // the base colour factor's alpha
+  float alpha_cutoff = 0.0f;                      // 0: opaque, no mask
+
+  bool masked() const { return alpha_cutoff > 0.0f; }
+  // Linear RGB to multiply the vertex colour by, and whether the mask keeps the surface, at `uv`.
+  glm::vec3 color_at(glm::vec2 uv) const;
+  bool keeps(glm::vec2 uv) const;
+};
+
+}  // namespace pointgen
