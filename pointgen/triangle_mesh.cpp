@@ -1,5 +1,6 @@
 #include "pointgen/triangle_mesh.hpp"
 
+#include <algorithm>
 #include <set>
 
 namespace pointgen {
@@ -34,6 +35,10 @@ void TriangleMesh::append(const TriangleMesh& other, const glm::mat4& transform)
   materials.insert(materials.end(), other.materials.begin() + 1, other.materials.end());
   texcoords.insert(texcoords.end(), other.texcoords.begin(), other.texcoords.end());
   for (std::uint32_t m : other.vertex_materials) vertex_materials.push_back(m == 0 ? 0 : m + shift);
+}
+
+bool TriangleMesh::masked() const {
+  return std::any_of(materials.begin(), materials.end(), [](const SurfaceMaterial& m) { return m.masked(); });
 }
 
 std::size_t TriangleMesh::texture_bytes() const {

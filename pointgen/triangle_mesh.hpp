@@ -36,6 +36,8 @@ struct TriangleMesh {
   std::vector<SurfaceMaterial> materials;
 
   std::size_t triangle_count() const { return indices.size() / 3; }
+  // Whether an alpha mask cuts any of its surface away.
+  bool masked() const;
   // Bytes of its materials' texture images, each counted once.
   std::size_t texture_bytes() const;
   Bounds bounds() const;

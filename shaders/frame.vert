@@ -3,6 +3,11 @@ layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 vertex_color;
 #include "instance.glsl"
+#ifdef SURFACE_TEXTURES
+layout(location = 11) in vec4 surface;  // texture coordinate, material code, alpha threshold
+out vec2 surface_uv;
+flat out vec2 surface_material;
+#endif
 
 uniform mat4 view;
 uniform mat4 view_projection;
@@ -16,5 +21,9 @@ void main() {
   world_normal = instance_normal_matrix() * normal;
   albedo = vertex_color * instance_color();
   view_depth = -(view * world).z;
+#ifdef SURFACE_TEXTURES
+  surface_uv = surface.xy;
+  surface_material = surface.zw;
+#endif
   gl_Position = view_projection * world;
 }

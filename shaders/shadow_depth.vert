@@ -3,8 +3,18 @@
 layout(location = 0) in vec3 position;
 #include "instance.glsl"
 
+#ifdef SURFACE_TEXTURES
+layout(location = 11) in vec4 surface;  // texture coordinate, material code, alpha threshold
+out vec2 surface_uv;
+flat out vec2 surface_material;
+#endif
+
 uniform mat4 light_view_projection;
 
 void main() {
   gl_Position = light_view_projection * (instance_model() * vec4(position, 1.0));
+#ifdef SURFACE_TEXTURES
+  surface_uv = surface.xy;
+  surface_material = surface.zw;
+#endif
 }

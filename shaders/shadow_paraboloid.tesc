@@ -6,6 +6,10 @@ layout(vertices = 3) out;
 
 in vec3 world_position[];
 out vec3 patch_position[];
+#ifdef SURFACE_TEXTURES
+in vec4 vertex_surface[];
+out vec4 patch_surface[];
+#endif
 
 uniform mat4 light_view;
 
@@ -21,6 +25,9 @@ float pieces(int a, int b) {
 
 void main() {
   patch_position[gl_InvocationID] = world_position[gl_InvocationID];
+#ifdef SURFACE_TEXTURES
+  patch_surface[gl_InvocationID] = vertex_surface[gl_InvocationID];
+#endif
   if (gl_InvocationID == 0) {
     // Outer level i is the edge opposite corner i.
     gl_TessLevelOuter[0] = pieces(1, 2);

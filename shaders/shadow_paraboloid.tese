@@ -2,6 +2,11 @@
 layout(triangles, equal_spacing, ccw) in;
 
 in vec3 patch_position[];
+#ifdef SURFACE_TEXTURES
+in vec4 patch_surface[];
+out vec2 surface_uv;
+flat out vec2 surface_material;
+#endif
 
 uniform mat4 light_view;
 uniform vec2 paraboloid;  // zoom, range
@@ -16,4 +21,8 @@ void main() {
   // cover the whole map.
   vec3 q = (light_view * vec4(p, 1.0)).xyz;
   gl_ClipDistance[0] = 0.5 - q.z / max(length(q), 1e-20);
+#ifdef SURFACE_TEXTURES
+  surface_uv = gl_TessCoord.x * patch_surface[0].xy + gl_TessCoord.y * patch_surface[1].xy + gl_TessCoord.z * patch_surface[2].xy;
+  surface_material = patch_surface[0].zw;
+#endif
 }

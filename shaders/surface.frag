@@ -7,14 +7,26 @@ in vec3 world_normal;
 in vec3 albedo;
 in float view_depth;
 
+#ifdef SURFACE_TEXTURES
+#include "surface_texture.glsl"
+in vec2 surface_uv;
+flat in vec2 surface_material;
+#endif
+
 layout(location = 0) out vec4 out_normal;  // world, facing the viewer
 layout(location = 1) out vec4 out_albedo;  // linear RGB
 layout(location = 2) out float out_depth;  // linear view depth, metres (the `depth` AOV)
 
 void main() {
+  vec3 color = albedo;
+#ifdef SURFACE_TEXTURES
+  vec4 texel = surface_texel(surface_uv, surface_material.x);
+  if (texel.a < surface_material.y) discard;  // cut away by the alpha mask
+  color *= texel.rgb;
+#endif
   vec3 n = normalize(world_normal);
   if (!gl_FrontFacing) n = -n;  // thin surfaces are lit from either side
   out_normal = vec4(n, 0.0);
-  out_albedo = vec4(albedo, 1.0);
+  out_albedo = vec4(color, 1.0);
   out_depth = view_depth;
 }

@@ -63,6 +63,8 @@ GLenum stage_of(const std::string& file) {
 
 }  // namespace
 
+std::string surface_defines(bool surface_textures) { return surface_textures ? "#define SURFACE_TEXTURES\n" : ""; }
+
 Program build_program(const std::vector<std::string>& files, const std::string& defines) {
   std::vector<Shader> shaders;
   std::string names;

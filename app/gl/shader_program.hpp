@@ -12,6 +12,9 @@ namespace ecoview::gl {
 // names: .vert, .tesc, .tese, .geom, .frag, or .comp alone. `defines` (lines of `#define NAME
 // VALUE`) go into each file after its `#version` line.
 Program build_program(const std::vector<std::string>& files, const std::string& defines = {});
+// The define of the programs that draw polygons with textures and alpha masks
+// (shaders/surface_texture.glsl): empty when the scene has none.
+std::string surface_defines(bool surface_textures);
 
 // Uniform setters by name; a name the linker dropped is ignored, as GL does.
 void set_uniform(const Program& program, const char* name, const glm::mat4& value);

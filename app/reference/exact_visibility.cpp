@@ -18,6 +18,20 @@ constexpr float origin_offset = 2e-4f;
 
 glm::mat3 normal_matrix(const glm::mat4x3& transform) { return glm::transpose(glm::inverse(glm::mat3(transform))); }
 
+// Refuses the hits where the mesh's alpha mask cuts its surface away: the rays pass there, as the
+// maps' depth passes discard there.
+void pass_masked_away(const RTCFilterFunctionNArguments* args) {
+  const auto& mesh = *static_cast<const pointgen::TriangleMesh*>(args->geometryUserPtr);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] != -1) continue;
+    const float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
+    const std::size_t t = 3 * static_cast<std::size_t>(RTCHitN_primID(args->hit, args->N, i));
+    const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+    const glm::vec2 uv = (1.0f - u - v) * mesh.texcoords[a] + u * mesh.texcoords[b] + v * mesh.texcoords[c];
+    if (!mesh.materials[mesh.vertex_materials[a]].keeps(uv)) args->valid[i] = 0;
+  }
+}
+
 RTCScene mesh_scene(RTCDevice device, const pointgen::TriangleMesh& mesh) {
   if (mesh.triangle_count() == 0) return nullptr;
   RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -28,6 +42,11 @@ RTCScene mesh_scene(RTCDevice device, const pointgen::TriangleMesh& mesh) {
   auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                                                  3 * sizeof(unsigned), mesh.triangle_count()));
   std::copy(mesh.indices.begin(), mesh.indices.end(), indices);
+  if (mesh.masked()) {
+    rtcSetGeometryUserData(geometry, const_cast<pointgen::TriangleMesh*>(&mesh));
+    rtcSetGeometryIntersectFilterFunction(geometry, pass_masked_away);
+    rtcSetGeometryOccludedFilterFunction(geometry, pass_masked_away);
+  }
   rtcCommitGeometry(geometry);
   RTCScene scene = rtcNewScene(device);
   rtcAttachGeometry(scene, geometry);

@@ -8,5 +8,7 @@ namespace ecoview {
 // shaders/sample_common.glsl, shaders/depth_pyramid.glsl).
 inline constexpr GLuint instance_texels_unit = 8, position_texels_unit = 9, normal_texels_unit = 10, color_texels_unit = 11,
                         mesh_texels_unit = 12, plant_mesh_texels_unit = 13, pyramid_texels_unit = 14;
+// The meshes' base-colour textures, a texture array (shaders/surface_texture.glsl).
+inline constexpr GLuint surface_texture_unit = 15;
 
 }  // namespace ecoview

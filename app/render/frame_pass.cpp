@@ -54,12 +54,12 @@ void attach(const gl::Framebuffer& framebuffer, std::initializer_list<const gl::
 
 }  // namespace
 
-FramePass::FramePass(int width, int height, bool aliasing)
+FramePass::FramePass(int width, int height, bool aliasing, bool surface_textures)
     : width_(width),
       height_(height),
       aliasing_wanted_(aliasing),
-      surface_program_(gl::build_program({"frame.vert", "surface.frag"})),
-      plant_surface_program_(gl::build_program({"frame.vert", "surface.frag"}, "#define PLANT_INDEX\n")),
+      surface_program_(gl::build_program({"frame.vert", "surface.frag"}, gl::surface_defines(surface_textures))),
+      plant_surface_program_(gl::build_program({"frame.vert", "surface.frag"}, gl::surface_defines(surface_textures) + "#define PLANT_INDEX\n")),
       point_program_(gl::build_program({"fullscreen.vert", "point_surface.frag"})) {
   glNamedBufferStorage(nearest_.name(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(histograms_.name(), most_predicted_setups * histogram_bins * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);

@@ -24,7 +24,8 @@ namespace ecoview {
 class FramePass {
  public:
   // `aliasing`: also fill the aliasing target (it costs shading time; otherwise it holds 0).
-  FramePass(int width, int height, bool aliasing);
+  // `surface_textures`: the scene has textures or alpha masks (GpuScene::has_surface_textures).
+  FramePass(int width, int height, bool aliasing, bool surface_textures);
 
   // Clears the frame and draws the polygons' surfaces.
   void draw_surfaces(const GpuScene& scene, const shadow::Camera& camera) const;

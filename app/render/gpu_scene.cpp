@@ -39,7 +39,7 @@ void attribute(GLuint vao, GLuint location, GLuint binding, GLint size, GLuint o
 
 }  // namespace
 
-GpuScene::GpuScene(const Scene& scene) {
+GpuScene::GpuScene(const Scene& scene) : textures_(scene.meshes) {
   for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
     const pointgen::TriangleMesh& mesh = scene.meshes[i];
     std::vector<Vertex> vertices;
@@ -48,6 +48,7 @@ GpuScene::GpuScene(const Scene& scene) {
     }
     Mesh& m = meshes_.emplace_back();
     gl::store(m.vertices, vertices);
+    if (!mesh.materials.empty()) gl::store(m.surfaces.emplace(), textures_.vertex_surfaces(mesh));
     m.vertex_count = static_cast<GLsizei>(vertices.size());
     m.index_count = static_cast<GLsizei>(mesh.indices.size());
     places_.emplace_back();
@@ -76,20 +77,25 @@ GpuScene::GpuScene(const Scene& scene) {
     g.whole = {0, g.instance_count};
     g.capacity = instances.size();
 
-    set_attributes(g.vertex_array.name(), mesh.vertices.name(), mesh.indices.name(), g.instances.name());
+    set_attributes(g.vertex_array.name(), mesh, g.instances.name());
   }
 }
 
-void GpuScene::set_vertex_attributes(GLuint vao, GLuint vertices, GLuint indices) {
+// `surfaces` 0: the mesh has no materials, and attribute 11 keeps GL's default (0, 0, 0, 1): no
+// texture, an alpha threshold the white texel passes.
+void GpuScene::set_vertex_attributes(GLuint vao, GLuint vertices, GLuint indices, GLuint surfaces) {
   glVertexArrayVertexBuffer(vao, 0, vertices, 0, sizeof(Vertex));
   glVertexArrayElementBuffer(vao, indices);
   attribute(vao, 0, 0, 3, offsetof(Vertex, position));
   attribute(vao, 1, 0, 3, offsetof(Vertex, normal));
   attribute(vao, 2, 0, 3, offsetof(Vertex, color));
+  if (surfaces == 0) return;
+  glVertexArrayVertexBuffer(vao, 2, surfaces, 0, sizeof(glm::vec4));
+  attribute(vao, 11, 2, 4, 0);
 }
 
-void GpuScene::set_attributes(GLuint vao, GLuint vertices, GLuint indices, GLuint instances) {
-  set_vertex_attributes(vao, vertices, indices);
+void GpuScene::set_attributes(GLuint vao, const Mesh& mesh, GLuint instances) {
+  set_vertex_attributes(vao, mesh.vertices.name(), mesh.indices.name(), mesh.surfaces ? mesh.surfaces->name() : 0);
   glVertexArrayVertexBuffer(vao, 1, instances, 0, sizeof(Instance));
   glVertexArrayBindingDivisor(vao, 1, 1);
   for (GLuint c = 0; c < 4; ++c) attribute(vao, 3 + c, 1, 4, offsetof(Instance, model) + c * sizeof(glm::vec4));
@@ -101,8 +107,18 @@ void GpuScene::gather_point_meshes() {
   chosen_ = std::make_unique<Chosen>();
   glNamedBufferStorage(chosen_->vertices.name(), static_cast<GLsizeiptr>(std::max(point_mesh_vertices_, 1)) * sizeof(Vertex), nullptr, 0);
   glNamedBufferStorage(chosen_->indices.name(), static_cast<GLsizeiptr>(std::max(point_mesh_indices_, 1)) * sizeof(GLuint), nullptr, 0);
+  if (textures_.any()) {
+    // Zeros where a point mesh has no materials: no texture, no mask.
+    const std::vector<glm::vec4> none(static_cast<std::size_t>(std::max(point_mesh_vertices_, 1)), glm::vec4(0.0f));
+    gl::store(chosen_->surfaces.emplace(), none);
+  }
   for (std::size_t m = 0; m < meshes_.size(); ++m) {
     if (!meshes_[m].point_mesh) continue;
+    if (meshes_[m].surfaces) {
+      glCopyNamedBufferSubData(meshes_[m].surfaces->name(), chosen_->surfaces->name(), 0,
+                               static_cast<GLintptr>(places_[m].base_vertex) * static_cast<GLintptr>(sizeof(glm::vec4)),
+                               static_cast<GLsizeiptr>(meshes_[m].vertex_count) * static_cast<GLsizeiptr>(sizeof(glm::vec4)));
+    }
     glCopyNamedBufferSubData(meshes_[m].vertices.name(), chosen_->vertices.name(), 0,
                              static_cast<GLintptr>(places_[m].base_vertex) * static_cast<GLintptr>(sizeof(Vertex)),
                              static_cast<GLsizeiptr>(meshes_[m].vertex_count) * static_cast<GLsizeiptr>(sizeof(Vertex)));
@@ -112,7 +128,8 @@ void GpuScene::gather_point_meshes() {
   }
   // An instance is a plant index (shaders/instance.glsl, PLANT_INDEX), from the list a draw names.
   const GLuint vao = chosen_->vertex_array.name();
-  set_vertex_attributes(vao, chosen_->vertices.name(), chosen_->indices.name());
+  set_vertex_attributes(vao, chosen_->vertices.name(), chosen_->indices.name(),
+                        chosen_->surfaces ? chosen_->surfaces->name() : 0);
   glVertexArrayBindingDivisor(vao, 1, 1);
   glEnableVertexArrayAttrib(vao, 3);
   glVertexArrayAttribIFormat(vao, 3, 1, GL_UNSIGNED_INT, 0);
@@ -126,6 +143,7 @@ void GpuScene::draw_chosen(const PlantDraws& draws, GLenum mode) const {
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws.commands);
   glBindTextureUnit(instance_texels_unit, draws.plants);
   glBindBuffer(GL_PARAMETER_BUFFER_ARB, draws.draw_counts);
+  textures_.bind();
   glBindVertexArray(chosen_->vertex_array.name());
   glMultiDrawElementsIndirectCountARB(mode, GL_UNSIGNED_INT, reinterpret_cast<const void*>(draws.first_command * GpuScene::command_bytes),
                                       static_cast<GLintptr>(draws.count_slot * sizeof(GLuint)),
@@ -173,6 +191,7 @@ void GpuScene::update(std::size_t group, const pointgen::InstanceTable& table, c
 }
 
 void GpuScene::draw(GLenum mode, Parts parts) const {
+  textures_.bind();
   for (const Group& group : groups_) {
     const Mesh& mesh = meshes_[group.mesh];
     glBindVertexArray(group.vertex_array.name());

@@ -1,8 +1,10 @@
 #pragma once
 #include "app/gl/gl_objects.hpp"
+#include "app/render/surface_textures.hpp"
 #include "app/scene/scene.hpp"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace ecoview {
@@ -10,8 +12,9 @@ namespace ecoview {
 
 // The scene's meshes and instance tables in GL buffers: each mesh once, drawn with one instanced
 // call per group, or per polygon part of a point mesh (pointgen::split_triangles) when the sampler
-// chose parts. Vertex attributes: 0 position, 1 normal, 2 colour; per instance: 3–6 model matrix,
-// 7–9 normal matrix, 10 colour.
+// chose parts. Vertex attributes: 0 position, 1 normal, 2 colour, 11 texture coordinate and
+// material (meshes with materials: SurfaceTextures); per instance: 3–6 model matrix, 7–9 normal
+// matrix, 10 colour.
 class GpuScene {
  public:
   // Plants drawn as polygons (a GpuSampler's): the plants resident on the GPU as a buffer texture
@@ -27,6 +30,8 @@ class GpuScene {
   static constexpr std::size_t command_bytes = 5 * sizeof(GLuint);  // DrawElementsIndirectCommand
 
   explicit GpuScene(const Scene& scene);
+  // Whether programs that draw the scene need their SURFACE_TEXTURES variant (textures, masks).
+  bool has_surface_textures() const { return textures_.any(); }
   enum class Parts { chosen, all };
   // `mode` GL_PATCHES (of 3 vertices) for programs that tessellate. `all`: every instance whole,
   // whatever parts were chosen (shadow volumes need the casters the camera does not see).
@@ -57,6 +62,7 @@ class GpuScene {
   };
   struct Mesh {
     gl::Buffer vertices;
+    std::optional<gl::Buffer> surfaces;  // texture coordinates and materials, of a mesh with materials
     gl::Buffer indices;
     GLsizei vertex_count = 0, index_count = 0;
     bool point_mesh = false;
@@ -73,9 +79,10 @@ class GpuScene {
     std::vector<Range> part_instances;
     std::size_t capacity = 0;
   };
-  static void set_vertex_attributes(GLuint vertex_array, GLuint vertices, GLuint indices);
-  static void set_attributes(GLuint vertex_array, GLuint vertices, GLuint indices, GLuint instances);
+  static void set_vertex_attributes(GLuint vertex_array, GLuint vertices, GLuint indices, GLuint surfaces);
+  static void set_attributes(GLuint vertex_array, const Mesh& mesh, GLuint instances);
   void reserve(Group& group, std::size_t instances);
+  SurfaceTextures textures_;
   std::vector<Mesh> meshes_;
   std::vector<Group> groups_;
   std::vector<DrawPlace> places_;
@@ -83,6 +90,7 @@ class GpuScene {
   // The point meshes in one buffer each, for draw_chosen (gather_point_meshes).
   struct Chosen {
     gl::Buffer vertices, indices;
+    std::optional<gl::Buffer> surfaces;  // when a mesh has materials
     gl::VertexArray vertex_array;
   };
   std::unique_ptr<Chosen> chosen_;

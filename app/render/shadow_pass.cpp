@@ -10,13 +10,13 @@ const std::string plant_index = "#define PLANT_INDEX\n";
 
 }  // namespace
 
-ShadowPass::ShadowPass(int size, DepthBias bias)
+ShadowPass::ShadowPass(int size, DepthBias bias, bool surface_textures)
     : size_(size),
       bias_(bias),
-      program_(gl::build_program({"shadow_depth.vert", "shadow_depth.frag"})),
-      plant_program_(gl::build_program({"shadow_depth.vert", "shadow_depth.frag"}, plant_index)),
-      paraboloid_program_(gl::build_program(paraboloid_stages)),
-      plant_paraboloid_program_(gl::build_program(paraboloid_stages, plant_index)) {
+      program_(gl::build_program({"shadow_depth.vert", "shadow_depth.frag"}, gl::surface_defines(surface_textures))),
+      plant_program_(gl::build_program({"shadow_depth.vert", "shadow_depth.frag"}, gl::surface_defines(surface_textures) + plant_index)),
+      paraboloid_program_(gl::build_program(paraboloid_stages, gl::surface_defines(surface_textures))),
+      plant_paraboloid_program_(gl::build_program(paraboloid_stages, gl::surface_defines(surface_textures) + plant_index)) {
   allocate(1);
 }
 

@@ -18,7 +18,9 @@ class ShadowPass {
     float slope = 2.0f;
     float constant = 4.0f;
   };
-  ShadowPass(int size, DepthBias bias);
+  // `surface_textures`: the scene has textures or alpha masks (GpuScene::has_surface_textures),
+  // and masks cut its surfaces out of the map.
+  ShadowPass(int size, DepthBias bias, bool surface_textures);
   // Draws one view of the setup into its layer.
   // With `plants`, also those polygon plants of a GPU sampler.
   void render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const GpuScene::PlantDraws* plants = nullptr);

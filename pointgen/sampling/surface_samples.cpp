@@ -86,10 +86,6 @@ class HaltonPlaces {
   double shift_along_ = 0.0, shift_across_ = 0.0;
 };
 
-bool has_mask(const TriangleMesh& mesh) {
-  return std::any_of(mesh.materials.begin(), mesh.materials.end(), [](const SurfaceMaterial& m) { return m.masked(); });
-}
-
 // Places tried for each sample asked of a masked mesh, at most: a mask that keeps less than
 // 1/64 of its cards gives a shorter list.
 constexpr std::size_t max_tries_per_sample = 64;
@@ -99,7 +95,7 @@ constexpr std::size_t max_tries_per_sample = 64;
 float surface_area(const TriangleMesh& mesh) {
   double area = 0.0;
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) area += triangle_area(mesh, t);
-  if (area <= 0.0 || !has_mask(mesh)) return static_cast<float>(area);
+  if (area <= 0.0 || !mesh.masked()) return static_cast<float>(area);
   // The kept share of a masked surface, from 2^16 places (within about 0.4 % of it).
   const HaltonPlaces places(mesh, 0x4a11);
   constexpr std::size_t tries = std::size_t{1} << 16;
@@ -115,7 +111,7 @@ std::vector<SurfaceSample> sample_surface(const TriangleMesh& mesh, std::size_t 
   samples.reserve(count);
   // Places where a mask cuts the surface away are passed over: every prefix of the list stays a
   // uniform sample of the kept surface.
-  const std::size_t tries = has_mask(mesh) ? max_tries_per_sample * count : count;
+  const std::size_t tries = mesh.masked() ? max_tries_per_sample * count : count;
   for (std::size_t i = 0; i < tries && samples.size() < count; ++i) {
     if (std::optional<SurfaceSample> s = places.at(i)) samples.push_back(*s);
   }

@@ -1,0 +1,92 @@
+#include "app/render/surface_textures.hpp"
+
+#include "app/errors.hpp"
+#include "app/render/buffer_texture_units.hpp"
+
+#include <stb/stb_image_resize.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ecoview {
+namespace {
+
+constexpr int max_layer_side = 2048;
+constexpr int max_layers = 255;  // a code's low byte holds the layer + 1
+
+int wrap_code(pointgen::SurfaceTexture::Wrap wrap) {
+  switch (wrap) {
+    case pointgen::SurfaceTexture::Wrap::clamp: return 1;
+    case pointgen::SurfaceTexture::Wrap::mirror: return 2;
+    case pointgen::SurfaceTexture::Wrap::repeat: break;
+  }
+  return 0;
+}
+
+// The alpha a texel needs for the mask to keep it: texture alpha × the material's alpha ≥ cutoff.
+float alpha_threshold(const pointgen::SurfaceMaterial& material) {
+  if (!material.masked()) return 0.0f;
+  return material.alpha > 0.0f ? std::min(material.alpha_cutoff / material.alpha, 2.0f) : 2.0f;
+}
+
+}  // namespace
+
+SurfaceTextures::SurfaceTextures(const std::vector<pointgen::TriangleMesh>& meshes) {
+  int side = 1;
+  for (const pointgen::TriangleMesh& mesh : meshes) {
+    any_ = any_ || !mesh.materials.empty();
+    for (const pointgen::SurfaceMaterial& material : mesh.materials) {
+      if (!material.texture || layers_.count(material.texture.get())) continue;
+      const int layer = static_cast<int>(layers_.size());
+      layers_[material.texture.get()] = layer;
+      side = std::max({side, material.texture->width, material.texture->height});
+    }
+  }
+  if (layers_.empty()) return;
+  if (layers_.size() > static_cast<std::size_t>(max_layers)) {
+    throw RuntimeFailure("the scene's meshes have " + std::to_string(layers_.size()) + " textures; at most " +
+                         std::to_string(max_layers) + " are supported");
+  }
+  side = std::min(side, max_layer_side);
+  const auto levels = static_cast<GLsizei>(std::floor(std::log2(side))) + 1;
+  glTextureStorage3D(array_.name(), levels, GL_SRGB8_ALPHA8, side, side, static_cast<GLsizei>(layers_.size()));
+  std::vector<std::uint8_t> resized(4 * static_cast<std::size_t>(side) * static_cast<std::size_t>(side));
+  for (const auto& [texture, layer] : layers_) {
+    const std::uint8_t* pixels = texture->rgba.data();
+    if (texture->width != side || texture->height != side) {
+      stbir_resize_uint8_srgb(texture->rgba.data(), texture->width, texture->height, 0, resized.data(), side, side, 0, 4, 3, 0);
+      pixels = resized.data();
+    }
+    glTextureSubImage3D(array_.name(), 0, 0, 0, layer, side, side, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+  }
+  glGenerateTextureMipmap(array_.name());
+  glTextureParameteri(array_.name(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(array_.name(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(array_.name(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // clamp and mirror are the shader's
+  glTextureParameteri(array_.name(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+}
+
+std::vector<glm::vec4> SurfaceTextures::vertex_surfaces(const pointgen::TriangleMesh& mesh) const {
+  std::vector<float> codes, thresholds;
+  for (const pointgen::SurfaceMaterial& material : mesh.materials) {
+    int code = 0;
+    if (material.texture) {
+      code = layers_.at(material.texture.get()) + 1 + 256 * (3 * wrap_code(material.texture->wrap_s) + wrap_code(material.texture->wrap_t));
+    }
+    codes.push_back(static_cast<float>(code));
+    thresholds.push_back(alpha_threshold(material));
+  }
+  std::vector<glm::vec4> surfaces;
+  surfaces.reserve(mesh.positions.size());
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    const std::uint32_t m = mesh.vertex_materials[v];
+    surfaces.emplace_back(mesh.texcoords[v], codes[m], thresholds[m]);
+  }
+  return surfaces;
+}
+
+void SurfaceTextures::bind() const {
+  if (!layers_.empty()) glBindTextureUnit(surface_texture_unit, array_.name());
+}
+
+}  // namespace ecoview

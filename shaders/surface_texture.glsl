@@ -1,0 +1,22 @@
+// A polygon's base-colour texture and alpha mask (SurfaceTextures::vertex_surfaces). Per vertex:
+// its texture coordinate, a code (the texture's layer + 1, 0 for none, plus 256 × (3 × wrap s +
+// wrap t), each wrap 0 repeat, 1 clamp, 2 mirror), and the alpha below which the mask cuts the
+// surface away (0: no mask). Without a texture the texel is white and opaque.
+layout(binding = 15) uniform sampler2DArray surface_textures;
+
+float wrapped(float x, int mode, float half_texel) {
+  if (mode == 1) return clamp(x, half_texel, 1.0 - half_texel);
+  if (mode == 2) return 1.0 - abs(mod(x, 2.0) - 1.0);
+  return x;  // the sampler repeats
+}
+
+vec4 surface_texel(vec2 uv, float code) {
+  vec2 dx = dFdx(uv), dy = dFdy(uv);  // of the unwrapped coordinate, before any branch
+  int c = int(code + 0.5);
+  int layer = (c & 255) - 1;
+  if (layer < 0) return vec4(1.0);
+  int wrap = c >> 8;
+  float half_texel = 0.5 / float(textureSize(surface_textures, 0).x);
+  vec2 w = vec2(wrapped(uv.x, wrap / 3, half_texel), wrapped(uv.y, wrap % 3, half_texel));
+  return textureGrad(surface_textures, vec3(w, float(layer)), dx, dy);
+}
