@@ -3,9 +3,11 @@
 #include "pointgen/movers/moving_set.hpp"
 #include "pointgen/placement/ecosystem.hpp"
 #include "pointgen/placement/poisson_disk.hpp"
+#include "pointgen/primitives.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <set>
 
@@ -43,7 +45,10 @@ EcosystemSpec small_ecosystem(std::uint64_t seed) {
   spec.terrain.seed = derive_seed(seed, 7);
   for (const auto& [name, count] : std::vector<std::pair<const char*, int>>{
            {"oak", 60}, {"spruce", 50}, {"hazel", 120}, {"meadow grass", 900}, {"poppy", 300}}) {
-    spec.plants.push_back({*find_species(name), count, 2});
+    PlantRequest request;
+    request.species = *find_species(name);
+    request.count = count;
+    spec.plants.push_back(request);
   }
   spec.clearings.emplace_back(0.0f, 0.0f, 15.0f);
   return spec;
@@ -165,7 +170,7 @@ TEST(Ecosystem, EachLayerKeepsItsMinimumDistanceAndTreesKeepOutOfClearings) {
   for (int layer = 0; layer < 3; ++layer) {
     std::vector<glm::vec2> points;
     for (const PlantRequest& r : spec.plants) {
-      if (placement_layer(r.species.kind) != layer) continue;
+      if (placement_layer(r) != layer) continue;
       for (const glm::mat4& m : by_species.at(r.species.name)) points.emplace_back(m[3].x, m[3].z);
     }
     const float radius = eco.layer_radius[static_cast<std::size_t>(layer)];
@@ -179,6 +184,35 @@ TEST(Ecosystem, EachLayerKeepsItsMinimumDistanceAndTreesKeepOutOfClearings) {
         EXPECT_GE(glm::distance(points[i], glm::vec2(0.0f)), 15.0f) << "a tree or bush in the clearing";
       }
     }
+  }
+}
+
+// A species from the user's mesh: its mesh as given, one table, its plants among the bushes
+// (keeping the bushes' distance from them), each scaled within its range.
+TEST(Ecosystem, ASpeciesFromAMeshIsPlacedInItsLayerWithinItsScaleRange) {
+  EcosystemSpec spec = small_ecosystem(4);
+  PlantRequest cubes;
+  cubes.species.name = "cube.obj";
+  cubes.count = 40;
+  cubes.mesh = std::make_shared<const TriangleMesh>(unit_box());
+  cubes.layer = 1;
+  cubes.scale = {2.0f, 3.0f};
+  spec.plants.push_back(cubes);
+  const Ecosystem eco = grow_ecosystem(spec);
+  const auto by_species = instances_by_species(eco);
+  ASSERT_EQ(by_species.at("cube.obj").size(), 40u);
+  const auto mesh = std::find(eco.mesh_names.begin(), eco.mesh_names.end(), "cube.obj") - eco.mesh_names.begin();
+  EXPECT_EQ(hash(eco.meshes[static_cast<std::size_t>(mesh)]), hash(unit_box()));
+  std::vector<glm::vec2> bushes;
+  for (const glm::mat4& m : by_species.at("cube.obj")) {
+    const float scale = glm::length(glm::vec3(m[0]));
+    EXPECT_GE(scale, 2.0f - 1e-4f);
+    EXPECT_LE(scale, 3.0f + 1e-4f);
+    bushes.emplace_back(m[3].x, m[3].z);
+  }
+  for (const glm::mat4& m : by_species.at("hazel")) bushes.emplace_back(m[3].x, m[3].z);
+  for (std::size_t i = 0; i < bushes.size(); ++i) {
+    for (std::size_t j = i + 1; j < bushes.size(); ++j) ASSERT_GE(glm::distance(bushes[i], bushes[j]), eco.layer_radius[1] * 0.999f);
   }
 }
 

@@ -88,6 +88,20 @@ TEST(SceneFile, MeshIsLoadedOnceAndDrawnPerTransform) {
   EXPECT_EQ(s.triangle_count(), 12u);
 }
 
+// "points": true makes a file's mesh a point mesh (a species); the same file without it is a
+// mesh of its own, always polygons. An ecosystem's plants may come from the user's file.
+TEST(SceneFile, MeshesFromFilesBecomeSpeciesAsPointsAndInEcosystems) {
+  const Scene s = load_objects(
+      R"({"type": "mesh", "file": "tet.obj", "points": true}, {"type": "mesh", "file": "tet.obj"},
+         {"type": "ecosystem", "size": [40, 40], "plants": [{"file": "tet.obj", "count": 25, "layer": "bushes", "scale": [2, 3]}]})",
+      {{"tet.obj", tetrahedron_obj}});
+  ASSERT_EQ(s.meshes.size(), 4u) << "the file as points, as polygons, the terrain, the ecosystem's species";
+  EXPECT_EQ(s.point_meshes, (std::vector<bool>{true, false, false, true}));
+  EXPECT_EQ(s.meshes[3].triangle_count(), 4u);
+  ASSERT_EQ(s.groups.back().mesh, 3u);
+  EXPECT_EQ(s.groups.back().size(), 25u);
+}
+
 TEST(SceneFile, CameraAndEveryLightTypeKeepTheirFields) {
   const Scene s = load_text(R"({"camera": {"position": [1, 2, 3], "target": [0, 1, 0], "up": [0, 0, 1],
                                            "fov_y_deg": 35, "near": 0.5, "far": 90},
@@ -207,6 +221,13 @@ TEST(SceneFileErrors, MalformedSpeciesAndCrowdsNameTheField) {
                      {"objects[0].plants[0].species", "name"});
   expect_input_error(with_objects(eco + R"({"species": "oak", "count": -1}]})"), {"objects[0].plants[0].count"});
   expect_input_error(with_objects(eco + R"({"species": "oak", "count": 3, "variants": 0}]})"), {"objects[0].plants[0].variants"});
+  const std::map<std::string, std::string> tet{{"tet.obj", tetrahedron_obj}};
+  expect_input_error(with_objects(eco + R"({"file": "tet.obj", "count": 3, "layer": "canopy"}]})"),
+                     {"objects[0].plants[0].layer", "canopy", "trees, bushes, ground"}, tet);
+  expect_input_error(with_objects(eco + R"({"file": "tet.obj", "count": 3, "scale": [2, 1]}]})"), {"objects[0].plants[0].scale"}, tet);
+  expect_input_error(with_objects(eco + R"({"file": "tet.obj", "species": "oak", "count": 3}]})"), {"objects[0].plants[0].file"}, tet);
+  expect_input_error(with_objects(eco + R"({"file": "gone.obj", "count": 3}]})"), {"objects[0].plants[0].file", "gone.obj"});
+  expect_input_error(with_objects(R"({"type": "mesh", "file": "tet.obj", "points": "yes"})"), {"objects[0].points", "true or false"}, tet);
   expect_input_error(with_objects(R"({"type": "crowd", "count": -5, "center": [0, 0, 0], "size": [10, 10]})"),
                      {"objects[0].count"});
   expect_input_error(with_objects(R"({"type": "crowd", "count": 5, "center": [0, 0, 0], "size": [10, 10], "avoid": [[1, 1, 0, 0]]})"),

@@ -33,6 +33,14 @@ pointgen::TerrainSpec read_terrain(const JsonField& field, pointgen::TerrainSpec
   return terrain;
 }
 
+int read_layer(const JsonField& field) {
+  const std::string name = field.string();
+  if (name == "trees") return 0;
+  if (name == "bushes") return 1;
+  if (name == "ground") return 2;
+  field.fail("unknown layer '" + name + "' (known: trees, bushes, ground)");
+}
+
 }  // namespace
 
 pointgen::PlantSpecies read_species(const JsonField& field, const std::vector<pointgen::PlantSpecies>& defined) {
@@ -71,7 +79,7 @@ pointgen::PlantSpecies read_species(const JsonField& field, const std::vector<po
   return s;
 }
 
-pointgen::EcosystemSpec read_ecosystem(const JsonField& field, std::uint64_t scene_seed) {
+pointgen::EcosystemSpec read_ecosystem(const JsonField& field, std::uint64_t scene_seed, const LoadMesh& load_mesh) {
   field.only_keys({"type", "seed", "center", "size", "terrain", "species", "plants", "clearings", "animals"});
   pointgen::EcosystemSpec spec;
   const int own_seed = field.has("seed") ? field["seed"].integer(0, 2147483647) : 0;
@@ -95,11 +103,24 @@ pointgen::EcosystemSpec read_ecosystem(const JsonField& field, std::uint64_t sce
     for (const JsonField& item : list->items()) defined.push_back(read_species(item, defined));
   }
   for (const JsonField& item : field["plants"].items(1)) {
-    item.only_keys({"species", "count", "variants"});
+    item.only_keys({"species", "count", "variants", "file", "layer", "scale"});
     pointgen::PlantRequest request;
-    request.species = read_species(item["species"], defined);
     request.count = item["count"].integer(0, 100000000);
-    if (auto f = item.optional("variants")) request.variants = f->integer(1, 16);
+    if (auto file = item.optional("file")) {
+      if (item.has("species") || item.has("variants")) file->fail("a species from a file has no \"species\" or \"variants\"");
+      request.species.name = file->string();
+      request.mesh = std::make_shared<const pointgen::TriangleMesh>(load_mesh(*file));
+      if (auto f = item.optional("layer")) request.layer = read_layer(*f);
+      if (auto f = item.optional("scale")) {
+        const std::vector<double> range = f->numbers(2, 1e-3, 1e3);
+        if (range[0] > range[1]) f->fail("the smallest scale comes first");
+        request.scale = {range[0], range[1]};
+      }
+    } else {
+      if (item.has("layer") || item.has("scale")) item["species"].fail("\"layer\" and \"scale\" are for species from a \"file\"");
+      request.species = read_species(item["species"], defined);
+      if (auto f = item.optional("variants")) request.variants = f->integer(1, 16);
+    }
     spec.plants.push_back(request);
   }
   return spec;

@@ -110,17 +110,23 @@ class SceneBuilder {
     const std::pair<std::string, bool> key(field.string(), points);
     const auto it = files_.find(key);
     if (it != files_.end()) return it->second;
+    scene_.meshes.push_back(load_file(field));
+    const std::size_t mesh = scene_.meshes.size() - 1;
+    if (points) mark_point_meshes(mesh, mesh + 1);
+    return files_[key] = mesh;
+  }
+
+  pointgen::TriangleMesh load_file(const JsonField& field) {
+    pointgen::TriangleMesh mesh;
     try {
-      scene_.meshes.push_back(pointgen::load_mesh_file(key.first, source_.read_relative,
-                                                       [this](const std::string& line) { scene_.notes.push_back(line); }));
+      mesh = pointgen::load_mesh_file(field.string(), source_.read_relative,
+                                      [this](const std::string& line) { scene_.notes.push_back(line); });
     } catch (const pointgen::FileError& e) {
       field.fail(e.what());
     }
-    const std::size_t mesh = scene_.meshes.size() - 1;
     // Its textures decoded, and again as mipmapped GL textures (4/3 of the image each).
-    reserve_memory(field, (1.0 + 4.0 / 3.0) * static_cast<double>(scene_.meshes[mesh].texture_bytes()));
-    if (points) mark_point_meshes(mesh, mesh + 1);
-    return files_[key] = mesh;
+    reserve_memory(field, (1.0 + 4.0 / 3.0) * static_cast<double>(mesh.texture_bytes()));
+    return mesh;
   }
 
   static glm::mat4 read_transform(const JsonField& field) {
@@ -150,7 +156,7 @@ class SceneBuilder {
   }
 
   void add_ecosystem(const JsonField& object) {
-    const pointgen::EcosystemSpec spec = read_ecosystem(object, seed_);
+    const pointgen::EcosystemSpec spec = read_ecosystem(object, seed_, [this](const JsonField& file) { return load_file(file); });
     reserve_memory(object, static_cast<double>(pointgen::estimated_bytes(spec)));
     pointgen::Ecosystem eco = grow(object, spec);
     const std::size_t first = scene_.meshes.size();

@@ -106,6 +106,10 @@ int placement_layer(PlantKind kind) {
   }
 }
 
+int placement_layer(const PlantRequest& request) {
+  return request.mesh ? request.layer : placement_layer(request.species.kind);
+}
+
 std::size_t estimated_bytes(const EcosystemSpec& spec) {
   // Per instance: its table row, its GPU instance record, placement scratch (the Poisson-disk
   // grid's four cells of 8 bytes, the points twice, the picks' keys).
@@ -113,8 +117,8 @@ std::size_t estimated_bytes(const EcosystemSpec& spec) {
   constexpr std::size_t per_triangle = 3 * 36 + 12;  // CPU and GPU copies of vertices and indices, about
   std::size_t bytes = static_cast<std::size_t>(spec.terrain.resolution) * static_cast<std::size_t>(spec.terrain.resolution) * 2 * per_triangle;
   for (const PlantRequest& r : spec.plants) {
-    bytes += static_cast<std::size_t>(r.count) * per_instance +
-             static_cast<std::size_t>(r.variants) * typical_triangles(r.species.kind) * per_triangle * 2;
+    const std::size_t triangles = r.mesh ? r.mesh->triangle_count() : static_cast<std::size_t>(r.variants) * typical_triangles(r.species.kind);
+    bytes += static_cast<std::size_t>(r.count) * per_instance + triangles * per_triangle * 2;
   }
   return bytes;
 }
@@ -131,6 +135,12 @@ Ecosystem grow_ecosystem(const EcosystemSpec& spec) {
   for (std::size_t s = 0; s < spec.plants.size(); ++s) {
     first_mesh.push_back(eco.meshes.size());
     const PlantRequest& r = spec.plants[s];
+    if (r.mesh) {
+      eco.meshes.push_back(*r.mesh);
+      eco.mesh_names.push_back(r.species.name);
+      eco.tables.push_back({eco.meshes.size() - 1, {}, {}, {}});
+      continue;
+    }
     for (int v = 0; v < r.variants; ++v) {
       eco.meshes.push_back(build_plant(r.species, derive_seed(derive_seed(spec.seed, 1000 + s), static_cast<std::uint64_t>(v))));
       eco.mesh_names.push_back(r.species.name + " " + std::to_string(v + 1));
@@ -143,7 +153,7 @@ Ecosystem grow_ecosystem(const EcosystemSpec& spec) {
   std::uint64_t instance_id = 1;  // 0 is the terrain
   for (int layer = 0; layer < layer_count; ++layer) {
     int total = 0;
-    for (const PlantRequest& r : spec.plants) total += placement_layer(r.species.kind) == layer ? r.count : 0;
+    for (const PlantRequest& r : spec.plants) total += placement_layer(r) == layer ? r.count : 0;
     if (total == 0) continue;
     Random rng(derive_seed(spec.seed, 100 + static_cast<std::uint64_t>(layer)));
     const std::vector<glm::vec2> points = layer_points(min, spec.terrain.size, total, layer < 2 ? spec.clearings : std::vector<glm::vec3>{},
@@ -154,7 +164,7 @@ Ecosystem grow_ecosystem(const EcosystemSpec& spec) {
     }
     for (std::size_t s = 0; s < spec.plants.size(); ++s) {
       const PlantRequest& r = spec.plants[s];
-      if (placement_layer(r.species.kind) != layer || r.count == 0) continue;
+      if (placement_layer(r) != layer || r.count == 0) continue;
       const DensityMap density(min, spec.terrain.size, r.count, rng);
       for (std::size_t i : pick(points, taken, density, r.count, rng)) {
         const std::uint64_t seed = derive_seed(instance_seeds, instance_id++);
@@ -163,9 +173,10 @@ Ecosystem grow_ecosystem(const EcosystemSpec& spec) {
         const glm::mat4 transform =
             glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(p.x, eco.terrain.height(p.x, p.y), p.y)),
                                    own.uniform(0.0f, glm::two_pi<float>()), glm::vec3(0, 1, 0)),
-                       glm::vec3(own.uniform(0.75f, 1.25f)));
+                       glm::vec3(own.uniform(r.scale.x, r.scale.y)));
         const glm::vec3 tint(own.uniform(0.88f, 1.12f), own.uniform(0.88f, 1.12f), own.uniform(0.88f, 1.12f));
-        eco.tables[first_mesh[s] + own.below(static_cast<std::uint32_t>(r.variants))].add(transform, tint, seed);
+        const std::uint32_t variants = r.mesh ? 1u : static_cast<std::uint32_t>(r.variants);
+        eco.tables[first_mesh[s] + own.below(variants)].add(transform, tint, seed);
       }
     }
   }

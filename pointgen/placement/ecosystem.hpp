@@ -3,6 +3,7 @@
 #include "pointgen/placement/terrain.hpp"
 #include "pointgen/plants/plant_species.hpp"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,11 @@ struct PlantRequest {
   PlantSpecies species;
   int count = 0;
   int variants = 2;  // meshes per species, each grown from its own seed
+  // A species of the user's: this mesh (one variant) in placement layer `layer` instead of grown
+  // ones; `species` then gives only its name.
+  std::shared_ptr<const TriangleMesh> mesh;
+  int layer = 0;
+  glm::vec2 scale{0.75f, 1.25f};  // each plant's size factor, uniform between the two
 };
 
 // A landscape: a terrain over an area and plants on it, placed by Poisson-disk sampling in three
@@ -40,5 +46,7 @@ std::size_t estimated_bytes(const EcosystemSpec& spec);
 
 // The placement layer of a plant kind: 0 trees, 1 bushes, 2 ground cover.
 int placement_layer(PlantKind kind);
+// A request's layer: its mesh's, or its species kind's.
+int placement_layer(const PlantRequest& request);
 
 }  // namespace pointgen
