@@ -12,6 +12,9 @@ namespace ecoview {
 namespace {
 
 constexpr int max_layer_side = 2048;
+// Smaller images are enlarged to the layers' size: the size halves while the array, mipmaps
+// included, would take more than this.
+constexpr double max_array_bytes = 512.0 * 1024 * 1024;
 constexpr int max_layers = 255;  // a code's low byte holds the layer + 1
 
 int wrap_code(pointgen::SurfaceTexture::Wrap wrap) {
@@ -48,6 +51,7 @@ SurfaceTextures::SurfaceTextures(const std::vector<pointgen::TriangleMesh>& mesh
                          std::to_string(max_layers) + " are supported");
   }
   side = std::min(side, max_layer_side);
+  while (side > 64 && static_cast<double>(layers_.size()) * side * side * 4.0 * 4.0 / 3.0 > max_array_bytes) side /= 2;
   const auto levels = static_cast<GLsizei>(std::floor(std::log2(side))) + 1;
   glTextureStorage3D(array_.name(), levels, GL_SRGB8_ALPHA8, side, side, static_cast<GLsizei>(layers_.size()));
   std::vector<std::uint8_t> resized(4 * static_cast<std::size_t>(side) * static_cast<std::size_t>(side));

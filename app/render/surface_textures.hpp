@@ -9,7 +9,7 @@ namespace ecoview {
 
 // The meshes' base-colour textures for their polygons (shaders/surface_texture.glsl): one sRGB
 // texture array, mipmapped, a layer a texture, every image resized to the largest one's size (at
-// most 2,048 a side). Each vertex of a mesh with materials carries its texture coordinate and its
+// most 2,048 a side, less where the array would pass 512 MiB). Each vertex of a mesh with materials carries its texture coordinate and its
 // material as a code (vertex_surfaces); the points take their colours from the images at load.
 class SurfaceTextures {
  public:
