@@ -19,6 +19,9 @@ struct TexturedCard {
 
 // `alpha_mode` "MASK", "BLEND" or "OPAQUE".
 TexturedCard textured_card(const std::string& alpha_mode = "MASK");
+// The same card in one .glb file ("card.glb") whose buffer holds the image as JPEG (no alpha:
+// opaque).
+TexturedCard textured_card_glb_with_jpeg();
 
 constexpr int card_texels = 64;           // the image's side
 constexpr int card_checker_texels = 8;    // a checker square's side

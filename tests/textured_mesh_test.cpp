@@ -47,6 +47,20 @@ TEST(TexturedGltf, ACardLoadsWithItsImageTextureCoordinatesAndMask) {
   EXPECT_NEAR(glm::distance(glm::vec3(centre), card_color({0.5f + 0.5f * texel, 0.5f + 0.5f * texel})), 0.0f, 1e-6f);
 }
 
+// The image embedded in a .glb's buffer, as JPEG: decoded, the checkerboard's colours within
+// JPEG's error away from the squares' edges.
+TEST(TexturedGltf, AJpegImageEmbeddedInABinaryFileIsDecoded) {
+  const pointgen::TriangleMesh mesh = pointgen::load_mesh_file("card.glb", textured_card_glb_with_jpeg().read());
+  ASSERT_EQ(mesh.materials.size(), 2u);
+  ASSERT_TRUE(mesh.materials[1].texture);
+  EXPECT_FALSE(mesh.materials[1].masked());
+  for (int i = 0; i < 64; ++i) {
+    const glm::vec2 uv = (glm::vec2(i % 8, i / 8) + 0.5f) / 8.0f;  // the squares' centres
+    const glm::vec3 c = glm::vec3(mesh.materials[1].texture->sample(uv));
+    EXPECT_NEAR(glm::distance(c, card_color(uv)), 0.0f, 0.1f) << uv.x << ", " << uv.y;
+  }
+}
+
 TEST(TexturedGltf, AnImageThatCannotBeDecodedIsRefusedByItsIndex) {
   TexturedCard card = textured_card();
   card.files["leaf.png"] = "not an image at all";
