@@ -1,5 +1,7 @@
 #include "pointgen/surface_texture.hpp"
 
+#include "pointgen/srgb.hpp"
+
 #include <array>
 #include <cmath>
 
@@ -10,8 +12,7 @@ const std::array<float, 256>& srgb_to_linear_table() {
   static const std::array<float, 256> table = [] {
     std::array<float, 256> t{};
     for (int i = 0; i < 256; ++i) {
-      const float c = static_cast<float>(i) / 255.0f;
-      t[static_cast<std::size_t>(i)] = c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+      t[static_cast<std::size_t>(i)] = srgb_to_linear(static_cast<float>(i) / 255.0f);
     }
     return t;
   }();
@@ -58,13 +59,8 @@ glm::vec4 SurfaceTexture::sample(glm::vec2 uv) const {
   return sum;
 }
 
-glm::vec3 SurfaceMaterial::color_at(glm::vec2 uv) const {
-  return texture ? glm::vec3(texture->sample(uv)) : glm::vec3(1.0f);
-}
+glm::vec4 SurfaceMaterial::texel(glm::vec2 uv) const { return texture ? texture->sample(uv) : glm::vec4(1.0f); }
 
-bool SurfaceMaterial::keeps(glm::vec2 uv) const {
-  if (!masked()) return true;
-  return (texture ? texture->sample(uv).a : 1.0f) * alpha >= alpha_cutoff;
-}
+bool SurfaceMaterial::keeps(const glm::vec4& texel) const { return !masked() || texel.a * alpha >= alpha_cutoff; }
 
 }  // namespace pointgen

@@ -29,9 +29,10 @@ struct SurfaceMaterial {
   float alpha_cutoff = 0.0f;                      // 0: opaque, no mask
 
   bool masked() const { return alpha_cutoff > 0.0f; }
-  // Linear RGB to multiply the vertex colour by, and whether the mask keeps the surface, at `uv`.
-  glm::vec3 color_at(glm::vec2 uv) const;
-  bool keeps(glm::vec2 uv) const;
+  // The texture at `uv` (linear RGB to multiply the vertex colour by, and alpha; white without a
+  // texture), and whether the mask keeps the surface where it reads `texel`.
+  glm::vec4 texel(glm::vec2 uv) const;
+  bool keeps(const glm::vec4& texel) const;
 };
 
 }  // namespace pointgen

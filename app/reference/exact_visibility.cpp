@@ -28,7 +28,8 @@ void pass_masked_away(const RTCFilterFunctionNArguments* args) {
     const std::size_t t = 3 * static_cast<std::size_t>(RTCHitN_primID(args->hit, args->N, i));
     const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
     const glm::vec2 uv = (1.0f - u - v) * mesh.texcoords[a] + u * mesh.texcoords[b] + v * mesh.texcoords[c];
-    if (!mesh.materials[mesh.vertex_materials[a]].keeps(uv)) args->valid[i] = 0;
+    const pointgen::SurfaceMaterial& material = mesh.materials[mesh.vertex_materials[a]];
+    if (!material.keeps(material.texel(uv))) args->valid[i] = 0;
   }
 }
 

@@ -1,5 +1,7 @@
 #include "app/scene/scene_fields.hpp"
 
+#include "pointgen/srgb.hpp"
+
 #include <cmath>
 
 namespace ecoview {
@@ -61,7 +63,7 @@ shadow::Light read_light(const JsonField& field) {
 glm::vec3 srgb_to_linear(const glm::vec3& srgb) {
   glm::vec3 out;
   for (int i = 0; i < 3; ++i) {
-    out[i] = srgb[i] <= 0.04045f ? srgb[i] / 12.92f : std::pow((srgb[i] + 0.055f) / 1.055f, 2.4f);
+    out[i] = pointgen::srgb_to_linear(srgb[i]);
   }
   return out;
 }

@@ -71,8 +71,9 @@ class HaltonPlaces {
       // A triangle has its first vertex's material (glTF primitives do not share vertices).
       const SurfaceMaterial& material = mesh_.materials[mesh_.vertex_materials[a]];
       const glm::vec2 uv = w * mesh_.texcoords[a] + u * mesh_.texcoords[b] + v * mesh_.texcoords[c];
-      if (!material.keeps(uv)) return std::nullopt;
-      color *= material.color_at(uv);
+      const glm::vec4 texel = material.texel(uv);
+      if (!material.keeps(texel)) return std::nullopt;
+      color *= glm::vec3(texel);
     }
     const glm::vec3 normal = w * mesh_.normals[a] + u * mesh_.normals[b] + v * mesh_.normals[c];
     return SurfaceSample{w * mesh_.positions[a] + u * mesh_.positions[b] + v * mesh_.positions[c],
