@@ -60,12 +60,10 @@ ShadowView slice_map(const Camera& camera, float aspect, const Light& light, con
 
 }  // namespace
 
-ShadowSetup cascaded_map(const Camera& camera, float aspect, const Light& light, const Box& scene, int map_size,
-                         int cascades) {
-  const FocusBodies bodies = focus_bodies(camera.projection(aspect) * camera.view(), light, scene);
-  if (light.type != LightType::directional || bodies.receivers.empty()) {
-    return focused_uniform_map(camera, aspect, light, scene, map_size);
-  }
+ShadowSetup cascaded_map(const ShadowInputs& in, int cascades) {
+  const Camera& camera = in.camera;
+  const FocusBodies& bodies = in.bodies;
+  if (in.light.type != LightType::directional || bodies.receivers.empty()) return focused_uniform_map(in);
   float near = INFINITY, far = 0.0f;
   for (const glm::vec3& p : bodies.receivers.vertices()) {
     const float depth = glm::dot(p - camera.position, camera.forward());
@@ -77,8 +75,8 @@ ShadowSetup cascaded_map(const Camera& camera, float aspect, const Light& light,
   ShadowSetup setup{{}, ViewSelection::first_containing, "cascades"};
   const std::vector<float> splits = split_depths(near, far, cascades);
   for (int i = 0; i < cascades; ++i) {
-    setup.views.push_back(slice_map(camera, aspect, light, scene, splits[static_cast<std::size_t>(i)],
-                                    splits[static_cast<std::size_t>(i) + 1], map_size));
+    setup.views.push_back(slice_map(camera, in.aspect, in.light, in.scene, splits[static_cast<std::size_t>(i)],
+                                    splits[static_cast<std::size_t>(i) + 1], in.map_size));
   }
   return setup;
 }

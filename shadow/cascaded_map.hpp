@@ -1,7 +1,5 @@
 #pragma once
-#include "shadow/box.hpp"
-#include "shadow/camera.hpp"
-#include "shadow/light.hpp"
+#include "shadow/shadow_inputs.hpp"
 #include "shadow/shadow_setup.hpp"
 
 namespace shadow {
@@ -13,7 +11,6 @@ namespace shadow {
 //   receivers' depth range → splits → per slice: bounding sphere → light view → snap → depth.
 // A surface looks up the first map whose box holds it (ViewSelection::first_containing). Point and
 // spot lights get the focused uniform map.
-ShadowSetup cascaded_map(const Camera& camera, float aspect, const Light& light, const Box& scene, int map_size,
-                         int cascades = 4);
+ShadowSetup cascaded_map(const ShadowInputs& in, int cascades = 4);
 
 }  // namespace shadow

@@ -77,8 +77,7 @@ FocusBodies focus_bodies(const glm::mat4& view_projection, const Light& light, c
   return bodies;
 }
 
-FocusBodies focus_bodies_or_scene(const glm::mat4& view_projection, const Light& light, const Box& scene) {
-  FocusBodies bodies = focus_bodies(view_projection, light, scene);
+FocusBodies or_scene(FocusBodies bodies, const Light& light, const Box& scene) {
   if (bodies.receivers.empty()) {
     bodies.receivers = ConvexBody::from_box(scene);
     bodies.receivers.clip(light_frustum_planes(light));

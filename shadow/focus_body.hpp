@@ -30,8 +30,8 @@ struct FocusBodies {
 FocusBodies focus_bodies(const glm::mat4& view_projection, const Light& light, const Box& scene);
 
 // The focus bodies, never empty, for maps that must always cover something: where the camera sees
-// none of the scene, the part of the scene the light reaches; where the light reaches none of it,
-// the whole scene.
-FocusBodies focus_bodies_or_scene(const glm::mat4& view_projection, const Light& light, const Box& scene);
+// none of the scene (`bodies` empty), the part of the scene the light reaches; where the light
+// reaches none of it, the whole scene.
+FocusBodies or_scene(FocusBodies bodies, const Light& light, const Box& scene);
 
 }  // namespace shadow

@@ -18,16 +18,15 @@ constexpr float min_sin_gamma = 1e-3f;
 
 }  // namespace
 
-ShadowSetup light_space_perspective_map(const Camera& camera, float aspect, const Light& light, const Box& scene,
-                                        int map_size) {
-  const FocusBodies bodies = focus_bodies(camera.projection(aspect) * camera.view(), light, scene);
-  if (light.type != LightType::directional || bodies.receivers.empty()) {
-    return focused_uniform_map(camera, aspect, light, scene, map_size);
-  }
+ShadowSetup light_space_perspective_map(const ShadowInputs& in) {
+  const Camera& camera = in.camera;
+  const Light& light = in.light;
+  const FocusBodies& bodies = in.bodies;
+  if (light.type != LightType::directional || bodies.receivers.empty()) return focused_uniform_map(in);
   const glm::vec3 d = glm::normalize(light.direction), f = camera.forward();
   const glm::vec3 across = f - glm::dot(f, d) * d;  // the view direction perpendicular to the light
   const float sin_gamma = glm::length(across);
-  if (sin_gamma < min_sin_gamma) return focused_uniform_map(camera, aspect, light, scene, map_size);
+  if (sin_gamma < min_sin_gamma) return focused_uniform_map(in);
   const glm::vec3 axis = across / sin_gamma;
 
   // The casters' extent along the warp axis; the receivers' view depth (Wimmer's z_n, z_f).
@@ -54,7 +53,7 @@ ShadowSetup light_space_perspective_map(const Camera& camera, float aspect, cons
   if (const std::optional<ShadowView> view = fit_light_view(warp * homogeneous(light), warped, {0, 0, 1})) {
     return {{ShadowView{view->view * warp, view->projection}}, ViewSelection::single, "lispsm"};
   }
-  return focused_uniform_map(camera, aspect, light, scene, map_size);
+  return focused_uniform_map(in);
 }
 
 }  // namespace shadow

@@ -1,7 +1,5 @@
 #pragma once
-#include "shadow/box.hpp"
-#include "shadow/camera.hpp"
-#include "shadow/light.hpp"
+#include "shadow/shadow_inputs.hpp"
 #include "shadow/shadow_setup.hpp"
 
 namespace shadow {
@@ -12,7 +10,6 @@ namespace shadow {
 //   focus bodies → warp axis → warp centre at Wimmer's n_opt → fit in the warped space.
 // The warp fades to none as the view turns parallel to the light. Directional lights only: point
 // and spot lights get the focused uniform map.
-ShadowSetup light_space_perspective_map(const Camera& camera, float aspect, const Light& light, const Box& scene,
-                                        int map_size);
+ShadowSetup light_space_perspective_map(const ShadowInputs& in);
 
 }  // namespace shadow

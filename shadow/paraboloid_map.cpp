@@ -46,20 +46,24 @@ ShadowSetup dual(const glm::vec3& light, const glm::vec3& axis, const glm::vec3&
 
 }  // namespace
 
-ShadowSetup dual_paraboloid_map(const Camera& camera, float aspect, const Light& light, const Box& scene, int map_size) {
-  if (light.type == LightType::directional) return focused_uniform_map(camera, aspect, light, scene, map_size);
-  const FocusBodies bodies = focus_bodies_or_scene(camera.projection(aspect) * camera.view(), light, scene);
-  return dual(light.position, {0.0f, -1.0f, 0.0f}, camera.forward(), range_of(light.position, bodies), map_size, "dpsm");
+ShadowSetup dual_paraboloid_map(const ShadowInputs& in) {
+  const Light& light = in.light;
+  if (light.type == LightType::directional) return focused_uniform_map(in);
+  return dual(light.position, {0.0f, -1.0f, 0.0f}, in.camera.forward(), range_of(light.position, in.bodies_or_scene), in.map_size,
+              "dpsm");
 }
 
-ShadowSetup improved_paraboloid_map(const Camera& camera, float aspect, const Light& light, const Box& scene, int map_size) {
-  if (light.type == LightType::directional) return focused_uniform_map(camera, aspect, light, scene, map_size);
-  const FocusBodies bodies = focus_bodies_or_scene(camera.projection(aspect) * camera.view(), light, scene);
+ShadowSetup improved_paraboloid_map(const ShadowInputs& in) {
+  const Light& light = in.light;
+  const int map_size = in.map_size;
+  const glm::vec3 forward = in.camera.forward();
+  if (light.type == LightType::directional) return focused_uniform_map(in);
+  const FocusBodies& bodies = in.bodies_or_scene;
   const Cone cone = cone_around(light.position, bodies.receivers.vertices());
   const float range = range_of(light.position, bodies);
   const float half_angle = std::acos(std::clamp(cone.cos_half_angle, -1.0f, 1.0f));
-  if (half_angle > half_pi) return dual(light.position, cone.axis, camera.forward(), range, map_size, "ipsm: dual, the light among the receivers");
-  return {{paraboloid_view(light.position, cone.axis, camera.forward(), zoom_for(half_angle, map_size), range)},
+  if (half_angle > half_pi) return dual(light.position, cone.axis, forward, range, map_size, "ipsm: dual, the light among the receivers");
+  return {{paraboloid_view(light.position, cone.axis, forward, zoom_for(half_angle, map_size), range)},
           ViewSelection::single,
           "ipsm"};
 }

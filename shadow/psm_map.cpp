@@ -27,14 +27,16 @@ std::string describe(const PostPerspectiveSpace& space, const Light& light) {
 
 }  // namespace
 
-ShadowSetup perspective_shadow_map(const Camera& camera, float aspect, const Light& light, const Box& scene,
-                                   int map_size, float nearest_visible) {
-  Camera pushed = camera;
-  pushed.near = std::clamp(nearest_visible, camera.near, 0.5f * camera.far);
-  const FocusBodies bodies = focus_bodies(pushed.projection(aspect) * pushed.view(), light, scene);
+ShadowSetup perspective_shadow_map(const ShadowInputs& in) {
+  const Light& light = in.light;
+  const float aspect = in.aspect;
+  Camera pushed = in.camera;
+  pushed.near = std::clamp(in.nearest_visible, in.camera.near, 0.5f * in.camera.far);
+  // The bodies of the camera with its near plane pushed; the camera's own where it is not.
+  const FocusBodies bodies = pushed.near == in.camera.near ? in.bodies : focus_bodies(pushed.projection(aspect) * pushed.view(), light, in.scene);
   // Receivers all around a point light need the uniform cube: one warped map spreads its texels
   // too thin over them (a case of Stamminger and Drettakis 2002, Sect. 3.3: a near point light).
-  ShadowSetup uniform = focused_uniform_map(camera, aspect, light, scene, map_size);
+  ShadowSetup uniform = focused_uniform_map(in);
   if (bodies.receivers.empty() || uniform.selection == ViewSelection::cube_faces) return uniform;
 
   const PostPerspectiveSpace first = post_perspective_space(pushed, aspect, bodies.casters, pushed.near);

@@ -75,27 +75,28 @@ ShadowSetup cube_faces(const glm::vec3& light, const FocusBodies& bodies, int ma
 
 }  // namespace
 
-ShadowSetup focused_uniform_map(const Camera& camera, float aspect, const Light& light, const Box& scene,
-                                int map_size) {
-  const FocusBodies bodies = focus_bodies_or_scene(camera.projection(aspect) * camera.view(), light, scene);
+ShadowSetup focused_uniform_map(const ShadowInputs& in) {
+  const FocusBodies& bodies = in.bodies_or_scene;
+  const Light& light = in.light;
+  const glm::vec3 forward = in.camera.forward();
 
   switch (light.type) {
     case LightType::directional: {
       const glm::vec3 axis = glm::normalize(light.direction);
       const glm::vec3 center = bodies.receivers.centroid();
-      return {{fit_orthographic(glm::lookAt(center - axis, center, light_up(axis, camera.forward())), bodies)}};
+      return {{fit_orthographic(glm::lookAt(center - axis, center, light_up(axis, forward)), bodies)}};
     }
     case LightType::spot: {
       const glm::vec3 axis = glm::normalize(light.direction);
-      const glm::mat4 view = glm::lookAt(light.position, light.position + axis, light_up(axis, camera.forward()));
+      const glm::mat4 view = glm::lookAt(light.position, light.position + axis, light_up(axis, forward));
       return {{fit_perspective(view, std::tan(glm::radians(light.cone_deg)), bodies)}};
     }
     case LightType::point: {
       const Cone cone = cone_around(light.position, bodies.receivers.vertices());
       if (cone.cos_half_angle < std::cos(glm::radians(max_single_map_half_angle_deg))) {
-        return cube_faces(light.position, bodies, map_size);
+        return cube_faces(light.position, bodies, in.map_size);
       }
-      const glm::mat4 view = glm::lookAt(light.position, light.position + cone.axis, light_up(cone.axis, camera.forward()));
+      const glm::mat4 view = glm::lookAt(light.position, light.position + cone.axis, light_up(cone.axis, forward));
       return {{fit_perspective(view, std::tan(glm::radians(max_single_map_half_angle_deg)), bodies)}};
     }
   }

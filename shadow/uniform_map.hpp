@@ -1,7 +1,5 @@
 #pragma once
-#include "shadow/box.hpp"
-#include "shadow/camera.hpp"
-#include "shadow/light.hpp"
+#include "shadow/shadow_inputs.hpp"
 #include "shadow/shadow_setup.hpp"
 
 namespace shadow {
@@ -12,7 +10,6 @@ namespace shadow {
 //   receivers/casters → light view → fit the projection.
 // A point light whose receivers spread wider than one perspective map covers well gets the six
 // faces of a cube instead.
-ShadowSetup focused_uniform_map(const Camera& camera, float aspect, const Light& light,
-                                const Box& scene, int map_size);
+ShadowSetup focused_uniform_map(const ShadowInputs& in);
 
 }  // namespace shadow

@@ -61,8 +61,8 @@ TEST(PredictedAliasing, FavoursThePsmForALightAcrossADeepView) {
   for (float z = 43.0f; z > -45.0f; z -= 2.0f) {
     for (float x = -10.0f; x <= 10.0f; x += 2.0f) ground.push_back({{x, 0, z}, {0, 1, 0}});
   }
-  const float psm = predicted_aliasing(perspective_shadow_map(camera, aspect, sun, scene_box(), 1024), sun, 1024, frame, ground, p95_fraction);
-  const float uniform = predicted_aliasing(focused_uniform_map(camera, aspect, sun, scene_box(), 1024), sun, 1024, frame, ground, p95_fraction);
+  const float psm = predicted_aliasing(perspective_shadow_map({camera, aspect, sun, scene_box(), 1024}), sun, 1024, frame, ground, p95_fraction);
+  const float uniform = predicted_aliasing(focused_uniform_map({camera, aspect, sun, scene_box(), 1024}), sun, 1024, frame, ground, p95_fraction);
   EXPECT_GT(psm, 0.0f);
   EXPECT_LT(psm, uniform / 2.0f);
 }

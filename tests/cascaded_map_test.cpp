@@ -32,7 +32,7 @@ Box huge_scene() {
 const Light across_sun{LightType::directional, {}, glm::normalize(glm::vec3(1, -1, 0)), 30};
 
 ShadowSetup cascades_for(const Camera& camera) {
-  return cascaded_map(camera, aspect, across_sun, huge_scene(), cascade_map_size, 4);
+  return cascaded_map({camera, aspect, across_sun, huge_scene(), cascade_map_size}, 4);
 }
 
 // Half the side of a cascade's square in metres (an orthographic projection's 1 / m[0][0]).
@@ -116,7 +116,7 @@ TEST(CascadedMap, TexelsGrowWithCascadeIndex) {
   for (int i = 0; i < 200; ++i) {
     const Camera camera = random_camera(rng);
     const Light light = random_light(rng, LightType::directional);
-    const ShadowSetup setup = cascaded_map(camera, aspect, light, scene_box(), 1024);
+    const ShadowSetup setup = cascaded_map({camera, aspect, light, scene_box(), 1024});
     if (setup.selection != ViewSelection::first_containing) continue;
     for (std::size_t c = 1; c < setup.views.size(); ++c) {
       EXPECT_GT(half_side(setup.views[c]), half_side(setup.views[c - 1])) << "camera " << i << ", cascade " << c;

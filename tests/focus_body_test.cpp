@@ -24,7 +24,7 @@ TEST_P(FocusedMap, EveryReceiverLandsInsideItsMapsClipCube) {
     const Light light = random_light(rng, GetParam());
     const FocusBodies bodies = focus_bodies(camera.projection(aspect) * camera.view(), light, scene_box());
     if (bodies.receivers.empty()) continue;
-    const ShadowSetup setup = focused_uniform_map(camera, aspect, light, scene_box(), 2048);
+    const ShadowSetup setup = focused_uniform_map({camera, aspect, light, scene_box(), 2048});
     for (const ShadowView& v : setup.views) ASSERT_TRUE(finite(v.view_projection()));
     for (const glm::vec3& p : bodies.receivers.vertices()) {
       const glm::vec4 clip = setup.views[view_for(setup, light, p, 2048)].view_projection() * glm::vec4(p, 1.0f);
@@ -54,7 +54,7 @@ TEST(FocusedMap, SpotReceiversInsideTheConeLandInsideTheMap) {
     light.direction = glm::normalize(glm::vec3(rng.uniform(-0.5f, 0.5f), -1.0f, rng.uniform(-0.5f, 0.5f)));
     const FocusBodies bodies = focus_bodies(camera.projection(aspect) * camera.view(), light, scene_box());
     if (bodies.receivers.empty()) continue;
-    const glm::mat4 m = focused_uniform_map(camera, aspect, light, scene_box(), 2048).views[0].view_projection();
+    const glm::mat4 m = focused_uniform_map({camera, aspect, light, scene_box(), 2048}).views[0].view_projection();
     for (const glm::vec3& p : bodies.receivers.vertices()) {
       // L is the square pyramid around the cone; what lies outside the cone gets no light anyway,
       // and the pyramid's apex (the light itself) has no direction.
@@ -85,7 +85,7 @@ TEST(FocusedMapFit, ReceiversReachTheMapsEdgesAndStayInside) {
     const Light light = random_light(rng, i % 2 ? LightType::point : LightType::directional);
     const FocusBodies bodies = focus_bodies(camera.projection(wide) * camera.view(), light, scene_box());
     if (bodies.receivers.empty()) continue;
-    const ShadowSetup setup = focused_uniform_map(camera, wide, light, scene_box(), 2048);
+    const ShadowSetup setup = focused_uniform_map({camera, wide, light, scene_box(), 2048});
     if (setup.selection != ViewSelection::single) continue;  // cube faces have fixed 90° sides
     glm::vec2 lo(INFINITY), hi(-INFINITY);
     for (const glm::vec3& p : bodies.receivers.vertices()) {
@@ -112,7 +112,7 @@ TEST(FocusedMapPointLight, LampAmongReceiversGetsACubeDistantLampOneMap) {
   const glm::mat4 vp = overview.projection(wide) * overview.view();
   const glm::vec3 lamp_ndc = ndc(vp, middle.position);
   ASSERT_LT(glm::max(std::abs(lamp_ndc.x), glm::max(std::abs(lamp_ndc.y), std::abs(lamp_ndc.z))), 1.0f);  // in V
-  const ShadowSetup cube = focused_uniform_map(overview, wide, middle, scene_box(), 1024);
+  const ShadowSetup cube = focused_uniform_map({overview, wide, middle, scene_box(), 1024});
   EXPECT_EQ(cube.selection, ViewSelection::cube_faces);
   EXPECT_EQ(cube.views.size(), 6u);
 
@@ -124,7 +124,7 @@ TEST(FocusedMapPointLight, LampAmongReceiversGetsACubeDistantLampOneMap) {
     const glm::vec4 c = inverse * glm::vec4(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1, 1);
     ASSERT_GT(glm::dot(glm::normalize(glm::vec3(c) / c.w - high.position), axis), std::cos(glm::radians(30.0f)));
   }
-  const ShadowSetup single = focused_uniform_map(close_up, wide, high, scene_box(), 1024);
+  const ShadowSetup single = focused_uniform_map({close_up, wide, high, scene_box(), 1024});
   EXPECT_EQ(single.selection, ViewSelection::single);
   EXPECT_EQ(single.views.size(), 1u);
 }

@@ -25,7 +25,7 @@ Scene plane_seen_from_above() {
 TEST(AliasingFactor, IsTheUniformMapsTexelInPixelsOnAPlaneSeenFromAbove) {
   const auto context = create_headless_context("egl");
   const Scene scene = plane_seen_from_above();
-  RenderSettings settings{width, height, map_size, ShadowMethod::uniform};
+  RenderSettings settings{width, height, map_size, shadow::Method::uniform};
   settings.aliasing = true;
   Renderer renderer(scene, settings);
   renderer.render(scene.camera, scene.lights[0]);
@@ -43,7 +43,7 @@ TEST(AliasingFactor, IsTheUniformMapsTexelInPixelsOnAPlaneSeenFromAbove) {
 TEST(PredictedAliasing, OnTheGpuIsTheUniformMapsTexelInPixelsOnAPlaneSeenFromAbove) {
   const auto context = create_headless_context("egl");
   const Scene scene = plane_seen_from_above();
-  Renderer renderer(scene, RenderSettings{width, height, map_size, ShadowMethod::uniform});
+  Renderer renderer(scene, RenderSettings{width, height, map_size, shadow::Method::uniform});
   renderer.render(scene.camera, scene.lights[0]);
   const double expected = 1.02 * width / map_size;
   const std::vector<float> predicted = renderer.frame().predict_aliasing(scene.camera, scene.camera, scene.lights[0],
@@ -58,7 +58,7 @@ TEST(PredictedAliasing, OnTheGpuIsTheUniformMapsTexelInPixelsOnAPlaneSeenFromAbo
 TEST(AliasingFactor, IsZeroWithoutAShadowMapAndNegativeWhereNothingIsDrawn) {
   const auto context = create_headless_context("egl");
   Scene scene = plane_seen_from_above();
-  RenderSettings settings{width, height, map_size, ShadowMethod::none};
+  RenderSettings settings{width, height, map_size, shadow::Method::none};
   settings.aliasing = true;
   Renderer renderer(scene, settings);
   renderer.render(scene.camera, scene.lights[0]);
@@ -76,7 +76,7 @@ TEST(PredictedAliasing, MatchesTheFramesMedianAndAliasP95) {
   const auto context = create_headless_context("egl");
   const Scene scene = load_scene(open_input("field", "scenes"));
   const shadow::Light& light = scene.lights[6];
-  for (ShadowMethod method : {ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::lispsm, ShadowMethod::cascades}) {
+  for (shadow::Method method : {shadow::Method::uniform, shadow::Method::psm, shadow::Method::lispsm, shadow::Method::cascades}) {
     RenderSettings settings{width, height, 1024, method};
     settings.aliasing = true;
     Renderer renderer(scene, settings);
@@ -88,10 +88,10 @@ TEST(PredictedAliasing, MatchesTheFramesMedianAndAliasP95) {
     for (float fraction : {shadow::median_fraction, shadow::p95_fraction}) {
       const float predicted = shadow::predicted_aliasing(renderer.shadow_setup(), light, 1024, frame, surface, fraction);
       const double measured = alias_percentile(renderer.frame().read_aliasing(), renderer.frame().read_visibility(), fraction);
-      EXPECT_NEAR(predicted, measured, 0.15 * measured) << shadow_method_name(method) << ", percentile " << fraction;
+      EXPECT_NEAR(predicted, measured, 0.15 * measured) << shadow::technique(method).name << ", percentile " << fraction;
       // On the GPU, from the frame's own normals rather than ones rebuilt from its depth.
       const float on_gpu = renderer.frame().predict_aliasing(scene.camera, scene.camera, light, {renderer.shadow_setup()}, 1024, fraction)[0];
-      EXPECT_NEAR(on_gpu, predicted, 0.05 * predicted) << shadow_method_name(method) << ", percentile " << fraction << " on the GPU";
+      EXPECT_NEAR(on_gpu, predicted, 0.05 * predicted) << shadow::technique(method).name << ", percentile " << fraction << " on the GPU";
     }
   }
 }

@@ -194,7 +194,7 @@ TEST(PolygonMode, PlantsOutOfViewAreNotDrawn) {
   settings.width = 320;
   settings.height = 180;
   settings.points = false;
-  settings.method = ShadowMethod::none;
+  settings.method = shadow::Method::none;
   Image8 color[2];
   std::size_t triangles[2], five_beeches = 0;
   int i = 0;
@@ -278,7 +278,7 @@ TEST(CasterCulling, KeepsTheShadowsTheCameraSees) {
       "objects": [{"type": "ecosystem", "seed": 5, "size": [100, 100], "terrain": {"relief": 0.5, "resolution": 16},
                    "plants": [{"species": "oak", "count": 800}, {"species": "hazel", "count": 800}]}]})",
                                   [](const std::string&) { return std::nullopt; }});
-  for (const ShadowMethod method : {ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::cascades}) {
+  for (const shadow::Method method : {shadow::Method::uniform, shadow::Method::psm, shadow::Method::cascades}) {
     RenderSettings settings;
     settings.width = 480;
     settings.height = 270;
@@ -297,11 +297,11 @@ TEST(CasterCulling, KeepsTheShadowsTheCameraSees) {
       shadowed += b.samples[i] < 128;
     }
     const double changed_share = static_cast<double>(changed) / static_cast<double>(a.samples.size());
-    std::cout << shadow_method_name(method) << ": shadow points " << culled.stats().shadow_points << " of "
+    std::cout << shadow::technique(method).name << ": shadow points " << culled.stats().shadow_points << " of "
               << every_caster.stats().shadow_points << ", " << changed << " pixels changed, " << shadowed << " shadowed\n";
-    EXPECT_GT(shadowed, a.samples.size() / 20) << shadow_method_name(method);
-    EXPECT_LT(culled.stats().shadow_points, every_caster.stats().shadow_points * 4 / 5) << shadow_method_name(method);
-    EXPECT_LT(changed_share, 0.005) << shadow_method_name(method);
+    EXPECT_GT(shadowed, a.samples.size() / 20) << shadow::technique(method).name;
+    EXPECT_LT(culled.stats().shadow_points, every_caster.stats().shadow_points * 4 / 5) << shadow::technique(method).name;
+    EXPECT_LT(changed_share, 0.005) << shadow::technique(method).name;
   }
 }
 

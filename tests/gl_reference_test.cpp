@@ -20,7 +20,7 @@ TEST_P(ReferenceOnFloatingBoxes, MatchesGeometryAwayFromEdges) {
   for (int i = 0; i < 4; ++i) {
     const FloatingBox s = random_floating_box(rng, GetParam());
     const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
-    Renderer renderer(scene, {640, 480, 1024, ShadowMethod::none});
+    Renderer renderer(scene, {640, 480, 1024, shadow::Method::none});
     renderer.render(scene.camera, scene.lights[0]);
     const TruthComparison c = compare_with_truth(s, renderer.exact_visibility(), 2);
     std::cout << "case " << i << ": " << 100.0 * c.agreement() << " % of " << c.lit + c.shadowed << " plane pixels agree\n";
@@ -53,7 +53,7 @@ TEST(ReferenceAgainstVolumes, AgreesOnFloatingBoxesUnderEveryLight) {
     for (int i = 0; i < 3; ++i) {
       const FloatingBox s = random_floating_box(rng, type);
       const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
-      Renderer renderer(scene, {640, 480, 1024, ShadowMethod::volumes});
+      Renderer renderer(scene, {640, 480, 1024, shadow::Method::volumes});
       renderer.render(scene.camera, scene.lights[0]);
       const double a = agreement(renderer.frame().read_visibility(), renderer.exact_visibility(), renderer.frame().read_depth());
       std::cout << "light " << static_cast<int>(type) << ", case " << i << ": " << 100.0 * a << " % of surface pixels agree\n";
@@ -64,14 +64,14 @@ TEST(ReferenceAgainstVolumes, AgreesOnFloatingBoxesUnderEveryLight) {
 
 // The courtyard under each of its lights drawn with `method`: the share of surface pixels whose
 // shadow state agrees with the reference, per light.
-std::vector<double> agreement_on_the_courtyard(ShadowMethod method) {
+std::vector<double> agreement_on_the_courtyard(shadow::Method method) {
   const Scene scene = load_scene(open_input("courtyard", "scenes"));
   Renderer renderer(scene, {640, 360, 1024, method});
   std::vector<double> per_light;
   for (const shadow::Light& light : scene.lights) {
     renderer.render(scene.camera, light);
     per_light.push_back(agreement(renderer.frame().read_visibility(), renderer.exact_visibility(), renderer.frame().read_depth()));
-    std::cout << shadow_method_name(method) << ", light type " << static_cast<int>(light.type) << ": "
+    std::cout << shadow::technique(method).name << ", light type " << static_cast<int>(light.type) << ": "
               << 100.0 * per_light.back() << " % of surface pixels agree\n";
   }
   return per_light;
@@ -81,7 +81,7 @@ std::vector<double> agreement_on_the_courtyard(ShadowMethod method) {
 // shading normals for the side a surface turns to the light, so they agree there too.
 TEST(ReferenceAgainstVolumes, AgreesOnTheCourtyardUnderEveryLight) {
   const auto context = create_headless_context("egl");
-  for (double a : agreement_on_the_courtyard(ShadowMethod::volumes)) EXPECT_GE(a, 0.999);
+  for (double a : agreement_on_the_courtyard(shadow::Method::volumes)) EXPECT_GE(a, 0.999);
 }
 
 }  // namespace

@@ -386,7 +386,7 @@ TEST_F(GpuSampling, ACascadeDrawsThePlantsWhoseShadowsFallInIt) {
   settings.width = 480;
   settings.height = 270;
   settings.gpu_sampler = true;
-  const auto render = [&](ShadowMethod method, const std::string& direction) {
+  const auto render = [&](shadow::Method method, const std::string& direction) {
     settings.method = method;
     return render_shadows(R"({"camera": {"position": [0, 2, 0], "target": [0, 0, -20], "fov_y_deg": 50, "near": 0.5, "far": 300},
         "lights": [{"type": "directional", "direction": )" + direction + R"(}],
@@ -394,19 +394,19 @@ TEST_F(GpuSampling, ACascadeDrawsThePlantsWhoseShadowsFallInIt) {
                     {"type": "plant", "species": "beech", "positions": [[0, 0, -12]]}]})");
   };
   // The uniform map draws the plane and the whole beech (the frame draws the parts it shows).
-  const std::size_t beech = render(ShadowMethod::uniform, "[0.2, -1, 0.1]").stats.shadow_triangles - 2;
+  const std::size_t beech = render(shadow::Method::uniform, "[0.2, -1, 0.1]").stats.shadow_triangles - 2;
   ASSERT_GT(beech, 1000u) << "the beech is drawn as polygons";
-  const Shadowed high = render(ShadowMethod::cascades, "[0.2, -1, 0.1]");
+  const Shadowed high = render(shadow::Method::cascades, "[0.2, -1, 0.1]");
   EXPECT_GT(high.shadowed, 200u);
   EXPECT_EQ(high.stats.shadow_triangles, 4 * 2 + beech) << "the plane in each cascade, the beech in the first alone";
-  const Shadowed low = render(ShadowMethod::cascades, "[0.7, -0.3, -0.65]"), uniform = render(ShadowMethod::uniform, "[0.7, -0.3, -0.65]");
+  const Shadowed low = render(shadow::Method::cascades, "[0.7, -0.3, -0.65]"), uniform = render(shadow::Method::uniform, "[0.7, -0.3, -0.65]");
   EXPECT_GT(low.stats.shadow_triangles, 4 * 2 + beech) << "the beech in more cascades than the first";
   EXPECT_GT(uniform.shadowed, 1000u);
   EXPECT_NEAR(static_cast<double>(low.shadowed), static_cast<double>(uniform.shadowed), 0.15 * static_cast<double>(uniform.shadowed));
 }
 
 TEST_F(GpuSampling, ItsFrameCoversWhatThePolygonsCover) {
-  settings.method = ShadowMethod::none;
+  settings.method = shadow::Method::none;
   settings.points = false;
   Renderer polygons(scene, settings);
   polygons.render(scene.camera, scene.lights[0]);
@@ -422,7 +422,7 @@ TEST_F(GpuSampling, ItsFrameCoversWhatThePolygonsCover) {
 }
 
 TEST_F(GpuSampling, PlantsBehindAWallAreLeftOut) {
-  settings.method = ShadowMethod::none;
+  settings.method = shadow::Method::none;
   settings.gpu_sampler = true;
   Renderer open(scene, settings);
   open.render(scene.camera, scene.lights[0]);
@@ -446,7 +446,7 @@ TEST_F(GpuSampling, PlantsBehindAWallAreLeftOut) {
 // Occluders close one-pixel gaps (DepthPyramid): a beech seen through a slit one pixel wide in a
 // wall is left out, through one ten pixels wide it is drawn. A backdrop shows through both.
 TEST_F(GpuSampling, APlantSeenThroughAOnePixelSlitIsLeftOutButNotThroughAWiderOne) {
-  settings.method = ShadowMethod::none;
+  settings.method = shadow::Method::none;
   settings.gpu_sampler = true;
   // At 20 m a pixel is 2 × 20 m × tan 25° × 960 / 540 / 960 = 0.0345 m wide; the centre of the
   // pixel right of the middle is at 0.0173 m, in either slit, and no other pixel's is in the narrow one.
@@ -476,7 +476,7 @@ TEST_F(GpuSampling, APlantSeenThroughAOnePixelSlitIsLeftOutButNotThroughAWiderOn
 // beech that a wall hides but for its right edge draws fewer triangles than without the wall, and
 // each pixel shows the nearer of the wall and the beech drawn alone.
 TEST_F(GpuSampling, APlantMostlyBehindAWallDrawsOnlyThePartsItShows) {
-  settings.method = ShadowMethod::none;
+  settings.method = shadow::Method::none;
   settings.gpu_sampler = true;
   const auto render = [&](const std::string& objects) {
     const Scene s = load_scene({"half.json", R"({"camera": {"position": [0, 3, 0], "target": [0, 6, -40], "fov_y_deg": 50,
@@ -518,7 +518,7 @@ TEST_F(GpuSampling, TheShadowMapTakesTheCastersOutOfViewThatShadowTheView) {
   const std::string behind = R"(, {"type": "plant", "species": "beech", "positions": [[0, 0, 60]]})";
   settings.width = 320;
   settings.height = 180;
-  settings.method = ShadowMethod::psm;
+  settings.method = shadow::Method::psm;
   settings.gpu_sampler = true;
   const auto render = [&](const std::string& objects) { return render_shadows(start + objects + "]}"); };
   const Shadowed ground = render(""), seen = render(beside);
@@ -541,7 +541,7 @@ TEST_F(GpuSampling, APlantTheFrameHidesCastsItsShadowOnWhatTheFrameShows) {
   const std::string beech = R"(, {"type": "plant", "species": "beech", "positions": [[0, 0, -40]]})";
   settings.width = 320;
   settings.height = 180;
-  settings.method = ShadowMethod::psm;
+  settings.method = shadow::Method::psm;
   const auto render = [&](const std::string& objects, bool points) {
     settings.points = settings.gpu_sampler = points;
     return render_shadows(start + objects + "]}");
@@ -564,7 +564,7 @@ TEST_F(GpuSampling, ACasterBeyondEveryReceiverFromTheLightIsLeftOut) {
   const std::string beech = R"(, {"type": "plant", "species": "beech", "positions": [[30, 0, -20]]})";
   settings.width = 320;
   settings.height = 180;
-  settings.method = ShadowMethod::cascades;
+  settings.method = shadow::Method::cascades;
   settings.gpu_sampler = true;
   const Shadowed bare = render_shadows(start + "]}"), beyond = render_shadows(start + beech + "]}");
   EXPECT_EQ(beyond.shadowed, bare.shadowed) << "nothing the frame shows lies beyond the beech from the light";
@@ -583,7 +583,7 @@ TEST_F(GpuSampling, TheMapLeavesOutThePartsOfAPlantThatShadowNothingTheFrameShow
                   {"type": "plant", "species": "beech", "positions": [[0, 0, -25]]}]})";
   settings.width = 320;
   settings.height = 180;
-  settings.method = ShadowMethod::psm;
+  settings.method = shadow::Method::psm;
   settings.points = settings.gpu_sampler = false;
   const Shadowed whole = render_shadows(scene);
   settings.points = settings.gpu_sampler = true;
@@ -609,7 +609,7 @@ TEST_F(GpuSampling, ACoarseMapTakesOfEachPlantKPointsATexel) {
   for (int i = 0; i < 40; ++i) json << (i ? ", " : "") << "[" << (i % 8) * 3 - 10 << ", 0, " << -30 - (i / 8) * 6 << "]";
   json << "]}]}";
   const Scene ferns = load_scene({"ferns.json", json.str(), [](const std::string&) { return std::nullopt; }});
-  settings.method = ShadowMethod::uniform;
+  settings.method = shadow::Method::uniform;
   settings.shadow_size = 128;
   settings.gpu_sampler = true;
   Renderer renderer(ferns, settings);
@@ -644,7 +644,7 @@ TEST_F(GpuSampling, ACoarseMapDrawsAsPointsAPlantTheFrameDrawsAsPolygons) {
                   {"type": "plant", "species": "beech", "positions": [[0, 0, -14]]}]})";
   settings.width = 320;
   settings.height = 180;
-  settings.method = ShadowMethod::uniform;
+  settings.method = shadow::Method::uniform;
   settings.gpu_sampler = true;
   settings.shadow_size = 4096;
   const Shadowed fine = render_shadows(scene);
@@ -666,7 +666,7 @@ TEST_F(GpuSampling, AFrameWithoutPlantsDrawsNoneAndRunsNoPointPasses) {
       "lights": [{"type": "directional", "direction": [0.3, -1, 0.2]}],
       "objects": [{"type": "plane", "center": [0, 0, 0], "size": [40, 40]}, {"type": "box", "min": [-1, 0, -1], "max": [1, 2, 1]}]})",
                                  [](const std::string&) { return std::nullopt; }});
-  settings.method = ShadowMethod::psm;
+  settings.method = shadow::Method::psm;
   settings.gpu_sampler = true;
   Renderer renderer(bare, settings);
   renderer.render(bare.camera, bare.lights[0]);
@@ -681,7 +681,7 @@ TEST_F(GpuSampling, AFrameWithoutPlantsDrawsNoneAndRunsNoPointPasses) {
 // The GPU stages partition the frame's GPU time: each pass's time lies within their sum, and every
 // stage of a shadowed frame with points and polygon plants took part.
 TEST_F(GpuSampling, AFramesGpuStagesCoverItsPasses) {
-  settings.method = ShadowMethod::psm;
+  settings.method = shadow::Method::psm;
   Renderer renderer(scene, settings);
   renderer.render(scene.camera, scene.lights[0]);
   const FrameStats stats = renderer.stats();

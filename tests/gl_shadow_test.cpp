@@ -28,7 +28,7 @@ const char* light_name(shadow::LightType t) {
   return t == shadow::LightType::directional ? "directional" : t == shadow::LightType::point ? "point" : "spot";
 }
 
-using Param = std::tuple<std::string, shadow::LightType, ShadowMethod>;
+using Param = std::tuple<std::string, shadow::LightType, shadow::Method>;
 
 class FloatingBoxShadow : public testing::TestWithParam<Param> {};
 
@@ -46,11 +46,11 @@ TEST_P(FloatingBoxShadow, ShadowAovMatchesGeometryAwayFromEdges) {
     const TruthComparison c = compare_with_truth(s, renderer.frame().read_visibility(), 2);
     ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     if (const char* dump = std::getenv("ECOVIEW_TRUTH_DUMP")) {
-      std::ofstream(std::string(dump) + "/" + backend + "_" + light_name(type) + "_" + shadow_method_name(method) + "_" +
+      std::ofstream(std::string(dump) + "/" + backend + "_" + light_name(type) + "_" + shadow::technique(method).name + "_" +
                         std::to_string(i) + ".png",
                     std::ios::binary) << encode_png(c.mismatches);
     }
-    std::cout << backend << " " << light_name(type) << " " << shadow_method_name(method) << " case " << i << ": " << 100.0 * c.agreement()
+    std::cout << backend << " " << light_name(type) << " " << shadow::technique(method).name << " case " << i << ": " << 100.0 * c.agreement()
               << " % of " << c.lit + c.shadowed << " plane pixels agree; lit " << c.lit_agreeing << "/" << c.lit
               << ", shadowed " << c.shadowed_agreeing << "/" << c.shadowed << " (" << renderer.shadow_setup().description << ")\n";
     EXPECT_GE(c.agreement(), 0.995) << "scene:\n" << s.scene_json();
@@ -66,11 +66,11 @@ INSTANTIATE_TEST_SUITE_P(
     AllBackendsLightsAndMethods, FloatingBoxShadow,
     testing::Combine(testing::Values("egl", "osmesa"),
                      testing::Values(shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot),
-                     testing::Values(ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::lispsm,
-                                     ShadowMethod::cascades, ShadowMethod::dpsm, ShadowMethod::ipsm,
-                                     ShadowMethod::volumes, ShadowMethod::automatic, ShadowMethod::reference)),
+                     testing::Values(shadow::Method::uniform, shadow::Method::psm, shadow::Method::lispsm,
+                                     shadow::Method::cascades, shadow::Method::dpsm, shadow::Method::ipsm,
+                                     shadow::Method::volumes, shadow::Method::automatic, shadow::Method::reference)),
     [](const testing::TestParamInfo<Param>& info) {
-      return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + shadow_method_name(std::get<2>(info.param));
+      return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + shadow::technique(std::get<2>(info.param)).name;
     });
 
 // A low point light whose receivers lie mostly on one side of it: IPSM takes two paraboloids
@@ -90,7 +90,7 @@ TEST(ParaboloidSeam, AShadowInTheBackParaboloidMatchesGeometry) {
   s.camera.near = 0.1f;
   s.camera.far = 100.0f;
   const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
-  Renderer renderer(scene, {640, 480, 2048, ShadowMethod::ipsm});
+  Renderer renderer(scene, {640, 480, 2048, shadow::Method::ipsm});
   renderer.render(scene.camera, scene.lights[0]);
   const shadow::ShadowSetup& setup = renderer.shadow_setup();
   ASSERT_EQ(setup.selection, shadow::ViewSelection::hemispheres) << setup.description;
@@ -109,17 +109,17 @@ TEST(RendererChange, FramesAfterAChangeAreThoseOfAFreshRenderer) {
   pointgen::Random rng(77);
   const FloatingBox s = random_floating_box(rng, shadow::LightType::directional);
   const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
-  Renderer changed(scene, {320, 240, 1024, ShadowMethod::uniform});
+  Renderer changed(scene, {320, 240, 1024, shadow::Method::uniform});
   changed.render(scene.camera, scene.lights[0]);
   // Method alone, size alone, both, and back to methods that keep state between frames.
-  for (const auto& [method, size] : {std::pair{ShadowMethod::psm, 1024}, std::pair{ShadowMethod::psm, 2048},
-                                     std::pair{ShadowMethod::volumes, 2048}, std::pair{ShadowMethod::cascades, 512},
-                                     std::pair{ShadowMethod::automatic, 512}, std::pair{ShadowMethod::lispsm, 512}}) {
+  for (const auto& [method, size] : {std::pair{shadow::Method::psm, 1024}, std::pair{shadow::Method::psm, 2048},
+                                     std::pair{shadow::Method::volumes, 2048}, std::pair{shadow::Method::cascades, 512},
+                                     std::pair{shadow::Method::automatic, 512}, std::pair{shadow::Method::lispsm, 512}}) {
     changed.change(method, size, 3.0f);
     changed.render(scene.camera, scene.lights[0]);
     Renderer fresh(scene, {320, 240, size, method, true, 3.0f});
     fresh.render(scene.camera, scene.lights[0]);
-    EXPECT_EQ(changed.frame().read_color().samples, fresh.frame().read_color().samples) << shadow_method_name(method);
+    EXPECT_EQ(changed.frame().read_color().samples, fresh.frame().read_color().samples) << shadow::technique(method).name;
     EXPECT_EQ(changed.shadow_setup().description, fresh.shadow_setup().description);
   }
 }
@@ -134,7 +134,7 @@ TEST(ShadowBias, TheConstantBiasMovesAFlatCasterByThatManyStepsOfItsDepth) {
       "objects": [{"type": "plane", "center": [0, 0, 0], "size": [40, 40]}]})",
                                   [](const std::string&) { return std::nullopt; }});
   auto centre_depth = [&](float constant) {
-    RenderSettings settings{320, 240, 256, ShadowMethod::uniform};
+    RenderSettings settings{320, 240, 256, shadow::Method::uniform};
     settings.shadow_bias = {0.0f, constant};
     Renderer renderer(scene, settings);
     renderer.render(scene.camera, scene.lights[0]);
@@ -157,7 +157,7 @@ TEST(FrameNearestDepth, IsTheLeastDepthOfTheFrame) {
     "lights": [{"type": "directional", "direction": [0.3, -1, -0.2]}],
     "objects": [{"type": "box", "min": [-100, -50, -1], "max": [100, 50, 0]}]})",
                                   [](const std::string&) { return std::nullopt; }});
-  Renderer renderer(scene, {331, 203, 512, ShadowMethod::uniform});
+  Renderer renderer(scene, {331, 203, 512, shadow::Method::uniform});
   renderer.render(scene.camera, scene.lights[0]);
   const Image<float> depth = renderer.frame().read_depth();
   float least = 0.0f;

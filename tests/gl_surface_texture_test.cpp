@@ -45,7 +45,7 @@ TEST(SurfaceTexture, APolygonShowsItsTexturesColoursAndTheSkyWhereTheMaskCutsItA
   RenderSettings settings;
   settings.width = 320;
   settings.height = 240;
-  settings.method = ShadowMethod::none;
+  settings.method = shadow::Method::none;
   Renderer renderer(scene, settings);
   renderer.render(scene.camera, scene.lights[0]);
   const Image8 color = renderer.frame().read_color();
@@ -80,7 +80,7 @@ TEST(SurfaceTexture, APolygonShowsItsTexturesColoursAndTheSkyWhereTheMaskCutsItA
 // The card lies flat 1 m above the ground (x and z from -1 to 1), the sun nearly overhead: the
 // shadow on the ground is the disc the mask keeps, not the card's square, in every map method and
 // in the ray-traced reference.
-class MaskedShadow : public testing::TestWithParam<ShadowMethod> {};
+class MaskedShadow : public testing::TestWithParam<shadow::Method> {};
 
 TEST_P(MaskedShadow, TheShadowOfAMaskedCardIsTheMasksShape) {
   const std::unique_ptr<GlContext> context = create_headless_context("egl");
@@ -122,7 +122,7 @@ TEST_P(MaskedShadow, TheShadowOfAMaskedCardIsTheMasksShape) {
       }
     }
   }
-  std::cout << shadow_method_name(GetParam()) << ": under the disc " << disc_right << "/" << disc << " shadowed, under the rest of the card "
+  std::cout << shadow::technique(GetParam()).name << ": under the disc " << disc_right << "/" << disc << " shadowed, under the rest of the card "
             << square_right << "/" << square << " lit\n";
   EXPECT_GT(disc, 1000u);
   EXPECT_GT(square, 500u);
@@ -131,9 +131,9 @@ TEST_P(MaskedShadow, TheShadowOfAMaskedCardIsTheMasksShape) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryMapMethodAndTheReference, MaskedShadow,
-                         testing::Values(ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::lispsm, ShadowMethod::cascades,
-                                         ShadowMethod::dpsm, ShadowMethod::ipsm, ShadowMethod::reference),
-                         [](const testing::TestParamInfo<ShadowMethod>& info) { return shadow_method_name(info.param); });
+                         testing::Values(shadow::Method::uniform, shadow::Method::psm, shadow::Method::lispsm, shadow::Method::cascades,
+                                         shadow::Method::dpsm, shadow::Method::ipsm, shadow::Method::reference),
+                         [](const testing::TestParamInfo<shadow::Method>& info) { return shadow::technique(info.param).name; });
 
 }  // namespace
 }  // namespace ecoview

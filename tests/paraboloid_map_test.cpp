@@ -49,8 +49,8 @@ Camera camera_at(const glm::vec3& position, const glm::vec3& target) {
 TEST(ImprovedParaboloid, CutsTheParaboloidToADistantViewAndFallsBackToTwoWhereTheLightIsInView) {
   const Light lamp{LightType::point, {0, 40, -90}, {0, -1, 0}, 30};
   const Camera far_view = camera_at({0, 3, 40}, {0, 0, 0});
-  const ShadowSetup ipsm = improved_paraboloid_map(far_view, aspect, lamp, scene_box(), 2048);
-  const ShadowSetup dpsm = dual_paraboloid_map(far_view, aspect, lamp, scene_box(), 2048);
+  const ShadowSetup ipsm = improved_paraboloid_map({far_view, aspect, lamp, scene_box(), 2048});
+  const ShadowSetup dpsm = dual_paraboloid_map({far_view, aspect, lamp, scene_box(), 2048});
   ASSERT_EQ(ipsm.views.size(), 1u);
   ASSERT_EQ(dpsm.views.size(), 2u);
   ASSERT_TRUE(ipsm.views[0].paraboloid && dpsm.views[0].paraboloid);
@@ -58,8 +58,7 @@ TEST(ImprovedParaboloid, CutsTheParaboloidToADistantViewAndFallsBackToTwoWhereTh
   EXPECT_LT(ipsm.views[0].paraboloid->zoom, dpsm.views[0].paraboloid->zoom / 3.0f);
 
   const Camera around_the_lamp = camera_at({0, 8, -10}, {0, 10, -45});
-  EXPECT_EQ(improved_paraboloid_map(around_the_lamp, aspect, {LightType::point, {0, 10, -30}, {0, -1, 0}, 30},
-                                    scene_box(), 2048).selection,
+  EXPECT_EQ(improved_paraboloid_map({around_the_lamp, aspect, {LightType::point, {0, 10, -30}, {0, -1, 0}, 30}, scene_box(), 2048}).selection,
             ViewSelection::hemispheres);
 }
 
@@ -69,8 +68,8 @@ TEST(Paraboloid, EnclosingFrustaHoldWhatTheViewMapsIntoItsDisc) {
   for (int i = 0; i < 200; ++i) {
     const Camera camera = random_camera(rng);
     const Light light = random_light(rng, i % 2 ? LightType::point : LightType::spot);
-    for (const ShadowSetup& setup : {dual_paraboloid_map(camera, aspect, light, scene_box(), 1024),
-                                     improved_paraboloid_map(camera, aspect, light, scene_box(), 1024)}) {
+    for (const ShadowSetup& setup : {dual_paraboloid_map({camera, aspect, light, scene_box(), 1024}),
+                                     improved_paraboloid_map({camera, aspect, light, scene_box(), 1024})}) {
       for (const ShadowView& view : setup.views) {
         const std::vector<glm::mat4> frusta = enclosing_frusta(view);
         for (int j = 0; j < 50; ++j) {

@@ -12,6 +12,7 @@
 #include "shadow/paraboloid_map.hpp"
 #include "shadow/post_perspective.hpp"
 #include "shadow/psm_map.hpp"
+#include "shadow/techniques.hpp"
 #include "shadow/uniform_map.hpp"
 
 #include <gtest/gtest.h>
@@ -59,11 +60,11 @@ std::vector<glm::vec3> ray_to_light(const glm::vec3& receiver, const Light& ligh
   return points;
 }
 
-ShadowSetup psm(const Camera& c, const Light& l) { return perspective_shadow_map(c, aspect, l, scene_box(), 2048); }
-ShadowSetup lispsm(const Camera& c, const Light& l) { return light_space_perspective_map(c, aspect, l, scene_box(), 2048); }
-ShadowSetup cascades(const Camera& c, const Light& l) { return cascaded_map(c, aspect, l, scene_box(), 2048); }
-ShadowSetup dpsm(const Camera& c, const Light& l) { return dual_paraboloid_map(c, aspect, l, scene_box(), 2048); }
-ShadowSetup ipsm(const Camera& c, const Light& l) { return improved_paraboloid_map(c, aspect, l, scene_box(), 2048); }
+ShadowSetup psm(const Camera& c, const Light& l) { return perspective_shadow_map({c, aspect, l, scene_box(), 2048}); }
+ShadowSetup lispsm(const Camera& c, const Light& l) { return light_space_perspective_map({c, aspect, l, scene_box(), 2048}); }
+ShadowSetup cascades(const Camera& c, const Light& l) { return cascaded_map({c, aspect, l, scene_box(), 2048}); }
+ShadowSetup dpsm(const Camera& c, const Light& l) { return dual_paraboloid_map({c, aspect, l, scene_box(), 2048}); }
+ShadowSetup ipsm(const Camera& c, const Light& l) { return improved_paraboloid_map({c, aspect, l, scene_box(), 2048}); }
 
 using Param = std::tuple<ShadowSetup (*)(const Camera&, const Light&), LightType>;
 
@@ -79,7 +80,7 @@ TEST_P(WarpedMap, RaysFromReceiversToTheLightMapIntoTheCubeCastersFirst) {
     const FocusBodies bodies = focus_bodies(camera.projection(aspect) * camera.view(), light, scene_box());
     if (bodies.receivers.empty()) continue;
     const ShadowSetup setup = map(camera, light);
-    const ShadowSetup uniform = focused_uniform_map(camera, aspect, light, scene_box(), 2048);
+    const ShadowSetup uniform = focused_uniform_map({camera, aspect, light, scene_box(), 2048});
     warped += setup.views.size() != uniform.views.size() || setup.views[0].paraboloid ||
               setup.views[0].view_projection() != uniform.views[0].view_projection();
     for (int j = 0; j < 20; ++j) {
@@ -173,9 +174,9 @@ TEST(WarpedMap, NearTexelsAreSmallerThanTheUniformMapsForALightAcrossTheView) {
   const Camera camera = deep_view_camera();
   const Light sun{LightType::directional, {}, glm::normalize(glm::vec3(1, -1, 0)), 30};
   const glm::vec3 near_ground(0, 0, 40);
-  const float psm = ground_texel_area(perspective_shadow_map(camera, aspect, sun, scene_box(), 1024).views[0].view_projection(), near_ground);
-  const float uniform = ground_texel_area(focused_uniform_map(camera, aspect, sun, scene_box(), 1024).views[0].view_projection(), near_ground);
-  const float lispsm = ground_texel_area(light_space_perspective_map(camera, aspect, sun, scene_box(), 1024).views[0].view_projection(), near_ground);
+  const float psm = ground_texel_area(perspective_shadow_map({camera, aspect, sun, scene_box(), 1024}).views[0].view_projection(), near_ground);
+  const float uniform = ground_texel_area(focused_uniform_map({camera, aspect, sun, scene_box(), 1024}).views[0].view_projection(), near_ground);
+  const float lispsm = ground_texel_area(light_space_perspective_map({camera, aspect, sun, scene_box(), 1024}).views[0].view_projection(), near_ground);
   EXPECT_LT(psm, uniform / 16.0f);
   EXPECT_LT(lispsm, uniform / 4.0f);
 }
@@ -190,8 +191,8 @@ TEST(PsmMap, PushedNearPlaneGivesFinerTexelsAtItsDepth) {
   for (float z : {38.0f, 33.0f, 25.0f}) {  // ground straight ahead, some 7, 12 and 20 m away
     const glm::vec3 ground(0, 0, z);
     const float depth = glm::dot(ground - camera.position, camera.forward());
-    const glm::mat4 unpushed = perspective_shadow_map(camera, aspect, sun, scene_box(), 1024, 0.0f).views[0].view_projection();
-    const glm::mat4 pushed = perspective_shadow_map(camera, aspect, sun, scene_box(), 1024, 0.9f * depth).views[0].view_projection();
+    const glm::mat4 unpushed = perspective_shadow_map({camera, aspect, sun, scene_box(), 1024, 0.0f}).views[0].view_projection();
+    const glm::mat4 pushed = perspective_shadow_map({camera, aspect, sun, scene_box(), 1024, 0.9f * depth}).views[0].view_projection();
     EXPECT_LT(ground_texel_area(pushed, ground), ground_texel_area(unpushed, ground)) << "depth " << depth;
   }
 }
@@ -212,7 +213,7 @@ const Light noon_sun{LightType::directional, {}, {0, -1, 0}, 30};
 // Ground texel area 6 m beyond the ground point the camera looks at, over that 6 m before it.
 float far_to_near_texel_area(float gamma) {
   const Camera camera = tilted_down(gamma);
-  const glm::mat4 m = light_space_perspective_map(camera, aspect, noon_sun, scene_box(), 2048).views[0].view_projection();
+  const glm::mat4 m = light_space_perspective_map({camera, aspect, noon_sun, scene_box(), 2048}).views[0].view_projection();
   const glm::vec3 looked_at(0, 0, -30 * std::tan(gamma));
   return ground_texel_area(m, looked_at + glm::vec3(0, 0, -6)) / ground_texel_area(m, looked_at + glm::vec3(0, 0, 6));
 }
@@ -232,8 +233,8 @@ TEST(LispsmMap, WarpFadesIntoTheUniformMapAsTheViewTurnsParallelToTheLight) {
 TEST(LispsmMap, BelowMinSinGammaItIsTheUniformMapAboveItAWarp) {
   for (float sin_gamma : {5e-4f, 2e-3f}) {
     const Camera camera = tilted_down(std::asin(sin_gamma));
-    const ShadowSetup lispsm = light_space_perspective_map(camera, aspect, noon_sun, scene_box(), 2048);
-    const ShadowSetup uniform = focused_uniform_map(camera, aspect, noon_sun, scene_box(), 2048);
+    const ShadowSetup lispsm = light_space_perspective_map({camera, aspect, noon_sun, scene_box(), 2048});
+    const ShadowSetup uniform = focused_uniform_map({camera, aspect, noon_sun, scene_box(), 2048});
     ASSERT_EQ(lispsm.views.size(), 1u);
     const bool same = lispsm.views[0].view_projection() == uniform.views[0].view_projection();
     EXPECT_EQ(same, sin_gamma < 1e-3f) << "sin gamma " << sin_gamma << ": " << lispsm.description;
@@ -279,22 +280,18 @@ TEST(WarpedMap, DegenerateConfigurationsGiveViewsWithFiniteMatrices) {
   for (const Camera& c : {ahead, inside, away, down}) {
     for (const Light& light : lights) {
       for (float nearest : {0.0f, 5.0f, 1e6f}) {
-        expect_usable(perspective_shadow_map(c, aspect, light, scene_box(), 1024, nearest));
-      }
-      for (const ShadowSetup& setup : {focused_uniform_map(c, aspect, light, scene_box(), 1024),
-                                       light_space_perspective_map(c, aspect, light, scene_box(), 1024),
-                                       cascaded_map(c, aspect, light, scene_box(), 1024),
-                                       dual_paraboloid_map(c, aspect, light, scene_box(), 1024),
-                                       improved_paraboloid_map(c, aspect, light, scene_box(), 1024)}) {
-        expect_usable(setup);
+        const ShadowInputs inputs(c, aspect, light, scene_box(), 1024, nearest);
+        for (const Technique& t : techniques()) {
+          if (t.setup) expect_usable(t.setup(inputs));
+        }
       }
     }
   }
 }
 
-// The count: a million random configurations for the PSM (ECOVIEW_PSM_CASES sets
-// another), a tenth of that for the other methods, every kind of light: no setup without views,
-// no NaN or infinity.
+// A million random configurations for the PSM (ECOVIEW_PSM_CASES sets another), a tenth of that
+// for every other method of the table, every kind of light: no setup without views, no NaN or
+// infinity.
 TEST(WarpedMap, AMillionRandomConfigurationsGiveFiniteMatrices) {
   const char* cases = std::getenv("ECOVIEW_PSM_CASES");
   const int count = cases ? std::atoi(cases) : 1000000;
@@ -308,12 +305,11 @@ TEST(WarpedMap, AMillionRandomConfigurationsGiveFiniteMatrices) {
   for (int i = 0; i < count; ++i) {
     const Camera camera = random_camera(rng);
     const Light light = random_light(rng, static_cast<LightType>(i % 3));
-    count_bad(perspective_shadow_map(camera, aspect, light, scene_box(), 1024));
-    if (i % 10 == 0) {
-      count_bad(light_space_perspective_map(camera, aspect, light, scene_box(), 1024));
-      count_bad(cascaded_map(camera, aspect, light, scene_box(), 1024));
-      count_bad(dual_paraboloid_map(camera, aspect, light, scene_box(), 1024));
-      count_bad(improved_paraboloid_map(camera, aspect, light, scene_box(), 1024));
+    const ShadowInputs inputs(camera, aspect, light, scene_box(), 1024);
+    count_bad(perspective_shadow_map(inputs));
+    if (i % 10 != 0) continue;
+    for (const Technique& t : techniques()) {
+      if (t.setup && t.method != Method::psm) count_bad(t.setup(inputs));
     }
   }
   EXPECT_EQ(bad, 0);

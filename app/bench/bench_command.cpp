@@ -29,10 +29,23 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<ShadowMethod> directional_methods = {ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::lispsm,
-                                                       ShadowMethod::cascades, ShadowMethod::automatic};
-const std::vector<ShadowMethod> point_methods = {ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::dpsm,
-                                                 ShadowMethod::ipsm, ShadowMethod::automatic};
+// The maps timed for a light: those `auto` chooses among, and `auto`.
+std::vector<shadow::Method> map_methods(shadow::LightType light) {
+  std::vector<shadow::Method> methods = shadow::auto_candidates(light);
+  methods.push_back(shadow::Method::automatic);
+  return methods;
+}
+const std::vector<shadow::Method> directional_methods = map_methods(shadow::LightType::directional);
+const std::vector<shadow::Method> point_methods = map_methods(shadow::LightType::point);
+
+// The exact methods: masks of the frame's lit pixels.
+std::vector<shadow::Method> exact_methods() {
+  std::vector<shadow::Method> methods;
+  for (const shadow::Technique& t : shadow::techniques()) {
+    if (t.lookup == shadow::Lookup::mask) methods.push_back(t.method);
+  }
+  return methods;
+}
 
 // What a run does. The scenes: `field` (posts over a 400 m plane, its 13 lights turning 0°–180°
 // from the view in 15° steps; 90° is the PSM paper's favourable case) and the ecosystem with its
@@ -68,7 +81,7 @@ class ShadowBench {
 
   // Speed against accuracy: every method at every map size, the methods of one size timed in turn.
   void trade_off(const MeasuredView& view, const std::string& scene_name, bool small, Progress& progress) {
-    const std::vector<ShadowMethod>& methods =
+    const std::vector<shadow::Method>& methods =
         view.light.type == shadow::LightType::directional ? directional_methods : point_methods;
     for (int size : plan_.sizes) {
       if (!driver_refusal(for_scene(settings(methods.front(), size), view.scene)).empty()) {  // where the driver allows
@@ -77,7 +90,7 @@ class ShadowBench {
       }
       std::vector<std::unique_ptr<Renderer>> renderers;
       std::vector<Renderer*> timed;
-      for (ShadowMethod method : methods) {
+      for (shadow::Method method : methods) {
         renderers.push_back(std::make_unique<Renderer>(view.scene, for_scene(settings(method, size), view.scene)));
         timed.push_back(renderers.back().get());
       }
@@ -86,23 +99,23 @@ class ShadowBench {
                               small ? plan_.frames : plan_.big_frames);
       for (std::size_t m = 0; m < methods.size(); ++m) {
         BenchRun run = measure_view(*renderers[m], view, timings[m]);
-        run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", shadow_method_name(methods[m])}, {"shadow_size", size}});
+        run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", shadow::technique(methods[m]).name}, {"shadow_size", size}});
         results_.runs.push_back(run);
-        if (size == crop_size) crop(*renderers[m], scene_name, shadow_method_name(methods[m]));
+        if (size == crop_size) crop(*renderers[m], scene_name, shadow::technique(methods[m]).name);
         progress.step();
       }
     }
-    for (ShadowMethod method : methods) {
-      if (method == ShadowMethod::uniform) continue;
-      for (BenchRun& run : equal_error_runs(results_.runs, scene_name, shadow_method_name(method))) results_.runs.push_back(std::move(run));
+    for (shadow::Method method : methods) {
+      if (method == shadow::Method::uniform) continue;
+      for (BenchRun& run : equal_error_runs(results_.runs, scene_name, shadow::technique(method).name)) results_.runs.push_back(std::move(run));
     }
     // The exact methods are points on the chart too: what exactness costs here, one frame each.
-    for (ShadowMethod exact : {ShadowMethod::volumes, ShadowMethod::reference}) {
+    for (shadow::Method exact : exact_methods()) {
       Renderer renderer(view.scene, for_scene(settings(exact, 0), view.scene));
       BenchRun run = measure_view(renderer, view, time_frames(renderer, view.camera, view.light, view.t, 0, 1));
-      run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", shadow_method_name(exact)}, {"shadow_size", 0}});
+      run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", shadow::technique(exact).name}, {"shadow_size", 0}});
       results_.runs.push_back(run);
-      crop(renderer, scene_name, shadow_method_name(exact));
+      crop(renderer, scene_name, shadow::technique(exact).name);
     }
     progress.step();
   }
@@ -111,10 +124,10 @@ class ShadowBench {
   // across it (90°) to into the camera (180°).
   void stability(const Scene& field, ExactVisibility& exact, Progress& progress) {
     for (std::size_t l = 0; l < field.lights.size(); l += static_cast<std::size_t>(plan_.angle_step)) {
-      for (ShadowMethod method : directional_methods) {
+      for (shadow::Method method : directional_methods) {
         Renderer renderer(field, for_scene(settings(method, crop_size), field));
         BenchRun run = measure_view(renderer, {field, exact, field.camera, field.lights[l]});
-        run.params.update({{"sweep", "stability"}, {"scene", "field"}, {"method", shadow_method_name(method)},
+        run.params.update({{"sweep", "stability"}, {"scene", "field"}, {"method", shadow::technique(method).name},
                            {"shadow_size", crop_size}, {"light_view_deg", field_light_step_deg * static_cast<float>(l)}});
         results_.runs.push_back(run);
         progress.step();
@@ -129,10 +142,10 @@ class ShadowBench {
       shadow::Light lamp;
       lamp.type = shadow::LightType::point;
       lamp.position = field.camera.position + offset * field.camera.forward() + glm::vec3(0.0f, 8.0f, 0.0f);
-      for (ShadowMethod method : point_methods) {
+      for (shadow::Method method : point_methods) {
         Renderer renderer(field, for_scene(settings(method, crop_size), field));
         BenchRun run = measure_view(renderer, {field, exact, field.camera, lamp});
-        run.params.update({{"sweep", "crossing"}, {"scene", "field"}, {"method", shadow_method_name(method)},
+        run.params.update({{"sweep", "crossing"}, {"scene", "field"}, {"method", shadow::technique(method).name},
                            {"shadow_size", crop_size}, {"light_offset_m", offset}});
         results_.runs.push_back(run);
         progress.step();
@@ -144,12 +157,12 @@ class ShadowBench {
   void flythrough(const Scene& scene, ExactVisibility& exact, const CameraPath& path, const std::string& scene_name,
                   Progress& progress) {
     const shadow::Light& light = scene.lights[0];
-    for (ShadowMethod method : directional_methods) {
+    for (shadow::Method method : directional_methods) {
       Renderer renderer(scene, for_scene(settings(method, crop_size), scene));
       for (int f = 0; f < plan_.flight_frames; ++f) {
         const double t = path.duration() * f / std::max(1, plan_.flight_frames - 1);
         BenchRun run = measure_view(renderer, {scene, exact, path.at(t, scene.camera), light, t});
-        run.params.update({{"sweep", "flythrough"}, {"scene", scene_name}, {"method", shadow_method_name(method)},
+        run.params.update({{"sweep", "flythrough"}, {"scene", scene_name}, {"method", shadow::technique(method).name},
                            {"shadow_size", crop_size}, {"frame", f}, {"t", t}});
         results_.runs.push_back(run);
         progress.step();
@@ -167,7 +180,7 @@ class ShadowBench {
   }
 
  private:
-  RenderSettings settings(ShadowMethod method, int shadow_size) const {
+  RenderSettings settings(shadow::Method method, int shadow_size) const {
     RenderSettings s = base_;
     s.method = method;
     if (shadow_size > 0) s.shadow_size = shadow_size;
@@ -177,7 +190,7 @@ class ShadowBench {
   // flicker (DESIGN.md): the mean share of pixels whose shadow state changes between consecutive
   // frames at 30 per second from the middle of the path, less the same for the reference.
   BenchRun flicker(Renderer& renderer, const Scene& scene, ExactVisibility& exact, const CameraPath& path,
-                   const std::string& scene_name, ShadowMethod method) {
+                   const std::string& scene_name, shadow::Method method) {
     const double start = 0.5 * path.duration();
     Image8 last_frame, last_reference;
     double changed = 0.0, reference_changed = 0.0;
@@ -197,7 +210,7 @@ class ShadowBench {
     }
     const double pairs = std::max(1, plan_.flicker_frames - 1);
     BenchRun run;
-    run.params = {{"sweep", "flicker"}, {"scene", scene_name}, {"method", shadow_method_name(method)}, {"shadow_size", crop_size},
+    run.params = {{"sweep", "flicker"}, {"scene", scene_name}, {"method", shadow::technique(method).name}, {"shadow_size", crop_size},
                   {"frames", plan_.flicker_frames}, {"t", start}};
     run.figures = {{"flicker", (changed - reference_changed) / pairs}, {"changed", changed / pairs},
                    {"reference_changed", reference_changed / pairs}};

@@ -89,7 +89,7 @@ class DensityBench {
   // the points are held to.
   void quality(const Scene& scene, const std::string& scene_name, Progress& progress) {
     RenderSettings settings = base_;
-    settings.method = ShadowMethod::none;  // the sampler's quality alone; shadows are bench's
+    settings.method = shadow::Method::none;  // the sampler's quality alone; shadows are bench's
     settings.point_meshes_only = true;
     // The measures (the plants drawn as polygons, what the rest hides) are the CPU sampler's
     // choice, so the points measured against them are its points too.

@@ -59,10 +59,10 @@ class PaperSuite {
   // Fig. 1: the chess board under its spot light, uniform against PSM at 512², with their maps.
   void fig1(Progress& progress) {
     const Loaded chess = load("chess");
-    for (ShadowMethod m : {ShadowMethod::uniform, ShadowMethod::psm}) {
+    for (shadow::Method m : {shadow::Method::uniform, shadow::Method::psm}) {
       Renderer renderer(chess.scene, settings(chess, m, 512));
       add("fig1", "chess", renderer, chess.view(chess.scene.lights[0]), small_timing());
-      write_png("paper_fig1_" + shadow_method_name(m) + "_map.png", encode_aov(Aov::shadowmap, renderer, chess.scene.camera.far));
+      write_png("paper_fig1_" + shadow::technique(m).name + "_map.png", encode_aov(Aov::shadowmap, renderer, chess.scene.camera.far));
       progress.step();
     }
   }
@@ -71,11 +71,11 @@ class PaperSuite {
   void fig8(Progress& progress) {
     const Loaded square = load("square");
     Image8 halves;
-    for (ShadowMethod m : {ShadowMethod::uniform, ShadowMethod::psm}) {
+    for (shadow::Method m : {shadow::Method::uniform, shadow::Method::psm}) {
       Renderer renderer(square.scene, settings(square, m, 1024));
       add("fig8", "square", renderer, square.view(square.scene.lights[0]), small_timing());
       const Image8 color = renderer.frame().read_color();
-      if (m == ShadowMethod::uniform) {
+      if (m == shadow::Method::uniform) {
         halves = color;
       } else {
         for (int y = 0; y < color.height; ++y) {
@@ -93,7 +93,7 @@ class PaperSuite {
   void fig9(Progress& progress) {
     const Loaded street = load("street");
     const CameraPath path = CameraPath::load(open_input("street", "paths"));
-    Renderer renderer(street.scene, settings(street, ShadowMethod::psm, 1024));
+    Renderer renderer(street.scene, settings(street, shadow::Method::psm, 1024));
     const int frames = quick_ ? quick_street_frames : street_frames;
     for (int f = 0; f < frames; ++f) {
       const double t = path.duration() * f / (frames - 1);
@@ -110,7 +110,7 @@ class PaperSuite {
   void fig10(Progress& progress) {
     const std::string name = quick_ ? "courtyard" : default_scene_name;
     const Loaded eco = load(name);
-    for (ShadowMethod m : {ShadowMethod::none, ShadowMethod::uniform, ShadowMethod::psm}) {
+    for (shadow::Method m : {shadow::Method::none, shadow::Method::uniform, shadow::Method::psm}) {
       Renderer renderer(eco.scene, settings(eco, m, 1024));
       add("fig10", name, renderer, eco.view(eco.scene.lights[0]), quick_ ? small_timing() : Timing{1, 3});
       progress.step();
@@ -123,7 +123,7 @@ class PaperSuite {
     for (const auto& [name, light] : {std::pair<const char*, int>{"courtyard", 2}, std::pair<const char*, int>{"chess", 0}}) {
       const Loaded scene = load(name);
       for (int size : {512, 2048}) {
-        for (ShadowMethod m : {ShadowMethod::uniform, ShadowMethod::dpsm, ShadowMethod::ipsm}) {
+        for (shadow::Method m : {shadow::Method::uniform, shadow::Method::dpsm, shadow::Method::ipsm}) {
           Renderer renderer(scene.scene, settings(scene, m, size));
           add("ipsm", name, renderer, scene.view(scene.scene.lights[static_cast<std::size_t>(light)]), small_timing(), size == 512);
           progress.step();
@@ -138,12 +138,12 @@ class PaperSuite {
   // for the PSM), constant bias with the default slope and slope with the default constant.
   void implementation_note(Progress& progress) {
     const Loaded field = load("field");
-    for (ShadowMethod m : {ShadowMethod::uniform, ShadowMethod::psm}) {
+    for (shadow::Method m : {shadow::Method::uniform, shadow::Method::psm}) {
       Renderer renderer(field.scene, settings(field, m, 128));
       add("overhead", "field", renderer, field.view(field.scene.lights[across_the_view]), small_timing());
       progress.step();
     }
-    const ShadowPass::DepthBias defaults;
+    const DepthBias defaults;
     for (float constant : bias_constants) bias_run(field, {defaults.slope, constant}, progress);
     for (float slope : bias_slopes) bias_run(field, {slope, defaults.constant}, progress);
   }
@@ -176,7 +176,7 @@ class PaperSuite {
   }
 
   // As bench sets them (for_scene: points off where the scene has no point meshes).
-  RenderSettings settings(const Loaded& loaded, ShadowMethod method, int shadow_size) const {
+  RenderSettings settings(const Loaded& loaded, shadow::Method method, int shadow_size) const {
     RenderSettings s = base_;
     s.method = method;
     s.shadow_size = shadow_size;
@@ -189,9 +189,9 @@ class PaperSuite {
   BenchRun& add(const std::string& figure, const std::string& scene, Renderer& renderer, const MeasuredView& view,
                 Timing timing, bool image = true) {
     BenchRun run = measure_view(renderer, view, time_frames(renderer, view.camera, view.light, view.t, timing.warmup, timing.frames));
-    const std::string method = shadow_method_name(renderer.settings().method);
+    const std::string method = shadow::technique(renderer.settings().method).name;
     run.params.update({{"sweep", "paper"}, {"figure", figure}, {"scene", scene}, {"method", method},
-                       {"shadow_size", renderer.settings().method == ShadowMethod::none ? 0 : renderer.settings().shadow_size}});
+                       {"shadow_size", renderer.settings().method == shadow::Method::none ? 0 : renderer.settings().shadow_size}});
     if (image) {
       const std::string file = "paper_" + figure + "_" + scene + "_" + method + "_" + std::to_string(renderer.settings().shadow_size) + ".png";
       write_png(file, encode_png(renderer.frame().read_color()));
@@ -201,8 +201,8 @@ class PaperSuite {
     return results_.runs.back();
   }
 
-  void bias_run(const Loaded& field, ShadowPass::DepthBias bias, Progress& progress) {
-    RenderSettings s = settings(field, ShadowMethod::psm, 1024);
+  void bias_run(const Loaded& field, DepthBias bias, Progress& progress) {
+    RenderSettings s = settings(field, shadow::Method::psm, 1024);
     s.shadow_bias = bias;
     Renderer renderer(field.scene, s);
     BenchRun& run = add("bias", "field", renderer, field.view(field.scene.lights[0]), small_timing(), false);

@@ -55,6 +55,32 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
 
 namespace {
 
+// "uniform (focused uniform shadow map), …, auto (…) or none (no shadows)", from the table.
+std::string method_help() {
+  std::string help;
+  const std::vector<shadow::Technique>& all = shadow::techniques();
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const shadow::Technique& t = all[i];
+    std::string lights;
+    if (!t.warps.all()) {
+      for (const auto& [type, name] : {std::pair{shadow::LightType::directional, "directional"},
+                                       std::pair{shadow::LightType::point, "point"}, std::pair{shadow::LightType::spot, "spot"}}) {
+        if (t.warps.has(type)) lights += (lights.empty() ? "; " : " and ") + std::string(name);
+      }
+      lights += " lights only, others get the uniform map";
+    }
+    help += (i == 0 ? "" : i + 1 == all.size() ? " or " : ", ") + t.name + " (" + t.help + lights + ")";
+  }
+  return help;
+}
+
+shadow::Method parse_method(const std::string& name) {
+  if (const shadow::Technique* t = shadow::find_technique(name)) return t->method;
+  std::string names;
+  for (const shadow::Technique& t : shadow::techniques()) names += (names.empty() ? "" : ", ") + t.name;
+  throw InputError("--method: '" + name + "' is not available in this build (available: " + names + ")");
+}
+
 float check_bias(const char* option, double bias) {
   if (!std::isfinite(bias) || bias < 0.0 || bias > 1e6) throw InputError(std::string(option) + ": must be between 0 and 1000000");
   return static_cast<float>(bias);
@@ -65,18 +91,7 @@ float check_bias(const char* option, double bias) {
 void add_render_options(CLI::App& command, RenderOptions& o) {
   command.add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
   command.add_option("--shadow-size", o.shadow_size, "Shadow map size in texels (square)")->capture_default_str();
-  command.add_option("--method", o.method, "Shadow method: uniform (focused uniform shadow map), psm (perspective shadow map, "
-                                         "built in the camera's post-perspective space), lispsm (light space "
-                                         "perspective shadow map), cascades (4 cascades, practical splits, "
-                                         "texel snapping; lispsm and cascades warp directional lights only, "
-                                         "others get the uniform map), dpsm (dual paraboloid map), ipsm "
-                                         "(improved paraboloid map, turned and cut to the receivers; dpsm and ipsm "
-                                         "take point and spot lights, directional ones get the uniform map), volumes (exact shadows of "
-                                         "polygons by z-fail stencil shadow volumes; point splats cast none), reference (exact: rays to "
-                                         "the light against every triangle, plants as meshes, with Embree), auto (each frame the method "
-                                         "whose median aliasing factor, predicted from its matrices on the last "
-                                         "frame's surface, is least) or none")
-      ->capture_default_str();
+  command.add_option("--method", o.method, "Shadow method: " + method_help())->capture_default_str();
   command.add_option("--geometry", o.geometry, "points: far plants, people and animals as view-adaptive point "
                                                "splats; polygons: everything as polygons (plants culled to each view as the points are)")->capture_default_str();
   command.add_option("--sampler", o.sampler, "Where the frame's points and polygons are chosen: gpu (compute passes band by "
@@ -99,7 +114,7 @@ RenderSettings render_settings(const RenderOptions& o) {
   settings.width = size.x;
   settings.height = size.y;
   settings.shadow_size = check_shadow_size(o.shadow_size);
-  settings.method = parse_shadow_method(o.method);
+  settings.method = parse_method(o.method);
   if (o.geometry != "points" && o.geometry != "polygons") {
     throw InputError("--geometry: expected points or polygons, got '" + o.geometry + "'");
   }

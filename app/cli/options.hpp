@@ -1,5 +1,5 @@
 #pragma once
-#include "app/render/renderer.hpp"
+#include "app/render/render_settings.hpp"
 #include "app/scene/scene.hpp"
 
 #include <CLI/CLI.hpp>

@@ -5,12 +5,7 @@
 #include "app/gl/gl_cpu_time.hpp"
 #include "app/render/pixel_rays.hpp"
 #include "shadow/aliasing.hpp"
-#include "shadow/cascaded_map.hpp"
-#include "shadow/focus_body.hpp"
-#include "shadow/lispsm_map.hpp"
 #include "shadow/paraboloid_map.hpp"
-#include "shadow/psm_map.hpp"
-#include "shadow/uniform_map.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -43,39 +38,6 @@ std::vector<glm::mat4> culling_frusta(const shadow::ShadowView& view) {
 
 }  // namespace
 
-std::string shadow_method_name(ShadowMethod method) {
-  switch (method) {
-    case ShadowMethod::none: return "none";
-    case ShadowMethod::uniform: return "uniform";
-    case ShadowMethod::psm: return "psm";
-    case ShadowMethod::lispsm: return "lispsm";
-    case ShadowMethod::cascades: return "cascades";
-    case ShadowMethod::dpsm: return "dpsm";
-    case ShadowMethod::ipsm: return "ipsm";
-    case ShadowMethod::volumes: return "volumes";
-    case ShadowMethod::reference: return "reference";
-    case ShadowMethod::automatic: return "auto";
-  }
-  return "?";
-}
-
-const std::vector<ShadowMethod>& all_shadow_methods() {
-  static const std::vector<ShadowMethod> all = {ShadowMethod::uniform,  ShadowMethod::psm,     ShadowMethod::lispsm,
-                                                ShadowMethod::cascades, ShadowMethod::dpsm,    ShadowMethod::ipsm,
-                                                ShadowMethod::volumes,  ShadowMethod::reference, ShadowMethod::automatic,
-                                                ShadowMethod::none};
-  return all;
-}
-
-ShadowMethod parse_shadow_method(const std::string& name) {
-  std::string names;
-  for (ShadowMethod m : all_shadow_methods()) {
-    if (name == shadow_method_name(m)) return m;
-    names += (names.empty() ? "" : ", ") + shadow_method_name(m);
-  }
-  throw InputError("--method: '" + name + "' is not available in this build (available: " + names + ")");
-}
-
 pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSettings& settings, std::vector<glm::mat4> views) {
   const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
   const float tan_half = std::tan(glm::radians(camera.fov_y_deg) / 2.0f);
@@ -89,11 +51,6 @@ pointgen::SamplerView sampler_view(const shadow::Camera& camera, const RenderSet
   view.pixels = glm::ivec2(settings.width, settings.height);
   view.splat_pixels = settings.splat_size;
   return view;
-}
-
-RenderSettings for_scene(RenderSettings settings, const Scene& scene) {
-  settings.points = settings.points && scene.has_point_meshes();
-  return settings;
 }
 
 std::string driver_refusal(const RenderSettings& s) {
@@ -149,16 +106,16 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
 
 // Made with the renderer, not with the first frame, so that frame times hold no shader compilation.
 void Renderer::make_method_passes() {
-  if (settings_.method == ShadowMethod::volumes && !volume_pass_) {
+  if (settings_.method == shadow::Method::volumes && !volume_pass_) {
     volume_pass_ = std::make_unique<ShadowVolumePass>(settings_.width, settings_.height, frame_pass_.depth_stencil_texture());
   }
-  if (settings_.method == ShadowMethod::reference && !reference_mask_) {
+  if (settings_.method == shadow::Method::reference && !reference_mask_) {
     reference_mask_ = std::make_unique<gl::Texture>(GL_TEXTURE_2D);
     glTextureStorage2D(reference_mask_->name(), 1, GL_R8, settings_.width, settings_.height);
   }
 }
 
-void Renderer::change(ShadowMethod method, int shadow_size, float k) {
+void Renderer::change(shadow::Method method, int shadow_size, float k) {
   RenderSettings wanted = settings_;
   wanted.method = method;
   wanted.shadow_size = shadow_size;
@@ -233,48 +190,37 @@ pointgen::SampledFrame Renderer::measured(const pointgen::SampledFrame& selectio
   return out;
 }
 
-shadow::ShadowSetup Renderer::make_shadow_setup(ShadowMethod method, const shadow::Camera& camera,
-                                                const shadow::Light& light) const {
-  const int size = settings_.shadow_size;
-  switch (method) {
-    case ShadowMethod::automatic: return best_predicted_setup(camera, light);
-    case ShadowMethod::psm:
-      return shadow::perspective_shadow_map(camera, aspect(), light, scene_bounds_, size,
-                                            nearest_visible_margin * nearest_visible_);
-    case ShadowMethod::lispsm: return shadow::light_space_perspective_map(camera, aspect(), light, scene_bounds_, size);
-    case ShadowMethod::cascades: return shadow::cascaded_map(camera, aspect(), light, scene_bounds_, size);
-    case ShadowMethod::dpsm: return shadow::dual_paraboloid_map(camera, aspect(), light, scene_bounds_, size);
-    case ShadowMethod::ipsm: return shadow::improved_paraboloid_map(camera, aspect(), light, scene_bounds_, size);
-    default: return shadow::focused_uniform_map(camera, aspect(), light, scene_bounds_, size);
-  }
+shadow::ShadowInputs Renderer::shadow_inputs(const shadow::Camera& camera, const shadow::Light& light) const {
+  return {camera, aspect(), light, scene_bounds_, settings_.shadow_size, nearest_visible_margin * nearest_visible_};
+}
+
+shadow::ShadowSetup Renderer::make_shadow_setup(const shadow::ShadowInputs& inputs) const {
+  if (settings_.method == shadow::Method::automatic) return best_predicted_setup(inputs);
+  return shadow::technique(settings_.method).setup(inputs);
 }
 
 // --method auto: each candidate's median aliasing factor predicted from its matrices on the
 // surface the last frame showed; the least wins. The median, not alias_p95: `err` counts pixels,
 // and where every method undersamples the typical pixel tells more of it than the worst 5 %
 // (docs/benchmarks.md, "What auto chooses by").
-shadow::ShadowSetup Renderer::best_predicted_setup(const shadow::Camera& camera, const shadow::Light& light) const {
-  const std::vector<ShadowMethod> candidates =
-      light.type == shadow::LightType::directional
-          ? std::vector<ShadowMethod>{ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::lispsm, ShadowMethod::cascades}
-          : std::vector<ShadowMethod>{ShadowMethod::uniform, ShadowMethod::psm, ShadowMethod::dpsm, ShadowMethod::ipsm};
+shadow::ShadowSetup Renderer::best_predicted_setup(const shadow::ShadowInputs& inputs) const {
+  const std::vector<shadow::Method> candidates = shadow::auto_candidates(inputs.light.type);
   std::vector<shadow::ShadowSetup> setups;
-  for (ShadowMethod method : candidates) setups.push_back(make_shadow_setup(method, camera, light));
-  const std::vector<float> predicted =
-      frame_pass_.predict_aliasing(last_camera_, camera, light, setups, settings_.shadow_size, shadow::median_fraction);
+  for (shadow::Method method : candidates) setups.push_back(shadow::technique(method).setup(inputs));
+  const std::vector<float> predicted = frame_pass_.predict_aliasing(last_camera_, inputs.camera, inputs.light, setups,
+                                                                    settings_.shadow_size, shadow::median_fraction);
   const auto best = static_cast<std::size_t>(std::min_element(predicted.begin(), predicted.end()) - predicted.begin());
   char figure[32];
   std::snprintf(figure, sizeof figure, "%.2f", predicted[best]);
   setups[best].description =
-      "auto: " + shadow_method_name(candidates[best]) + ", predicted median aliasing " + figure + " (" + setups[best].description + ")";
+      "auto: " + shadow::technique(candidates[best]).name + ", predicted median aliasing " + figure + " (" + setups[best].description + ")";
   return std::move(setups[best]);
 }
 
 // The shadow map for this frame; with points on, far instances of point meshes are splatted into
 // it. Each view chooses its own points and polygons, so that a view with one frustum keeps the
 // sampler's cap and occlusion (cascades, cube faces). Timed from the first GL draw to the last.
-void Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Light& light) {
-  setup_ = make_shadow_setup(settings_.method, camera, light);
+void Renderer::render_shadow_map(const shadow::Camera& camera) {
   std::vector<pointgen::SampledFrame> selections;
   if (settings_.points) {
     const auto start = std::chrono::steady_clock::now();
@@ -432,7 +378,7 @@ void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, 
   const double host_start = host_cpu_ms();
   // The first frame has no frame before it: it takes one from itself drawn without shadows.
   if (needs_last_frame() && !has_last_frame_) start_after(camera, light, t);
-  draw(camera, light, t, settings_.method != ShadowMethod::none);
+  draw(camera, light, t, shadow::technique(settings_.method).lookup != shadow::Lookup::none);
   if (needs_last_frame()) remember_last_frame();
   // draw() added the sampling thread's. The GL calls' share is an estimate (each call's clock
   // readings are taken out at their least cost), and a frame whose own work is within its error can
@@ -448,13 +394,11 @@ void Renderer::start_after(const shadow::Camera& camera, const shadow::Light& li
 
 // The PSM takes its near plane from the last frame, auto its surface, caster culling its receivers.
 bool Renderer::needs_last_frame() const {
-  return settings_.method == ShadowMethod::psm || settings_.method == ShadowMethod::automatic || culls_casters();
+  return shadow::technique(settings_.method).last_frame != shadow::LastFrame::nothing || culls_casters();
 }
 
 bool Renderer::culls_casters() const {
-  const ShadowMethod m = settings_.method;
-  return settings_.points && !gpu_sampler_ && settings_.cull_casters && m != ShadowMethod::none && m != ShadowMethod::volumes &&
-         m != ShadowMethod::reference;
+  return settings_.points && !gpu_sampler_ && settings_.cull_casters && shadow::technique(settings_.method).culls_casters;
 }
 
 bool Renderer::draws_points() const { return settings_.points && (!gpu_sampler_ || gpu_sampler_->plant_count() > 0); }
@@ -480,9 +424,15 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   view_projection_ = camera.projection(aspect()) * camera.view();
   camera_ = camera;
   light_ = light;
-  const bool maps = shadows && settings_.method != ShadowMethod::volumes && settings_.method != ShadowMethod::reference;
+  const bool map = shadows && shadow::technique(settings_.method).lookup == shadow::Lookup::map;
+  std::vector<shadow::Plane> casters;  // the focus body of the casters: planes, normals out
+  if (map) {
+    const shadow::ShadowInputs inputs = shadow_inputs(camera, light);
+    setup_ = make_shadow_setup(inputs);
+    casters = inputs.bodies.casters.face_planes();
+  }
   pointgen::SampledFrame selection =
-      gpu_sampler_ && maps ? draw_sampled_on_gpu(camera, light) : draw_sampled_on_cpu(camera, light, shadows);
+      gpu_sampler_ && map ? draw_sampled_on_gpu(camera, light, casters) : draw_sampled_on_cpu(camera, light, shadows);
   stats_.points = selection.point_count;
   stats_.triangles = fixed_triangles() + selection.triangle_count;
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
@@ -502,8 +452,8 @@ std::size_t Renderer::fixed_triangles() const {
 }
 
 pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camera, const shadow::Light& light, bool shadows) {
-  const bool volumes = settings_.method == ShadowMethod::volumes;
-  const bool reference = settings_.method == ShadowMethod::reference;
+  const bool volumes = settings_.method == shadow::Method::volumes;
+  const bool reference = settings_.method == shadow::Method::reference;
   // The frame's points are chosen on another thread while this one chooses the shadow map's and
   // draws it: sampling is CPU work, and on llvmpipe the GL work is too, so the two overlap on two
   // cores. The sampler only reads what pose() left.
@@ -522,7 +472,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camer
   }
   std::optional<FramePass::ShadowLookup> lookup;
   if (shadows && !volumes && !reference) {
-    render_shadow_map(camera, light);
+    render_shadow_map(camera);
     lookup.emplace(FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size()});
   }
   pointgen::SampledFrame selection;
@@ -549,13 +499,13 @@ pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camer
   return selection;
 }
 
-pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camera, const shadow::Light& light) {
+pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camera, const shadow::Light& light,
+                                                    const std::vector<shadow::Plane>& casters) {
   pointgen::SampledFrame selection;
   selection.polygons.resize(tables_.size());
   upload_polygons(selection);  // the point meshes' plants come from gpu_sampler_
-  setup_ = make_shadow_setup(settings_.method, camera, light);
   frame_timer_.start();
-  draw_surfaces(camera, shadow::focus_bodies(view_projection_, light, scene_bounds_).casters.face_planes());
+  draw_surfaces(camera, casters);
   frame_timer_.stop();
 
   // The shadow map draws the frame's own plants, the casters' band with them (Stamminger and

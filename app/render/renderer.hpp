@@ -7,6 +7,7 @@
 #include "app/render/gpu_scene.hpp"
 #include "app/render/point_samples.hpp"
 #include "app/render/point_splat.hpp"
+#include "app/render/render_settings.hpp"
 #include "app/render/shadow_pass.hpp"
 #include "app/reference/exact_visibility.hpp"
 #include "app/render/shadow_volume_pass.hpp"
@@ -21,45 +22,6 @@
 
 namespace ecoview {
 
-// `automatic` is --method auto.
-enum class ShadowMethod { none, uniform, psm, lispsm, cascades, dpsm, ipsm, volumes, reference, automatic };
-
-// Every method, in the order --help and the viewer list them.
-const std::vector<ShadowMethod>& all_shadow_methods();
-// Parses a --method name; throws InputError listing the methods this build renders.
-ShadowMethod parse_shadow_method(const std::string& name);
-std::string shadow_method_name(ShadowMethod method);
-
-struct RenderSettings {
-  int width = 1280;
-  int height = 720;
-  int shadow_size = 2048;
-  ShadowMethod method = ShadowMethod::uniform;
-  bool points = true;       // far plants, people and animals as point splats; false: all polygons
-  float k = pointgen::PointDensity{}.k;  // points per pixel of projected surface (docs/point_density.md)
-  int splat_size = 2;       // pixels per side of one point's splat in the frame
-  // Texels per side in the shadow map. One: with k points per texel a splat of 2 x 2 closes the
-  // gaps between leaves, and the plants' shadows grow (docs/benchmarks.md, "`ecoview bench`").
-  int shadow_splat_size = 1;
-  ShadowPass::DepthBias shadow_bias{};  // the shadow pass's polygon offset (--bias-slope, --bias-constant)
-  float points_per_triangle = 4.0f;  // a point costs 1/this of a triangle (the point-or-polygon choice)
-  bool point_meshes_only = false;    // draw nothing else (for the density figures)
-  // For the density figures: draw the instances the sampler makes points as polygons instead
-  // (their reference), or not at all (what the rest hides); those it makes polygons stay.
-  enum class Measure { off, their_polygons, without_them } measure = Measure::off;
-  bool aliasing = false;  // fill the frame's aliasing target (the `aliasing` AOV, alias_p95)
-  // The CPU sampler skips point casters whose shadows fall on nothing the last frame showed
-  // (pointgen::ReceiverMask); the GPU sampler always selects casters by the frame's receivers.
-  bool cull_casters = true;
-  // The frame's points and polygons chosen on the GPU (GpuSampler); off: by the CPU's view sampler,
-  // the GPU sampler's test oracle, which the density figures' measures also use.
-  bool gpu_sampler = true;
-};
-
-// The settings with points off where the scene has no mesh that may be drawn as points: the same
-// frames, without the point passes over nothing and their buffers' size limits (the benchmarks'
-// settings; capture and view keep what they are given).
-RenderSettings for_scene(RenderSettings settings, const Scene& scene);
 // Why this driver cannot render a frame or a shadow map of the settings' sizes (its textures or
 // the point buffers would be too large); empty where it can. The Renderer throws it as InputError.
 std::string driver_refusal(const RenderSettings& settings);
@@ -99,7 +61,7 @@ class Renderer {
   // bytes as one that rendered frame i-1 first.
   void start_after(const shadow::Camera& camera, const shadow::Light& light, double t);
   // Live changes (ecoview view): shadow method, map size and points per pixel, from the next frame on.
-  void change(ShadowMethod method, int shadow_size, float k);
+  void change(shadow::Method method, int shadow_size, float k);
   const RenderSettings& settings() const { return settings_; }
   const FramePass& frame() const { return frame_pass_; }
   const ShadowPass& shadow_map() const { return shadow_pass_; }
@@ -131,8 +93,11 @@ class Renderer {
   void upload_polygons(const pointgen::SampledFrame& selection);
   // One frame, with or without the shadow map.
   void draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows);
-  shadow::ShadowSetup make_shadow_setup(ShadowMethod method, const shadow::Camera& camera, const shadow::Light& light) const;
-  shadow::ShadowSetup best_predicted_setup(const shadow::Camera& camera, const shadow::Light& light) const;
+  // What the frame's shadow techniques set up from: the focus bodies, clipped once.
+  shadow::ShadowInputs shadow_inputs(const shadow::Camera& camera, const shadow::Light& light) const;
+  // The map of the method, or for `auto` the best predicted one.
+  shadow::ShadowSetup make_shadow_setup(const shadow::ShadowInputs& inputs) const;
+  shadow::ShadowSetup best_predicted_setup(const shadow::ShadowInputs& inputs) const;
   // Whether the shadow sampler skips casters by the last frame's receivers.
   bool culls_casters() const;
   // Whether frames have point passes: not where the GPU sampler holds no plants (a scene without
@@ -143,7 +108,8 @@ class Renderer {
   // Keeps what the next frame needs of this one: its nearest depth (PSM), its camera (auto predicts
   // from its surfaces, which the frame pass keeps) and its receivers (culls_casters).
   void remember_last_frame();
-  void render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
+  // The frame's shadow map (setup_), its plants chosen on the CPU.
+  void render_shadow_map(const shadow::Camera& camera);
   // Shadow volumes in place of a map: the lit-pixel mask of this frame.
   FramePass::ShadowLookup render_shadow_volumes(const shadow::Camera& camera, const shadow::Light& light);
   // The exact reference in place of a map: the mask from ExactVisibility.
@@ -155,7 +121,9 @@ class Renderer {
   // A frame with a shadow map whose plants the GPU sampler chooses once, for the camera: the frame's
   // surfaces first, then the map from the same plants (and the casters out of view), then the
   // frame's lighting.
-  pointgen::SampledFrame draw_sampled_on_gpu(const shadow::Camera& camera, const shadow::Light& light);
+  // `casters`: the focus body of the casters (planes, normals out).
+  pointgen::SampledFrame draw_sampled_on_gpu(const shadow::Camera& camera, const shadow::Light& light,
+                                             const std::vector<shadow::Plane>& casters);
   // The triangles of the meshes never drawn as points (ground, buildings), all of them.
   std::size_t fixed_triangles() const;
   // The texels of one shadow-map layer.

@@ -2,6 +2,7 @@
 #include "app/gl/gl_objects.hpp"
 #include "app/render/gpu_scene.hpp"
 #include "app/render/image.hpp"
+#include "app/render/render_settings.hpp"
 #include "shadow/shadow_setup.hpp"
 
 namespace ecoview {
@@ -11,13 +12,6 @@ namespace ecoview {
 // PCF), with slope-scaled polygon offset against acne. Paraboloid views tessellate the scene.
 class ShadowPass {
  public:
-  // glPolygonOffset(slope, constant): `slope` scales with each triangle's depth slope, which
-  // removes acne on surfaces the light grazes; `constant` adds that many depth steps everywhere.
-  // Too little leaves acne, too much lifts shadows off their casters (leak).
-  struct DepthBias {
-    float slope = 2.0f;
-    float constant = 4.0f;
-  };
   // `surface_textures`: the scene has textures or alpha masks (GpuScene::has_surface_textures),
   // and masks cut its surfaces out of the map.
   ShadowPass(int size, DepthBias bias, bool surface_textures);

@@ -76,7 +76,7 @@ void Hud::draw(const ViewStatus& status, const Renderer& renderer, ViewControls&
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
-  const bool has_map = renderer.settings().method != ShadowMethod::none &&
+  const bool has_map = shadow::technique(renderer.settings().method).lookup == shadow::Lookup::map &&
                        renderer.shadow_setup().selection != shadow::ViewSelection::screen_mask;
   if (controls.aliasing_overlay && has_map) draw_aliasing_overlay(renderer);
   draw_panel(status, renderer, controls);
@@ -105,9 +105,9 @@ void Hud::draw_panel(const ViewStatus& status, const Renderer& renderer, ViewCon
   if (!status.activity.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", status.activity.c_str());
   ImGui::Separator();
 
-  if (ImGui::BeginCombo("method", shadow_method_name(controls.method).c_str())) {
-    for (ShadowMethod m : all_shadow_methods()) {
-      if (ImGui::Selectable(shadow_method_name(m).c_str(), m == controls.method)) controls.method = m;
+  if (ImGui::BeginCombo("method", shadow::technique(controls.method).name.c_str())) {
+    for (const shadow::Technique& t : shadow::techniques()) {
+      if (ImGui::Selectable(t.name.c_str(), t.method == controls.method)) controls.method = t.method;
     }
     ImGui::EndCombo();
   }
@@ -123,7 +123,7 @@ void Hud::draw_panel(const ViewStatus& status, const Renderer& renderer, ViewCon
   ImGui::Checkbox("shadow map inset", &controls.shadow_map_inset);
   ImGui::SameLine();
   ImGui::Checkbox("aliasing overlay", &controls.aliasing_overlay);
-  if (renderer.settings().method != ShadowMethod::none) ImGui::TextDisabled("%s", renderer.shadow_setup().description.c_str());
+  if (shadow::technique(renderer.settings().method).lookup != shadow::Lookup::none) ImGui::TextDisabled("%s", renderer.shadow_setup().description.c_str());
   ImGui::Separator();
   ImGui::TextDisabled("WASD move, Q/E down/up, drag to look, wheel or +/- speed, O orbit,");
   ImGui::TextDisabled("R record path, P write frame, H hide this, Esc quit");

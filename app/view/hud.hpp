@@ -10,7 +10,7 @@ namespace ecoview {
 
 // What the HUD lets the user change while the viewer runs.
 struct ViewControls {
-  ShadowMethod method;
+  shadow::Method method;
   int shadow_size;
   float k;
   shadow::Light light;

@@ -1,0 +1,68 @@
+#include "shadow/techniques.hpp"
+
+#include "shadow/cascaded_map.hpp"
+#include "shadow/lispsm_map.hpp"
+#include "shadow/paraboloid_map.hpp"
+#include "shadow/psm_map.hpp"
+#include "shadow/uniform_map.hpp"
+
+namespace shadow {
+namespace {
+
+constexpr Lights every_light{true, true, true};
+constexpr Lights directional_lights{true, false, false};
+constexpr Lights point_and_spot_lights{false, true, true};
+
+ShadowSetup four_cascades(const ShadowInputs& in) { return cascaded_map(in); }
+
+}  // namespace
+
+const std::vector<Technique>& techniques() {
+  static const std::vector<Technique> table = {
+      {Method::uniform, "uniform", "focused uniform shadow map", Lookup::map, every_light, LastFrame::nothing, true,
+       focused_uniform_map},
+      {Method::psm, "psm", "perspective shadow map, built in the camera's post-perspective space", Lookup::map, every_light,
+       LastFrame::nearest_depth, true, perspective_shadow_map},
+      {Method::lispsm, "lispsm", "light space perspective shadow map", Lookup::map, directional_lights, LastFrame::nothing,
+       true, light_space_perspective_map},
+      {Method::cascades, "cascades", "4 cascades, practical splits, texel snapping", Lookup::map, directional_lights,
+       LastFrame::nothing, true, four_cascades},
+      {Method::dpsm, "dpsm", "dual paraboloid map", Lookup::map, point_and_spot_lights, LastFrame::nothing, true,
+       dual_paraboloid_map},
+      {Method::ipsm, "ipsm", "improved paraboloid map, turned and cut to the receivers", Lookup::map, point_and_spot_lights,
+       LastFrame::nothing, true, improved_paraboloid_map},
+      {Method::volumes, "volumes", "exact shadows of polygons by z-fail stencil shadow volumes; point splats cast none",
+       Lookup::mask, every_light, LastFrame::nothing, false},
+      {Method::reference, "reference", "exact: rays to the light against every triangle, plants as meshes, with Embree",
+       Lookup::mask, every_light, LastFrame::nothing, false},
+      {Method::automatic, "auto",
+       "each frame the map whose median aliasing factor, predicted from its matrices on the last frame's surface, is least",
+       Lookup::map, every_light, LastFrame::surface, true},
+      {Method::none, "none", "no shadows", Lookup::none, every_light, LastFrame::nothing, false},
+  };
+  return table;
+}
+
+const Technique& technique(Method method) {
+  for (const Technique& t : techniques()) {
+    if (t.method == method) return t;
+  }
+  return techniques().back();  // unreachable: every method has a row
+}
+
+const Technique* find_technique(std::string_view name) {
+  for (const Technique& t : techniques()) {
+    if (t.name == name) return &t;
+  }
+  return nullptr;
+}
+
+std::vector<Method> auto_candidates(LightType light) {
+  std::vector<Method> candidates;
+  for (const Technique& t : techniques()) {
+    if (t.setup && t.warps.has(light)) candidates.push_back(t.method);
+  }
+  return candidates;
+}
+
+}  // namespace shadow

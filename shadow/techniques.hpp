@@ -1,0 +1,63 @@
+#pragma once
+#include "shadow/light.hpp"
+#include "shadow/shadow_inputs.hpp"
+#include "shadow/shadow_setup.hpp"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+// Every shadow technique, registered in one table: what the command line, the viewer, the
+// benchmarks, `auto` and the renderer know of a method they read here. Adding a method is a setup
+// function (or a renderer pass, for a mask) and one row of the table.
+namespace shadow {
+
+enum class Method { none, uniform, psm, lispsm, cascades, dpsm, ipsm, volumes, reference, automatic };
+
+// What a technique hands the frame's lighting.
+enum class Lookup {
+  none,  // no shadows
+  map,   // a shadow map, one layer per view of its ShadowSetup: polygons and point splats cast
+  mask,  // a per-pixel mask of the frame's lit surfaces, made by the renderer: polygons cast
+};
+
+// What a technique takes from the frame before it.
+enum class LastFrame {
+  nothing,
+  nearest_depth,  // the nearest surface's depth (ShadowInputs::nearest_visible)
+  surface,        // the surface the frame showed, with its camera (and the nearest depth)
+};
+
+// Light types, as a set.
+struct Lights {
+  bool directional = false, point = false, spot = false;
+  bool has(LightType type) const {
+    return type == LightType::directional ? directional : type == LightType::point ? point : spot;
+  }
+  bool all() const { return directional && point && spot; }
+};
+
+struct Technique {
+  Method method;
+  std::string name;  // as --method takes it
+  std::string help;  // what it is, in a phrase
+  Lookup lookup;
+  Lights warps;  // the lights it handles itself; its setup hands the others to the focused uniform map
+  LastFrame last_frame;
+  // Whether the CPU sampler may skip point casters whose shadows fall on nothing the last frame
+  // showed (pointgen::ReceiverMask).
+  bool culls_casters;
+  // The map's views for a frame; none for `none`, the masks and `auto` (which predicts each
+  // candidate's aliasing on the last frame's surface, on the GPU).
+  ShadowSetup (*setup)(const ShadowInputs&) = nullptr;
+};
+
+// Every technique, in the order --help and the viewer list them.
+const std::vector<Technique>& techniques();
+const Technique& technique(Method method);
+// The technique named `name`; nullptr where there is none.
+const Technique* find_technique(std::string_view name);
+// The maps `auto` chooses among for a light: those whose own setup handles it.
+std::vector<Method> auto_candidates(LightType light);
+
+}  // namespace shadow
