@@ -1,9 +1,12 @@
 #version 450 core
-// Per-triangle shadow volumes (Crow 1977): each triangle, turned to face the light,
-// becomes a closed prism — itself as the near cap, its projection away from the light at infinity
-// as the far cap, and a quad along each edge — every face wound to face out. Open and two-sided
-// meshes (leaves, planes) cast correctly this way, at the price of fill.
-layout(triangles) in;
+// Shadow volumes from silhouette edges (Crow 1977; counted as Heidmann 1991 and Everitt and
+// Kilgard 2002 describe): each triangle, turned to face the light, is the near cap of its volume;
+// its projection away from the light at infinity the far cap (z-fail only); and a quad along each
+// of its edges whose neighbour faces the light the other way, (N1·L)(N2·L) < 0 with the two
+// normals oriented alike, or that has no neighbour. Between two triangles that face the light
+// alike the two quads would cancel, so neither is drawn; on a closed mesh's silhouette both are,
+// and the count inside is 2. Open and two-sided meshes (leaves, planes) cast correctly this way.
+layout(triangles_adjacency) in;
 layout(triangle_strip, max_vertices = 18) out;
 
 in vec3 world_position[];
@@ -11,10 +14,26 @@ in vec3 world_position[];
 uniform mat4 view_projection;
 // Homogeneous: (position, 1) for point and spot lights, (-direction, 0) for directional ones.
 uniform vec4 light;
+// z-fail counting needs the far caps; z-pass counting does without.
+uniform bool far_caps;
 
 vec4 near_vertex(vec3 p) { return view_projection * vec4(p, 1.0); }
 // The point at infinity in the direction from the light through p.
 vec4 far_vertex(vec3 p) { return view_projection * vec4(light.w * p - light.xyz, 0.0); }
+
+bool before(vec3 u, vec3 v) { return u.x != v.x ? u.x < v.x : u.y != v.y ? u.y < v.y : u.z < v.z; }
+
+// How triangle (a, b, c) faces the light, with the sign of this order of its vertices. Computed
+// from its vertices in one fixed order, so that a triangle and its neighbour agree bit for bit on
+// which way each faces: a disagreement would leave a gap in the volume.
+float facing(vec3 a, vec3 b, vec3 c) {
+  float order = 1.0;
+  vec3 t;
+  if (before(b, a)) { t = a; a = b; b = t; order = -order; }
+  if (before(c, b)) { t = b; b = c; c = t; order = -order; }
+  if (before(b, a)) { t = a; a = b; b = t; order = -order; }
+  return order * dot(cross(b - a, c - a), light.xyz - light.w * a);
+}
 
 void emit(vec4 a, vec4 b, vec4 c) {
   gl_Position = a; EmitVertex();
@@ -24,15 +43,23 @@ void emit(vec4 a, vec4 b, vec4 c) {
 }
 
 void main() {
-  vec3 p[3] = vec3[3](world_position[0], world_position[1], world_position[2]);
-  float facing = dot(cross(p[1] - p[0], p[2] - p[0]), light.xyz - light.w * p[0]);
-  if (!(abs(facing) > 0.0)) return;  // edge-on to the light (or degenerate): casts no area
-  if (facing < 0.0) p = vec3[3](p[0], p[2], p[1]);
-  emit(near_vertex(p[0]), near_vertex(p[1]), near_vertex(p[2]));
-  emit(far_vertex(p[0]), far_vertex(p[2]), far_vertex(p[1]));
+  vec3 p[3] = vec3[3](world_position[0], world_position[2], world_position[4]);
+  vec3 across[3] = vec3[3](world_position[1], world_position[3], world_position[5]);
+  float f = facing(p[0], p[1], p[2]);
+  if (!(abs(f) > 0.0)) return;  // edge-on to the light (or degenerate): casts no area
+  bool lit_side = f > 0.0;      // wound to face the light as given
+  if (lit_side) emit(near_vertex(p[0]), near_vertex(p[1]), near_vertex(p[2]));
+  else emit(near_vertex(p[0]), near_vertex(p[2]), near_vertex(p[1]));
+  if (far_caps) {
+    if (lit_side) emit(far_vertex(p[0]), far_vertex(p[2]), far_vertex(p[1]));
+    else emit(far_vertex(p[0]), far_vertex(p[1]), far_vertex(p[2]));
+  }
   for (int i = 0; i < 3; ++i) {
-    // Facing out, the quad of edge a -> b runs a, a at infinity, b, b at infinity.
     vec3 a = p[i], b = p[(i + 1) % 3];
+    // The neighbour (b, a, across), wound like this triangle across their edge.
+    if (f * facing(b, a, across[i]) > 0.0) continue;
+    if (!lit_side) { vec3 t = a; a = b; b = t; }
+    // Facing out, the quad of edge a -> b runs a, a at infinity, b, b at infinity.
     gl_Position = near_vertex(a); EmitVertex();
     gl_Position = far_vertex(a); EmitVertex();
     gl_Position = near_vertex(b); EmitVertex();

@@ -31,7 +31,7 @@ const std::vector<Technique>& techniques() {
        dual_paraboloid_map},
       {Method::ipsm, "ipsm", "improved paraboloid map, turned and cut to the receivers", Lookup::map, point_and_spot_lights,
        LastFrame::nothing, true, improved_paraboloid_map},
-      {Method::volumes, "volumes", "exact shadows of polygons by z-fail stencil shadow volumes; point splats cast none",
+      {Method::volumes, "volumes", "exact shadows of polygons by stencil shadow volumes from silhouette edges, counted z-pass where the camera stands in no volume and z-fail elsewhere; point splats cast none",
        Lookup::mask, every_light, LastFrame::nothing, false},
       {Method::reference, "reference", "exact: rays to the light against every triangle, plants as meshes, with Embree",
        Lookup::mask, every_light, LastFrame::nothing, false},

@@ -4,6 +4,7 @@
 #include "app/render/buffer_texture_units.hpp"
 
 #include "pointgen/sampling/mesh_parts.hpp"
+#include "pointgen/triangle_adjacency.hpp"
 
 #include <algorithm>
 
@@ -151,6 +152,23 @@ void GpuScene::draw_chosen(const PlantDraws& draws, GLenum mode) const {
   glBindVertexArray(0);
   glBindBuffer(GL_PARAMETER_BUFFER_ARB, 0);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+}
+
+void GpuScene::draw_with_adjacency(const Scene& scene) {
+  textures_.bind();
+  for (const Group& group : groups_) {
+    Mesh& mesh = meshes_[group.mesh];
+    if (group.instance_count == 0 || mesh.index_count == 0) continue;
+    if (!mesh.adjacency) gl::store(mesh.adjacency.emplace(), pointgen::adjacency_indices(scene.meshes[group.mesh]));
+    // The group's vertex array with the neighbours' indices for this draw: one array, so that
+    // instance buffers it grows (reserve) stay bound wherever it draws.
+    const GLuint vao = group.vertex_array.name();
+    glVertexArrayElementBuffer(vao, mesh.adjacency->name());
+    glBindVertexArray(vao);
+    glDrawElementsInstanced(GL_TRIANGLES_ADJACENCY, 2 * mesh.index_count, GL_UNSIGNED_INT, nullptr, group.instance_count);
+    glBindVertexArray(0);
+    glVertexArrayElementBuffer(vao, mesh.indices.name());
+  }
 }
 
 void GpuScene::reserve(Group& group, std::size_t instances) {

@@ -36,6 +36,10 @@ class GpuScene {
   // `mode` GL_PATCHES (of 3 vertices) for programs that tessellate. `all`: every instance whole,
   // whatever parts were chosen (shadow volumes need the casters the camera does not see).
   void draw(GLenum mode = GL_TRIANGLES, Parts parts = Parts::chosen) const;
+  // Every instance whole, each triangle with its neighbours across its edges
+  // (GL_TRIANGLES_ADJACENCY, pointgen::adjacency_indices), for shadow volumes from silhouette
+  // edges. The neighbours are found on the first call; `scene` is the one this was made from.
+  void draw_with_adjacency(const Scene& scene);
   // Replaces the instances of a group with `table`, which has at most as many as the scene's
   // group: posed moving objects, or the subset a pass draws as polygons. `parts`, for a point
   // mesh's group, has for each instance the polygon parts to draw, a bit each; none: all.
@@ -64,6 +68,7 @@ class GpuScene {
     gl::Buffer vertices;
     std::optional<gl::Buffer> surfaces;  // texture coordinates and materials, of a mesh with materials
     gl::Buffer indices;
+    std::optional<gl::Buffer> adjacency;  // six indices a triangle (draw_with_adjacency)
     GLsizei vertex_count = 0, index_count = 0;
     bool point_mesh = false;
     std::vector<Range> parts;  // index ranges of its polygon parts (point meshes)

@@ -6,6 +6,7 @@
 #include "app/render/pixel_rays.hpp"
 #include "shadow/aliasing.hpp"
 #include "shadow/paraboloid_map.hpp"
+#include "shadow/volume_counting.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -262,14 +263,35 @@ void Renderer::render_shadow_map(const shadow::Camera& camera) {
 // The frame drawn without shadows leaves the depth the volumes are counted against; timed as the
 // shadow pass.
 FramePass::ShadowLookup Renderer::render_shadow_volumes(const shadow::Camera& camera, const shadow::Light& light) {
-  setup_ = {{}, shadow::ViewSelection::screen_mask, "volumes"};
+  const bool z_pass = camera_outside_volumes(camera, light);
+  setup_ = {{}, shadow::ViewSelection::screen_mask, z_pass ? "volumes: z-pass" : "volumes: z-fail"};
   shadow_timer_.start();
   draw_frame(camera, light, std::nullopt);
-  volume_pass_->render(gpu_scene_, view_projection_, light);
+  volume_pass_->render(gpu_scene_, scene_, view_projection_, light,
+                       z_pass ? ShadowVolumePass::Counting::z_pass : ShadowVolumePass::Counting::z_fail);
   stages_.end("shadow volumes");
   shadow_timer_.stop();
   pending_.shadow_timer = true;
   return {volume_pass_->light_mask(), setup_, 0};
+}
+
+// Each caster's cell first (a box around its members' spheres), then the box of each member in it.
+bool Renderer::camera_outside_volumes(const shadow::Camera& camera, const shadow::Light& light) const {
+  const std::vector<shadow::Plane> hull = shadow::near_plane_light_hull(camera, aspect(), light);
+  for (std::size_t g = 0; g < tables_.size(); ++g) {
+    const pointgen::Bounds bounds = scene_.meshes[tables_[g].mesh].bounds();
+    const shadow::Box mesh{bounds.min, bounds.max};
+    for (const pointgen::InstanceCell& cell : cells_.by_table()[g]) {
+      if (!shadow::meets(hull, {cell.min, cell.max})) continue;
+      for (std::uint32_t i : cell.members) {
+        const glm::mat4 transform = tables_[g].transform(i);
+        shadow::Box placed;
+        for (int c = 0; c < 8; ++c) placed.add(glm::vec3(transform * glm::vec4(mesh.corner(c), 1.0f)));
+        if (shadow::meets(hull, placed)) return false;
+      }
+    }
+  }
+  return true;
 }
 
 ExactVisibility& Renderer::exact() {

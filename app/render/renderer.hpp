@@ -112,6 +112,9 @@ class Renderer {
   void render_shadow_map(const shadow::Camera& camera);
   // Shadow volumes in place of a map: the lit-pixel mask of this frame.
   FramePass::ShadowLookup render_shadow_volumes(const shadow::Camera& camera, const shadow::Light& light);
+  // Whether no caster stands between the camera's near plane and the light, so that the volumes
+  // may be counted z-pass (shadow/volume_counting.hpp).
+  bool camera_outside_volumes(const shadow::Camera& camera, const shadow::Light& light) const;
   // The exact reference in place of a map: the mask from ExactVisibility.
   FramePass::ShadowLookup render_reference_mask(const shadow::Camera& camera, const shadow::Light& light);
   ExactVisibility& exact();

@@ -30,7 +30,8 @@ ShadowVolumePass::ShadowVolumePass(int width, int height, GLuint depth_stencil)
   }
 }
 
-void ShadowVolumePass::render(const GpuScene& scene, const glm::mat4& view_projection, const shadow::Light& light) const {
+void ShadowVolumePass::render(GpuScene& scene, const Scene& meshes, const glm::mat4& view_projection, const shadow::Light& light,
+                              Counting counting) const {
   const GLuint fb = framebuffer_.name();
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glViewport(0, 0, width_, height_);
@@ -40,6 +41,7 @@ void ShadowVolumePass::render(const GpuScene& scene, const glm::mat4& view_proje
   glClearNamedFramebufferiv(fb, GL_STENCIL, 0, &zero);
 
   // The volumes: no colour, no depth writes, both faces; far caps at infinity kept by depth clamp.
+  const bool z_fail = counting == Counting::z_fail;
   glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -53,10 +55,15 @@ void ShadowVolumePass::render(const GpuScene& scene, const glm::mat4& view_proje
   glUseProgram(volume_program_.name());
   gl::set_uniform(volume_program_, "view_projection", view_projection);
   gl::set_uniform(volume_program_, "light", shadow::homogeneous(light));
-  // Leaving a volume behind the surface (a back face failing the depth test) counts +1.
-  glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-  glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
-  scene.draw(GL_TRIANGLES, GpuScene::Parts::all);
+  gl::set_uniform(volume_program_, "far_caps", z_fail ? 1 : 0);
+  if (z_fail) {  // leaving a volume behind the surface (a back face failing the depth test) counts +1
+    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+  } else {  // entering a volume in front of the surface (a front face passing) counts +1
+    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+  }
+  scene.draw_with_adjacency(meshes);
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_DEPTH_CLAMP);
   glDepthMask(GL_TRUE);

@@ -1,20 +1,25 @@
 #pragma once
 #include "app/gl/gl_objects.hpp"
 #include "app/render/gpu_scene.hpp"
+#include "app/scene/scene.hpp"
 #include "shadow/light.hpp"
 
 namespace ecoview {
 
-// Exact shadows of polygon casters by shadow volumes with the z-fail stencil test (Carmack's
-// reverse, 2000): against the depth of a drawn frame, every triangle's volume (see
-// shaders/shadow_volume.geom) counts +1 behind the surface where it leaves and -1 where it
-// enters, so a count of 0 means lit. The result is a mask of the frame's pixels, 1 where the light
-// reaches the surface. Point splats receive through the mask but cast nothing.
+// Exact shadows of polygon casters by stencil shadow volumes extruded from silhouette edges
+// (shaders/shadow_volume.geom), counted against the depth of a drawn frame so that a count of 0
+// means lit. z-pass (Heidmann 1991): faces in front of the surface, +1 entering and -1 leaving; it
+// needs no far caps, but holds only where the camera stands in no volume. z-fail (Carmack's
+// reverse, 2000): faces behind the surface, +1 leaving and -1 entering, with far caps; it holds
+// everywhere. The result is a mask of the frame's pixels, 1 where the light reaches the surface.
+// Point splats receive through the mask but cast nothing.
 class ShadowVolumePass {
  public:
   // `depth_stencil`: the frame's GL_DEPTH32F_STENCIL8 texture of width x height.
   ShadowVolumePass(int width, int height, GLuint depth_stencil);
-  void render(const GpuScene& scene, const glm::mat4& view_projection, const shadow::Light& light) const;
+  enum class Counting { z_pass, z_fail };
+  void render(GpuScene& scene, const Scene& meshes, const glm::mat4& view_projection, const shadow::Light& light,
+              Counting counting) const;
   GLuint light_mask() const { return mask_.name(); }
 
  private:
