@@ -154,12 +154,18 @@ void GpuScene::draw_chosen(const PlantDraws& draws, GLenum mode) const {
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 
-void GpuScene::draw_with_adjacency(const Scene& scene) {
+void GpuScene::add_adjacency(const Scene& scene) {
+  for (std::size_t m = 0; m < meshes_.size(); ++m) {
+    if (!meshes_[m].adjacency) gl::store(meshes_[m].adjacency.emplace(), pointgen::adjacency_indices(scene.meshes[m]));
+  }
+}
+
+void GpuScene::draw_with_adjacency() const {
+  if (meshes_.empty() || !meshes_.front().adjacency) throw RuntimeFailure("draw_with_adjacency before add_adjacency");
   textures_.bind();
   for (const Group& group : groups_) {
-    Mesh& mesh = meshes_[group.mesh];
+    const Mesh& mesh = meshes_[group.mesh];
     if (group.instance_count == 0 || mesh.index_count == 0) continue;
-    if (!mesh.adjacency) gl::store(mesh.adjacency.emplace(), pointgen::adjacency_indices(scene.meshes[group.mesh]));
     // The group's vertex array with the neighbours' indices for this draw: one array, so that
     // instance buffers it grows (reserve) stay bound wherever it draws.
     const GLuint vao = group.vertex_array.name();

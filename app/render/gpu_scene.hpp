@@ -36,10 +36,12 @@ class GpuScene {
   // `mode` GL_PATCHES (of 3 vertices) for programs that tessellate. `all`: every instance whole,
   // whatever parts were chosen (shadow volumes need the casters the camera does not see).
   void draw(GLenum mode = GL_TRIANGLES, Parts parts = Parts::chosen) const;
-  // Every instance whole, each triangle with its neighbours across its edges
-  // (GL_TRIANGLES_ADJACENCY, pointgen::adjacency_indices), for shadow volumes from silhouette
-  // edges. The neighbours are found on the first call; `scene` is the one this was made from.
-  void draw_with_adjacency(const Scene& scene);
+  // Finds each triangle's neighbours across its edges (pointgen::adjacency_indices) for
+  // draw_with_adjacency; `scene` is the one this was made from. Once, before the first draw.
+  void add_adjacency(const Scene& scene);
+  // Every instance whole, each triangle with its neighbours (GL_TRIANGLES_ADJACENCY), for shadow
+  // volumes from silhouette edges.
+  void draw_with_adjacency() const;
   // Replaces the instances of a group with `table`, which has at most as many as the scene's
   // group: posed moving objects, or the subset a pass draws as polygons. `parts`, for a point
   // mesh's group, has for each instance the polygon parts to draw, a bit each; none: all.

@@ -109,6 +109,7 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
 void Renderer::make_method_passes() {
   if (settings_.method == shadow::Method::volumes && !volume_pass_) {
     volume_pass_ = std::make_unique<ShadowVolumePass>(settings_.width, settings_.height, frame_pass_.depth_stencil_texture());
+    gpu_scene_.add_adjacency(scene_);
   }
   if (settings_.method == shadow::Method::reference && !reference_mask_) {
     reference_mask_ = std::make_unique<gl::Texture>(GL_TEXTURE_2D);
@@ -267,7 +268,7 @@ FramePass::ShadowLookup Renderer::render_shadow_volumes(const shadow::Camera& ca
   setup_ = {{}, shadow::ViewSelection::screen_mask, z_pass ? "volumes: z-pass" : "volumes: z-fail"};
   shadow_timer_.start();
   draw_frame(camera, light, std::nullopt);
-  volume_pass_->render(gpu_scene_, scene_, view_projection_, light,
+  volume_pass_->render(gpu_scene_, view_projection_, light,
                        z_pass ? ShadowVolumePass::Counting::z_pass : ShadowVolumePass::Counting::z_fail);
   stages_.end("shadow volumes");
   shadow_timer_.stop();

@@ -30,7 +30,7 @@ ShadowVolumePass::ShadowVolumePass(int width, int height, GLuint depth_stencil)
   }
 }
 
-void ShadowVolumePass::render(GpuScene& scene, const Scene& meshes, const glm::mat4& view_projection, const shadow::Light& light,
+void ShadowVolumePass::render(const GpuScene& scene, const glm::mat4& view_projection, const shadow::Light& light,
                               Counting counting) const {
   const GLuint fb = framebuffer_.name();
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
@@ -63,7 +63,7 @@ void ShadowVolumePass::render(GpuScene& scene, const Scene& meshes, const glm::m
     glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
     glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
   }
-  scene.draw_with_adjacency(meshes);
+  scene.draw_with_adjacency();
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_DEPTH_CLAMP);
   glDepthMask(GL_TRUE);

@@ -1,7 +1,6 @@
 #pragma once
 #include "app/gl/gl_objects.hpp"
 #include "app/render/gpu_scene.hpp"
-#include "app/scene/scene.hpp"
 #include "shadow/light.hpp"
 
 namespace ecoview {
@@ -18,8 +17,8 @@ class ShadowVolumePass {
   // `depth_stencil`: the frame's GL_DEPTH32F_STENCIL8 texture of width x height.
   ShadowVolumePass(int width, int height, GLuint depth_stencil);
   enum class Counting { z_pass, z_fail };
-  void render(GpuScene& scene, const Scene& meshes, const glm::mat4& view_projection, const shadow::Light& light,
-              Counting counting) const;
+  // `scene` with its neighbours found (GpuScene::add_adjacency).
+  void render(const GpuScene& scene, const glm::mat4& view_projection, const shadow::Light& light, Counting counting) const;
   GLuint light_mask() const { return mask_.name(); }
 
  private:
