@@ -23,4 +23,12 @@ struct Box {
   }
 };
 
+// The box around `box` moved by an affine transform (an instance's); empty stays empty.
+inline Box transformed(const Box& box, const glm::mat4x3& transform) {
+  Box out;
+  if (box.empty()) return out;
+  for (int i = 0; i < 8; ++i) out.add(transform * glm::vec4(box.corner(i), 1.0f));
+  return out;
+}
+
 }  // namespace shadow

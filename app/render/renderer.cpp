@@ -110,6 +110,10 @@ void Renderer::make_method_passes() {
   if (settings_.method == shadow::Method::volumes && !volume_pass_) {
     volume_pass_ = std::make_unique<ShadowVolumePass>(settings_.width, settings_.height, frame_pass_.depth_stencil_texture());
     gpu_scene_.add_adjacency(scene_);
+    for (const pointgen::TriangleMesh& mesh : scene_.meshes) {
+      const pointgen::Bounds bounds = mesh.bounds();
+      mesh_boxes_.push_back(bounds.empty() ? shadow::Box{} : shadow::Box{bounds.min, bounds.max});
+    }
   }
   if (settings_.method == shadow::Method::reference && !reference_mask_) {
     reference_mask_ = std::make_unique<gl::Texture>(GL_TEXTURE_2D);
@@ -280,15 +284,12 @@ FramePass::ShadowLookup Renderer::render_shadow_volumes(const shadow::Camera& ca
 bool Renderer::camera_outside_volumes(const shadow::Camera& camera, const shadow::Light& light) const {
   const std::vector<shadow::Plane> hull = shadow::near_plane_light_hull(camera, aspect(), light);
   for (std::size_t g = 0; g < tables_.size(); ++g) {
-    const pointgen::Bounds bounds = scene_.meshes[tables_[g].mesh].bounds();
-    const shadow::Box mesh{bounds.min, bounds.max};
+    const shadow::Box& mesh = mesh_boxes_[tables_[g].mesh];
+    if (mesh.empty()) continue;
     for (const pointgen::InstanceCell& cell : cells_.by_table()[g]) {
       if (!shadow::meets(hull, {cell.min, cell.max})) continue;
       for (std::uint32_t i : cell.members) {
-        const glm::mat4 transform = tables_[g].transform(i);
-        shadow::Box placed;
-        for (int c = 0; c < 8; ++c) placed.add(glm::vec3(transform * glm::vec4(mesh.corner(c), 1.0f)));
-        if (shadow::meets(hull, placed)) return false;
+        if (shadow::meets(hull, shadow::transformed(mesh, tables_[g].transforms[i]))) return false;
       }
     }
   }

@@ -167,6 +167,7 @@ class Renderer {
   std::unique_ptr<DepthPyramid> receivers_;  // over the first shadow view: the frame's receivers
   std::unique_ptr<PointSplat> shadow_points_;  // made with the first shadow map that needs it
   std::unique_ptr<ShadowVolumePass> volume_pass_;  // --method volumes
+  std::vector<shadow::Box> mesh_boxes_;             // --method volumes: each mesh's bounds (camera_outside_volumes)
   std::unique_ptr<ExactVisibility> exact_;          // made when first asked for
   std::unique_ptr<gl::Texture> reference_mask_;     // --method reference: R8, frame-sized, its lit pixels
   shadow::Camera camera_;                            // of the last frame

@@ -10,11 +10,9 @@ shadow::Box Scene::bounds() const {
     const pointgen::Bounds local = meshes[group.mesh].bounds();
     if (local.empty()) continue;
     for (const glm::mat4x3& transform : group.transforms) {
-      for (int i = 0; i < 8; ++i) {
-        const glm::vec3 corner((i & 1) ? local.max.x : local.min.x, (i & 2) ? local.max.y : local.min.y,
-                               (i & 4) ? local.max.z : local.min.z);
-        box.add(transform * glm::vec4(corner, 1.0f));
-      }
+      const shadow::Box placed = shadow::transformed({local.min, local.max}, transform);
+      box.add(placed.min);
+      box.add(placed.max);
     }
   }
   for (const Animation& a : animations) {
