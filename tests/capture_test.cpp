@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <set>
 
 namespace ecoview::test {
@@ -182,32 +183,36 @@ TEST(Density, QuickRunWritesResultsChartsAndReport) {
 }
 
 // The paper suite renders each of its figures, measured against the exact reference; in its bias
-// sweep a large constant bias lifts the shadows off their casters (more leak than the default).
+// sweep a large constant bias lifts the shadows off their casters (more leak than the default),
+// and sooner in 16 bits, whose steps are larger than 32-bit float's anywhere in 0..1.
 TEST(Bench, PaperSuiteQuickRunRendersEveryFigure) {
   const TempDir dir;
   const CommandResult r = run_ecoview({"bench", "--suite", "paper", "--quick", "--size", "320x180", "--out", dir.path().string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* file : {"results.json", "results.csv", "report.html", "chart_bias.png", "images/paper_fig1_psm_map.png",
-                           "images/paper_fig8_halves.png"}) {
+  for (const char* file : {"results.json", "results.csv", "report.html", "chart_bias.png", "chart_depth.png",
+                           "images/paper_fig1_psm_map.png", "images/paper_fig8_halves.png"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
   }
   const nlohmann::json results = nlohmann::json::parse(read_bytes(dir / "results.json"));
-  std::set<std::string> figures;
-  double default_leak = -1.0, large_bias_leak = -1.0;
+  std::set<std::string> figures, depth_formats;
+  std::map<std::string, double> leak;  // the constant sweep's, by format and constant: "32f 4"
   for (const auto& run : results["runs"]) {
     figures.insert(run["params"]["figure"].get<std::string>());
     for (const auto& figure : run["figures"].items()) {
       EXPECT_TRUE(figure.value().is_number() && std::isfinite(figure.value().get<double>())) << figure.key();
     }
     if (run["params"]["figure"] == "bias" && run["params"]["bias_slope"] == 2.0) {
-      const double constant = run["params"]["bias_constant"].get<double>();
-      if (constant == 4.0) default_leak = run["figures"]["leak"].get<double>();
-      if (constant == 1e7) large_bias_leak = run["figures"]["leak"].get<double>();
+      std::ostringstream key;
+      key << run["params"]["shadow_depth"].get<std::string>() << " " << run["params"]["bias_constant"].get<double>();
+      leak[key.str()] = run["figures"]["leak"].get<double>();
     }
+    if (run["params"]["figure"] == "depth") depth_formats.insert(run["params"]["shadow_depth"].get<std::string>());
   }
-  EXPECT_EQ(figures, (std::set<std::string>{"fig1", "fig8", "fig9", "fig10", "ipsm", "overhead", "bias"}));
-  ASSERT_GE(default_leak, 0.0);
-  EXPECT_GT(large_bias_leak, default_leak);
+  EXPECT_EQ(figures, (std::set<std::string>{"fig1", "fig8", "fig9", "fig10", "ipsm", "overhead", "bias", "depth"}));
+  EXPECT_EQ(depth_formats, (std::set<std::string>{"16", "24", "32f"}));
+  for (const char* key : {"32f 4", "32f 1e+07", "16 1000", "32f 1000"}) ASSERT_TRUE(leak.count(key)) << key;
+  EXPECT_GT(leak["32f 1e+07"], leak["32f 4"]);
+  EXPECT_GT(leak["16 1000"], leak["32f 1000"]);
   EXPECT_EQ(run_ecoview({"bench", "--suite", "papers", "--quick", "--out", (dir / "other").string()}).exit_code, 2);
 }
 
@@ -507,7 +512,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"newline_in_a_value", good_start + R"({"type": "laser\nsecond line"}]})", {}, {"objects[0].type", "laser\\nsecond"}},
         BadInput{"stats_is_a_folder", "", {"--stats", "/"}, {"--stats", "is a folder"}},
         BadInput{"negative_bias", "", {"--bias-slope", "-1"}, {"--bias-slope", "between 0 and"}},
-        BadInput{"bias_not_a_number", "", {"--bias-constant", "nan"}, {"--bias-constant", "between 0 and"}}),
+        BadInput{"bias_not_a_number", "", {"--bias-constant", "nan"}, {"--bias-constant", "between 0 and"}},
+        BadInput{"depth_of_8_bits", "", {"--shadow-depth", "8"}, {"--shadow-depth", "16, 24 or 32f", "'8'"}}),
     [](const testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -148,6 +148,38 @@ TEST(ShadowBias, TheConstantBiasMovesAFlatCasterByThatManyStepsOfItsDepth) {
   EXPECT_NEAR(centre_depth(100000.0f) - unbiased, 100000.0f * step, 2.0f * step);
 }
 
+// --shadow-depth 16 and 24: fixed point, so every depth the map holds is a whole number of steps
+// of 1 / (2^bits - 1), and the constant bias moves the same flat caster in proportion to it.
+TEST(ShadowDepthFormat, FixedPointMapsHoldWholeStepsAndTheBiasCountsInThem) {
+  const auto context = create_headless_context("egl");
+  const Scene scene = load_scene({"ground.json", R"({"camera": {"position": [0, 10, 20], "target": [0, 0, 0]},
+      "lights": [{"type": "directional", "direction": [0, -1, 0]}],
+      "objects": [{"type": "plane", "center": [0, 0, 0], "size": [40, 40]}]})",
+                                  [](const std::string&) { return std::nullopt; }});
+  for (const auto& [format, bits] : {std::pair{ShadowDepth::fixed16, 16}, std::pair{ShadowDepth::fixed24, 24}}) {
+    const double steps = std::ldexp(1.0, bits) - 1.0;
+    auto centre_depth = [&](float constant) {
+      RenderSettings settings{320, 240, 256, shadow::Method::uniform};
+      settings.shadow_bias = {0.0f, constant};
+      settings.shadow_depth = format;
+      Renderer renderer(scene, settings);
+      renderer.render(scene.camera, scene.lights[0]);
+      return static_cast<double>(renderer.shadow_map().read_layer(0).at(128, 128)) * steps;
+    };
+    const double unbiased = centre_depth(0.0f);
+    ASSERT_GT(unbiased, 1.0) << bits;
+    ASSERT_LT(unbiased, steps - 1.0) << bits;
+    // Read back as float: exact for 16 bits, within float rounding for 24.
+    EXPECT_NEAR(unbiased, std::round(unbiased), bits == 16 ? 1e-3 : 1.0) << bits;
+    // The offset unit r is the format's smallest resolvable difference, which the GL lets an
+    // implementation choose: Mesa takes two steps on fixed-point formats, one on float.
+    const double r = (centre_depth(1000.0f) - unbiased) / 1000.0;
+    EXPECT_GE(r, 0.99) << bits;
+    EXPECT_LE(r, 2.01) << bits;
+    EXPECT_NEAR(centre_depth(100.0f) - unbiased, 100.0 * r, 2.0) << bits;
+  }
+}
+
 // The frame's nearest depth, reduced on the GPU in blocks of 8 × 8 pixels, is the least positive
 // depth of its depth AOV. The camera looks at a wall obliquely, so the wall comes nearest along
 // the image's last column, which a size of 331 pixels puts in blocks partly outside the image.

@@ -69,7 +69,6 @@ Plan plan_for(bool quick) {
 }
 
 constexpr int favourable_light = 6;       // field: 90° between light and view
-constexpr float field_light_step_deg = 15.0f;
 constexpr int crop_size = 1024;           // the trade-off map size whose frames are cropped
 
 

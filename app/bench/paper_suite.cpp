@@ -37,7 +37,11 @@ const std::vector<std::pair<std::string, std::string>> claims = {
                  "light high overhead) at 128²: the PSM's best case, its shadows near the viewer sharper than the "
                  "uniform map's."},
     {"bias", "The same note, Fig. 5: with the light behind the viewer (inverted in post-perspective space) the bias "
-             "is hard to choose: too little leaves acne, too much loses shadows (leak)."},
+             "is hard to choose: too little leaves acne, too much loses shadows (leak). The constant bias swept in "
+             "each depth format, the slope in 32-bit float."},
+    {"depth", "Kilgard 2001: depth maps hold 16 or 24 bits; more precision needs less bias, and too few bits break "
+              "down over a large light frustum. The field's lights turned 0-180° from the view, uniform and PSM "
+              "maps at 1024² in each format, default bias."},
 };
 
 constexpr std::size_t across_the_view = 6;  // the field's light at 90° to the view
@@ -45,6 +49,9 @@ constexpr std::size_t across_the_view = 6;  // the field's light at 90° to the 
 constexpr std::array<float, 6> bias_constants = {0.0f, 4.0f, 1e3f, 1e5f, 1e6f, 1e7f};
 constexpr std::array<float, 4> bias_slopes = {0.0f, 8.0f, 64.0f, 512.0f};
 constexpr int street_frames = 6, quick_street_frames = 2;
+// The depth formats' light sweep: every field light, or 0°, 90° and 180° only.
+constexpr std::size_t light_step = 1, quick_light_step = 6;
+constexpr std::array<shadow::Method, 2> depth_methods = {shadow::Method::uniform, shadow::Method::psm};
 
 struct Timing {
   int warmup, frames;
@@ -144,15 +151,37 @@ class PaperSuite {
       progress.step();
     }
     const DepthBias defaults;
-    for (float constant : bias_constants) bias_run(field, {defaults.slope, constant}, progress);
-    for (float slope : bias_slopes) bias_run(field, {slope, defaults.constant}, progress);
+    for (ShadowDepth depth : shadow_depths) {
+      for (float constant : bias_constants) bias_run(field, {defaults.slope, constant}, depth, progress);
+    }
+    for (float slope : bias_slopes) bias_run(field, {slope, defaults.constant}, ShadowDepth::float32, progress);
+  }
+
+  // Kilgard's precision: acne and leak in each depth format as the field's light turns from behind
+  // the viewer (inverted for the PSM) to facing it.
+  void depth_formats(Progress& progress) {
+    const Loaded field = load("field");
+    for (ShadowDepth depth : shadow_depths) {
+      for (std::size_t l = 0; l < field.scene.lights.size(); l += quick_ ? quick_light_step : light_step) {
+        for (shadow::Method m : depth_methods) {
+          RenderSettings s = settings(field, m, 1024);
+          s.shadow_depth = depth;
+          Renderer renderer(field.scene, s);
+          BenchRun& run = add("depth", "field", renderer, field.view(field.scene.lights[l]), small_timing(), false);
+          run.params.update({{"shadow_depth", shadow_depth_name(depth)}, {"light_view_deg", field_light_step_deg * static_cast<float>(l)}});
+          progress.step();
+        }
+      }
+    }
   }
 
   // Fig. 1, 8: two methods; Fig. 9: its frames; Fig. 10: three methods; the table: two scenes, two
-  // sizes, three methods; the overhead light: two methods; the bias sweep.
+  // sizes, three methods; the overhead light: two methods; the bias sweep; the depth formats.
   static std::size_t steps(bool quick) {
-    return 2 + 2 + static_cast<std::size_t>(quick ? quick_street_frames : street_frames) + 3 + 12 + 2 + bias_constants.size() +
-           bias_slopes.size();
+    const std::size_t step = quick ? quick_light_step : light_step;
+    return 2 + 2 + static_cast<std::size_t>(quick ? quick_street_frames : street_frames) + 3 + 12 + 2 +
+           shadow_depths.size() * bias_constants.size() + bias_slopes.size() +
+           shadow_depths.size() * ((field_lights + step - 1) / step) * depth_methods.size();
   }
 
   void finish(const std::string& renderer_name) {
@@ -201,12 +230,13 @@ class PaperSuite {
     return results_.runs.back();
   }
 
-  void bias_run(const Loaded& field, DepthBias bias, Progress& progress) {
+  void bias_run(const Loaded& field, DepthBias bias, ShadowDepth depth, Progress& progress) {
     RenderSettings s = settings(field, shadow::Method::psm, 1024);
     s.shadow_bias = bias;
+    s.shadow_depth = depth;
     Renderer renderer(field.scene, s);
     BenchRun& run = add("bias", "field", renderer, field.view(field.scene.lights[0]), small_timing(), false);
-    run.params.update({{"bias_slope", bias.slope}, {"bias_constant", bias.constant}});
+    run.params.update({{"bias_slope", bias.slope}, {"bias_constant", bias.constant}, {"shadow_depth", shadow_depth_name(depth)}});
     progress.step();
   }
 
@@ -224,7 +254,7 @@ class PaperSuite {
              << "</td><td>" << 100.0 * run.figures["err"].get<double>() << " %</td><td>" << 100.0 * run.figures["acne"].get<double>()
              << " %</td><td>" << 100.0 * run.figures["leak"].get<double>() << " %</td><td>" << run.figures["triangles"]
              << "</td><td>" << run.figures["points"] << "</td><td>";
-        for (const char* key : {"t", "bias_slope", "bias_constant"}) {
+        for (const char* key : {"t", "bias_slope", "bias_constant", "shadow_depth", "light_view_deg"}) {
           if (run.params.contains(key)) html << key << " = " << run.params[key] << " ";
         }
         html << "</td></tr>\n";
@@ -236,6 +266,7 @@ class PaperSuite {
       if (figure == "fig1") html << "<img src=\"images/paper_fig1_uniform_map.png\"><img src=\"images/paper_fig1_psm_map.png\">";
       if (figure == "fig8") html << "<img src=\"images/paper_fig8_halves.png\">";
       if (figure == "bias") html << "<img src=\"chart_bias.png\">";
+      if (figure == "depth") html << "<img src=\"chart_depth.png\">";
       html << "\n";
     }
     return html.str();
@@ -262,6 +293,7 @@ void run_paper_suite(const BenchmarkOptions& o) {
   suite.fig10(progress);
   suite.ipsm_table(progress);
   suite.implementation_note(progress);
+  suite.depth_formats(progress);
   progress.finish();
   suite.finish(context->description());
   std::cout << "bench --suite paper: wrote results.json, results.csv, images and report.html to " << o.out << "\n";

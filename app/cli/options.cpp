@@ -86,6 +86,13 @@ float check_bias(const char* option, double bias) {
   return static_cast<float>(bias);
 }
 
+ShadowDepth parse_shadow_depth(const std::string& name) {
+  for (ShadowDepth depth : shadow_depths) {
+    if (shadow_depth_name(depth) == name) return depth;
+  }
+  throw InputError("--shadow-depth: expected 16, 24 or 32f, got '" + name + "'");
+}
+
 }  // namespace
 
 void add_render_options(CLI::App& command, RenderOptions& o) {
@@ -105,6 +112,10 @@ void add_render_options(CLI::App& command, RenderOptions& o) {
                                                    "light grazes a surface")->capture_default_str();
   command.add_option("--bias-constant", o.bias_constant, "Shadow maps' constant depth bias, in the depth buffer's smallest "
                                                          "steps (glPolygonOffset units): too much lifts shadows off their casters")
+      ->capture_default_str();
+  command.add_option("--shadow-depth", o.shadow_depth, "Shadow maps' depth format: 16 or 24 (bits of fixed point, "
+                                                       "steps even over the map's depth range) or 32f (float: as fine "
+                                                       "as 24 bits at the far end, finer towards the near plane)")
       ->capture_default_str();
 }
 
@@ -126,6 +137,7 @@ RenderSettings render_settings(const RenderOptions& o) {
   if (o.splat < 1 || o.splat > 16) throw InputError("--splat: must be between 1 and 16 pixels");
   settings.splat_size = o.splat;
   settings.shadow_bias = {check_bias("--bias-slope", o.bias_slope), check_bias("--bias-constant", o.bias_constant)};
+  settings.shadow_depth = parse_shadow_depth(o.shadow_depth);
   return settings;
 }
 

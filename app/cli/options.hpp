@@ -34,7 +34,7 @@ struct SceneOptions {
 void add_scene_options(CLI::App& command, SceneOptions& options);
 
 // The rendering options capture and view share: --size, --shadow-size, --method, --geometry,
-// --k, --splat, --bias-slope, --bias-constant.
+// --k, --splat, --bias-slope, --bias-constant, --shadow-depth.
 struct RenderOptions {
   std::string size = "1280x720";
   int shadow_size = 2048;
@@ -45,6 +45,7 @@ struct RenderOptions {
   int splat = RenderSettings{}.splat_size;
   double bias_slope = RenderSettings{}.shadow_bias.slope;
   double bias_constant = RenderSettings{}.shadow_bias.constant;
+  std::string shadow_depth = shadow_depth_name(RenderSettings{}.shadow_depth);
 };
 void add_render_options(CLI::App& command, RenderOptions& options);
 // Validated settings; throws InputError naming the option.

@@ -3,6 +3,9 @@
 #include "pointgen/sampling/point_count.hpp"
 #include "shadow/techniques.hpp"
 
+#include <array>
+#include <string>
+
 // What a Renderer draws and how: plain values the command line fills in, with no GL.
 namespace ecoview {
 
@@ -13,6 +16,13 @@ struct DepthBias {
   float slope = 2.0f;
   float constant = 4.0f;
 };
+
+// The shadow maps' depth format (Kilgard 2001): 16- and 24-bit fixed point spread their steps
+// evenly over the window depth 0..1; 32-bit float packs them towards 0. Polygon offset counts in
+// the format's own steps, so the same --bias-constant is a larger offset at 16 bits.
+enum class ShadowDepth { fixed16, fixed24, float32 };
+constexpr std::array<ShadowDepth, 3> shadow_depths = {ShadowDepth::fixed16, ShadowDepth::fixed24, ShadowDepth::float32};
+std::string shadow_depth_name(ShadowDepth depth);  // 16, 24, 32f: the --shadow-depth values
 
 struct RenderSettings {
   int width = 1280;
@@ -26,6 +36,7 @@ struct RenderSettings {
   // gaps between leaves, and the plants' shadows grow (docs/benchmarks.md, "`ecoview bench`").
   int shadow_splat_size = 1;
   DepthBias shadow_bias{};  // the shadow pass's polygon offset (--bias-slope, --bias-constant)
+  ShadowDepth shadow_depth = ShadowDepth::float32;  // --shadow-depth
   float points_per_triangle = 4.0f;  // a point costs 1/this of a triangle (the point-or-polygon choice)
   bool point_meshes_only = false;    // draw nothing else (for the density figures)
   // For the density figures: draw the instances the sampler makes points as polygons instead

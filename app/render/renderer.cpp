@@ -86,7 +86,7 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       gpu_scene_(scene),
       samples_(scene, settings_.points_per_triangle, settings_.points),
       cells_(tables_, samples_.meshes()),
-      shadow_pass_(settings.shadow_size, settings.shadow_bias, gpu_scene_.has_surface_textures()),
+      shadow_pass_(settings.shadow_size, settings.shadow_bias, settings.shadow_depth, gpu_scene_.has_surface_textures()),
       frame_pass_(settings.width, settings.height, settings.aliasing, gpu_scene_.has_surface_textures()),
       frame_points_({settings.width, settings.height}) {
   make_method_passes();
@@ -128,7 +128,7 @@ void Renderer::change(shadow::Method method, int shadow_size, float k) {
   wanted.k = k;
   wanted = within_limits(wanted);
   if (wanted.shadow_size != settings_.shadow_size) {
-    shadow_pass_ = ShadowPass(wanted.shadow_size, wanted.shadow_bias, gpu_scene_.has_surface_textures());
+    shadow_pass_ = ShadowPass(wanted.shadow_size, wanted.shadow_bias, wanted.shadow_depth, gpu_scene_.has_surface_textures());
     shadow_points_.reset();
   }
   // What the last frame left (near plane, surface, receivers) depends on the method and k: the next

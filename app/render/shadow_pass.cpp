@@ -8,11 +8,21 @@ namespace {
 const std::vector<std::string> paraboloid_stages{"world_position.vert", "shadow_paraboloid.tesc", "shadow_paraboloid.tese", "shadow_depth.frag"};
 const std::string plant_index = "#define PLANT_INDEX\n";
 
+GLenum internal_format(ShadowDepth depth) {
+  switch (depth) {
+    case ShadowDepth::fixed16: return GL_DEPTH_COMPONENT16;
+    case ShadowDepth::fixed24: return GL_DEPTH_COMPONENT24;
+    case ShadowDepth::float32: return GL_DEPTH_COMPONENT32F;
+  }
+  return GL_DEPTH_COMPONENT32F;
+}
+
 }  // namespace
 
-ShadowPass::ShadowPass(int size, DepthBias bias, bool surface_textures)
+ShadowPass::ShadowPass(int size, DepthBias bias, ShadowDepth depth, bool surface_textures)
     : size_(size),
       bias_(bias),
+      format_(internal_format(depth)),
       program_(gl::build_program({"shadow_depth.vert", "shadow_depth.frag"}, gl::surface_defines(surface_textures))),
       plant_program_(gl::build_program({"shadow_depth.vert", "shadow_depth.frag"}, gl::surface_defines(surface_textures) + plant_index)),
       paraboloid_program_(gl::build_program(paraboloid_stages, gl::surface_defines(surface_textures))),
@@ -25,7 +35,7 @@ void ShadowPass::allocate(int layers) {
   depth_ = gl::Texture(GL_TEXTURE_2D_ARRAY);
   layers_ = layers;
   const GLuint t = depth_.name();
-  glTextureStorage3D(t, 1, GL_DEPTH_COMPONENT32F, size_, size_, layers);
+  glTextureStorage3D(t, 1, format_, size_, size_, layers);
   glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(t, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);

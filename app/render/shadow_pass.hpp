@@ -14,11 +14,12 @@ class ShadowPass {
  public:
   // `surface_textures`: the scene has textures or alpha masks (GpuScene::has_surface_textures),
   // and masks cut its surfaces out of the map.
-  ShadowPass(int size, DepthBias bias, bool surface_textures);
+  ShadowPass(int size, DepthBias bias, ShadowDepth depth, bool surface_textures);
   // Draws one view of the setup into its layer.
   // With `plants`, also those polygon plants of a GPU sampler.
   void render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const GpuScene::PlantDraws* plants = nullptr);
   GLuint depth_texture() const { return depth_.name(); }
+  GLenum depth_format() const { return format_; }  // the texture's internal format
   // One layer's depths, window depth 0 (near) to 1 (far), rows from the top.
   Image<float> read_layer(int layer) const;
   int size() const { return size_; }
@@ -28,6 +29,7 @@ class ShadowPass {
 
   int size_;
   DepthBias bias_;
+  GLenum format_;
   int layers_ = 0;
   gl::Texture depth_{GL_TEXTURE_2D_ARRAY};
   gl::Framebuffer framebuffer_;

@@ -135,7 +135,7 @@ void Hud::draw_panel(const ViewStatus& status, const Renderer& renderer, ViewCon
 void Hud::draw_shadow_map_inset(const Renderer& renderer) {
   shadow_map_layer_ = gl::TextureView();
   const GLuint view = shadow_map_layer_.name();
-  glTextureView(view, GL_TEXTURE_2D, renderer.shadow_map().depth_texture(), GL_DEPTH_COMPONENT32F, 0, 1, 0, 1);
+  glTextureView(view, GL_TEXTURE_2D, renderer.shadow_map().depth_texture(), renderer.shadow_map().depth_format(), 0, 1, 0, 1);
   glTextureParameteri(view, GL_TEXTURE_COMPARE_MODE, GL_NONE);
   glTextureParameteri(view, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(view, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
