@@ -1,5 +1,7 @@
 #version 450 core
-// 1 where the stencil test let the pixel through: no shadow volume holds its surface.
+// `value` where the stencil test let the pixel through: 1 where no shadow volume holds its surface,
+// or 0 where one does.
 layout(location = 0) out float lit;
+uniform float value;
 
-void main() { lit = 1.0; }
+void main() { lit = value; }

@@ -13,6 +13,8 @@ const float ambient = 0.08;
 const float dimming = 0.2;
 const float shininess = 48.0;
 const float specular_strength = 0.25;
+// Hybrid shadows (MARK_EDGES): below this cosine the map's bias, not its depths, decides the test.
+const float grazing_n_dot_l = 0.4;
 
 // Fraction of the light reaching `position` past the occluders in the map: 3x3 taps of
 // hardware-filtered comparisons (bilinear PCF), spread over the pixel's footprint in the map: one
@@ -24,6 +26,8 @@ const float specular_strength = 0.25;
 // centre tap.
 float shadow_test(ivec2 pixel, vec3 position, vec3 n, float n_dot_l) {
   if (shadow_selection == SCREEN_MASK) return texelFetch(light_mask, pixel, 0).r;
+  // Hybrid shadows: where the light grazes the surface, neither lit nor shadowed.
+  if (MARK_EDGES && n_dot_l < grazing_n_dot_l) return 0.5;
   int layer = shadow_view(position);
   float sin_light = sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0));
   vec3 p = position + n * (1.5 * texel_world_size(layer, position) * sin_light);
@@ -33,6 +37,9 @@ float shadow_test(ivec2 pixel, vec3 position, vec3 n, float n_dot_l) {
   if (any(lessThan(map.xy, vec2(0.0))) || any(greaterThan(map.xy, vec2(1.0)))) return 1.0;
   float texels_per_pixel = cell_world_size(view_projection, frame_size, position) / texel_world_size(layer, position);
   float step = clamp(0.5 * (texels_per_pixel - 1.0), 0.0, 1.0) / shadow_size;
+  // Hybrid shadows: taps a texel apart, so that an edge the normal offset moved (up to 1.5 texels)
+  // still falls among them and the test reads neither lit nor shadowed.
+  if (MARK_EDGES) step = 1.0 / shadow_size;
   float sum = 0.0;
   for (int y = -1; y <= 1; ++y) {
     for (int x = -1; x <= 1; ++x) {

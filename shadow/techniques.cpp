@@ -12,6 +12,7 @@ namespace {
 constexpr Lights every_light{true, true, true};
 constexpr Lights directional_lights{true, false, false};
 constexpr Lights point_and_spot_lights{false, true, true};
+constexpr Lights no_light{};  // the uniform map's views for every light
 
 ShadowSetup four_cascades(const ShadowInputs& in) { return cascaded_map(in); }
 
@@ -33,6 +34,10 @@ const std::vector<Technique>& techniques() {
        LastFrame::nothing, true, improved_paraboloid_map},
       {Method::volumes, "volumes", "exact shadows of polygons by stencil shadow volumes from silhouette edges, counted z-pass where the camera stands in no volume and z-fail elsewhere; point splats cast none",
        Lookup::mask, every_light, LastFrame::nothing, false},
+      {Method::hybrid, "hybrid",
+       "the focused uniform map, and shadow volumes counted only where its test is neither lit nor shadowed, near "
+       "the edges of its shadows (Chan and Durand 2004): the volumes' edges at a fraction of their fill; point splats cast through the map",
+       Lookup::mask, no_light, LastFrame::nothing, false, focused_uniform_map},
       {Method::reference, "reference", "exact: rays to the light against every triangle, plants as meshes, with Embree",
        Lookup::mask, every_light, LastFrame::nothing, false},
       {Method::automatic, "auto",

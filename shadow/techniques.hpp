@@ -12,13 +12,14 @@
 // function (or a renderer pass, for a mask) and one row of the table.
 namespace shadow {
 
-enum class Method { none, uniform, psm, lispsm, cascades, dpsm, ipsm, volumes, reference, automatic };
+enum class Method { none, uniform, psm, lispsm, cascades, dpsm, ipsm, volumes, hybrid, reference, automatic };
 
 // What a technique hands the frame's lighting.
 enum class Lookup {
   none,  // no shadows
   map,   // a shadow map, one layer per view of its ShadowSetup: polygons and point splats cast
-  mask,  // a per-pixel mask of the frame's lit surfaces, made by the renderer: polygons cast
+  mask,  // a per-pixel mask of the frame's lit surfaces, made by the renderer (with a map's help
+         // where the technique has a setup): polygons cast
 };
 
 // What a technique takes from the frame before it.
@@ -50,6 +51,9 @@ struct Technique {
   // The map's views for a frame; none for `none`, the masks and `auto` (which predicts each
   // candidate's aliasing on the last frame's surface, on the GPU).
   ShadowSetup (*setup)(const ShadowInputs&) = nullptr;
+
+  // Whether a shadow map is drawn for the frame: looked up, or helping to make the mask.
+  bool has_map() const { return lookup == Lookup::map || (lookup == Lookup::mask && setup != nullptr); }
 };
 
 // Every technique, in the order --help and the viewer list them.

@@ -68,10 +68,36 @@ INSTANTIATE_TEST_SUITE_P(
                      testing::Values(shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot),
                      testing::Values(shadow::Method::uniform, shadow::Method::psm, shadow::Method::lispsm,
                                      shadow::Method::cascades, shadow::Method::dpsm, shadow::Method::ipsm,
-                                     shadow::Method::volumes, shadow::Method::automatic, shadow::Method::reference)),
+                                     shadow::Method::volumes, shadow::Method::hybrid, shadow::Method::automatic,
+                                     shadow::Method::reference)),
     [](const testing::TestParamInfo<Param>& info) {
       return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + shadow::technique(std::get<2>(info.param)).name;
     });
+
+// Hybrid shadows are the volumes' where the volumes are counted, and the map is certain of the
+// rest: on floating boxes their `shadow` AOVs agree on every pixel but a few, shadow edges
+// included, where the uniform map's own edges differ in hundreds.
+TEST(HybridShadows, MatchTheVolumesAlongShadowEdgesWhereTheMapDoesNot) {
+  const auto context = create_headless_context("egl");
+  pointgen::Random rng(5);
+  for (shadow::LightType type : {shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot}) {
+    const FloatingBox s = random_floating_box(rng, type);
+    const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
+    auto visibility = [&](shadow::Method method) {
+      Renderer renderer(scene, {640, 480, 512, method});
+      renderer.render(scene.camera, scene.lights[0]);
+      return renderer.frame().read_visibility();
+    };
+    auto differing = [](const Image8& a, const Image8& b) {
+      std::size_t n = 0;
+      for (std::size_t i = 0; i < a.samples.size(); ++i) n += (a.samples[i] >= 128) != (b.samples[i] >= 128);
+      return n;
+    };
+    const Image8 volumes = visibility(shadow::Method::volumes);
+    EXPECT_LE(differing(visibility(shadow::Method::hybrid), volumes), 20u) << light_name(type);
+    EXPECT_GE(differing(visibility(shadow::Method::uniform), volumes), 100u) << light_name(type);
+  }
+}
 
 // A low point light whose receivers lie mostly on one side of it: IPSM takes two paraboloids
 // along a tilted axis, so their seam crosses the plane, and the box stands between the light and
@@ -114,7 +140,8 @@ TEST(RendererChange, FramesAfterAChangeAreThoseOfAFreshRenderer) {
   // Method alone, size alone, both, and back to methods that keep state between frames.
   for (const auto& [method, size] : {std::pair{shadow::Method::psm, 1024}, std::pair{shadow::Method::psm, 2048},
                                      std::pair{shadow::Method::volumes, 2048}, std::pair{shadow::Method::cascades, 512},
-                                     std::pair{shadow::Method::automatic, 512}, std::pair{shadow::Method::lispsm, 512}}) {
+                                     std::pair{shadow::Method::automatic, 512}, std::pair{shadow::Method::lispsm, 512},
+                                     std::pair{shadow::Method::hybrid, 1024}}) {
     changed.change(method, size, 3.0f);
     changed.render(scene.camera, scene.lights[0]);
     Renderer fresh(scene, {320, 240, size, method, true, 3.0f});

@@ -139,6 +139,7 @@ FramePass::ShadeVariant FramePass::shade_variant(const std::optional<ShadowLooku
   if (!shadow_map) return variant;
   variant.shadows = true;
   variant.selection = static_cast<int>(shadow_map->setup.selection);
+  variant.marks_edges = shadow_map->marks_edges;
   for (const shadow::ShadowView& view : shadow_map->setup.views) variant.paraboloid |= view.paraboloid.has_value();
   return variant;
 }
@@ -146,7 +147,8 @@ FramePass::ShadeVariant FramePass::shade_variant(const std::optional<ShadowLooku
 std::string FramePass::defines(const ShadeVariant& variant) {
   const auto boolean = [](bool b) { return b ? std::string("true") : std::string("false"); };
   return "#define SHADOWS " + boolean(variant.shadows) + "\n#define SHADOW_SELECTION " + std::to_string(variant.selection) +
-         "\n#define PARABOLOID_VIEWS " + boolean(variant.paraboloid) + "\n#define ALIASING " + boolean(variant.aliasing) + "\n";
+         "\n#define PARABOLOID_VIEWS " + boolean(variant.paraboloid) + "\n#define ALIASING " + boolean(variant.aliasing) +
+         "\n#define MARK_EDGES " + boolean(variant.marks_edges) + "\n";
 }
 
 const gl::Program& FramePass::shade_program(const ShadeVariant& variant) const {

@@ -43,6 +43,9 @@ class FramePass {
     GLuint texture;
     const shadow::ShadowSetup& setup;
     int size;
+    // For hybrid shadows, the lookup widened to mark where the map may be wrong, as a `shadow` AOV
+    // neither 0 nor 1, so that the shadow volumes decide there (ShadowVolumePass::render_near_edges).
+    bool marks_edges = false;
   };
   // Lights the surfaces drawn.
   void shade(const shadow::Camera& camera, const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;
@@ -57,6 +60,7 @@ class FramePass {
 
   Image8 read_color() const;
   Image8 read_visibility() const;
+  GLuint visibility_texture() const { return visibility_.name(); }  // R8, as read_visibility reads it
   // Linear view depth in metres; negative where no surface was drawn.
   Image<float> read_depth() const;
   // The nearest of those depths, found by the shading pass and read back (4 bytes); 0 where none.
@@ -83,6 +87,7 @@ class FramePass {
     int selection = 0;
     bool paraboloid = false;
     bool aliasing = false;
+    bool marks_edges = false;
     auto operator<=>(const ShadeVariant&) const = default;
   };
   ShadeVariant shade_variant(const std::optional<ShadowLookup>& shadow_map) const;

@@ -107,7 +107,8 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
 
 // Made with the renderer, not with the first frame, so that frame times hold no shader compilation.
 void Renderer::make_method_passes() {
-  if (settings_.method == shadow::Method::volumes && !volume_pass_) {
+  const bool volumes = settings_.method == shadow::Method::volumes || settings_.method == shadow::Method::hybrid;
+  if (volumes && !volume_pass_) {
     volume_pass_ = std::make_unique<ShadowVolumePass>(settings_.width, settings_.height, frame_pass_.depth_stencil_texture());
     gpu_scene_.add_adjacency(scene_);
     for (const pointgen::TriangleMesh& mesh : scene_.meshes) {
@@ -280,6 +281,21 @@ FramePass::ShadowLookup Renderer::render_shadow_volumes(const shadow::Camera& ca
   return {volume_pass_->light_mask(), setup_, 0};
 }
 
+// Chan and Durand 2004: where the map's filtered test was all lit or all shadowed its answer
+// stands; the volumes decide the rest. The map is timed as the shadow pass, this with the frame
+// pass (its stage: "shadow volumes").
+FramePass::ShadowLookup Renderer::render_volumes_near_edges(const shadow::Camera& camera, const shadow::Light& light) {
+  const bool z_pass = camera_outside_volumes(camera, light);
+  setup_.description += z_pass ? "; volumes near its edges: z-pass" : "; volumes near its edges: z-fail";
+  volume_pass_->render_near_edges(gpu_scene_, view_projection_, light,
+                                  z_pass ? ShadowVolumePass::Counting::z_pass : ShadowVolumePass::Counting::z_fail,
+                                  frame_pass_.visibility_texture());
+  stages_.end("shadow volumes");
+  // The frame reads the mask; setup_ keeps the map's views for the `shadowmap` AOV and the viewer.
+  static const shadow::ShadowSetup screen_mask{{}, shadow::ViewSelection::screen_mask, "hybrid mask"};
+  return {volume_pass_->light_mask(), screen_mask, 0};
+}
+
 // Each caster's cell first (a box around its members' spheres), then the box of each member in it.
 bool Renderer::camera_outside_volumes(const shadow::Camera& camera, const shadow::Light& light) const {
   const std::vector<shadow::Plane> hull = shadow::near_plane_light_hull(camera, aspect(), light);
@@ -448,7 +464,7 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   view_projection_ = camera.projection(aspect()) * camera.view();
   camera_ = camera;
   light_ = light;
-  const bool map = shadows && shadow::technique(settings_.method).lookup == shadow::Lookup::map;
+  const bool map = shadows && shadow::technique(settings_.method).has_map();
   std::vector<shadow::Plane> casters;  // the focus body of the casters: planes, normals out
   if (map) {
     const shadow::ShadowInputs inputs = shadow_inputs(camera, light);
@@ -456,7 +472,8 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
     casters = inputs.bodies.casters.face_planes();
   }
   pointgen::SampledFrame selection =
-      gpu_sampler_ && map ? draw_sampled_on_gpu(camera, light, casters) : draw_sampled_on_cpu(camera, light, shadows);
+      gpu_sampler_ && map && settings_.method != shadow::Method::hybrid ? draw_sampled_on_gpu(camera, light, casters)
+                                                                        : draw_sampled_on_cpu(camera, light, shadows);
   stats_.points = selection.point_count;
   stats_.triangles = fixed_triangles() + selection.triangle_count;
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
@@ -477,6 +494,7 @@ std::size_t Renderer::fixed_triangles() const {
 
 pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camera, const shadow::Light& light, bool shadows) {
   const bool volumes = settings_.method == shadow::Method::volumes;
+  const bool hybrid = settings_.method == shadow::Method::hybrid;
   const bool reference = settings_.method == shadow::Method::reference;
   // The frame's points are chosen on another thread while this one chooses the shadow map's and
   // draws it: sampling is CPU work, and on llvmpipe the GL work is too, so the two overlap on two
@@ -497,7 +515,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camer
   std::optional<FramePass::ShadowLookup> lookup;
   if (shadows && !volumes && !reference) {
     render_shadow_map(camera);
-    lookup.emplace(FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size()});
+    lookup.emplace(FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size(), hybrid});
   }
   pointgen::SampledFrame selection;
   if (gpu_sampler_) {
@@ -510,13 +528,17 @@ pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camer
     frame_points_.upload(selection.points, tables_, samples_);
   } else {
     // Shadow volumes are drawn from the frame's polygons and need the casters out of view too.
-    selection = volumes ? polygons_in(std::nullopt) : polygons_in(pointgen::ViewFrusta({view_projection_}));
+    selection = volumes || hybrid ? polygons_in(std::nullopt) : polygons_in(pointgen::ViewFrusta({view_projection_}));
   }
   upload_polygons(selection);
   if (shadows && volumes) lookup.emplace(render_shadow_volumes(camera, light));
   if (shadows && reference) lookup.emplace(render_reference_mask(camera, light));
   frame_timer_.start();
   draw_frame(camera, light, lookup);
+  if (shadows && hybrid) {
+    frame_pass_.shade(camera, light, render_volumes_near_edges(camera, light));
+    stages_.end("shading");
+  }
   frame_timer_.stop();
   pending_.frame_timers = 1;
   pending_.gpu_choice = gpu_sampler_ != nullptr;

@@ -115,6 +115,9 @@ class Renderer {
   // Whether no caster stands between the camera's near plane and the light, so that the volumes
   // may be counted z-pass (shadow/volume_counting.hpp).
   bool camera_outside_volumes(const shadow::Camera& camera, const shadow::Light& light) const;
+  // --method hybrid: the frame just lit by the map, then the volumes near its shadows' edges; the
+  // lit-pixel mask to light it again with.
+  FramePass::ShadowLookup render_volumes_near_edges(const shadow::Camera& camera, const shadow::Light& light);
   // The exact reference in place of a map: the mask from ExactVisibility.
   FramePass::ShadowLookup render_reference_mask(const shadow::Camera& camera, const shadow::Light& light);
   ExactVisibility& exact();
@@ -166,8 +169,8 @@ class Renderer {
   std::unique_ptr<DepthPyramid> occluders_;  // over the frame, for gpu_sampler_
   std::unique_ptr<DepthPyramid> receivers_;  // over the first shadow view: the frame's receivers
   std::unique_ptr<PointSplat> shadow_points_;  // made with the first shadow map that needs it
-  std::unique_ptr<ShadowVolumePass> volume_pass_;  // --method volumes
-  std::vector<shadow::Box> mesh_boxes_;             // --method volumes: each mesh's bounds (camera_outside_volumes)
+  std::unique_ptr<ShadowVolumePass> volume_pass_;  // --method volumes, hybrid
+  std::vector<shadow::Box> mesh_boxes_;             // with volume_pass_: each mesh's bounds (camera_outside_volumes)
   std::unique_ptr<ExactVisibility> exact_;          // made when first asked for
   std::unique_ptr<gl::Texture> reference_mask_;     // --method reference: R8, frame-sized, its lit pixels
   shadow::Camera camera_;                            // of the last frame

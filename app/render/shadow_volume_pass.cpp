@@ -20,12 +20,16 @@ ShadowVolumePass::ShadowVolumePass(int width, int height, GLuint depth_stencil)
     : width_(width),
       height_(height),
       volume_program_(gl::build_program({"world_position.vert", "shadow_volume.geom", "shadow_depth.frag"})),
-      mask_program_(gl::build_program({"fullscreen.vert", "light_mask.frag"})) {
+      mask_program_(gl::build_program({"fullscreen.vert", "light_mask.frag"})),
+      edge_program_(gl::build_program({"fullscreen.vert", "edge_pixels.frag"})) {
   glTextureStorage2D(mask_.name(), 1, GL_R8, width, height);
   const GLuint fb = framebuffer_.name();
   glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT0, mask_.name(), 0);
   glNamedFramebufferTexture(fb, GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil, 0);
-  if (glCheckNamedFramebufferStatus(fb, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+  glNamedFramebufferTexture(stencil_only_.name(), GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil, 0);
+  glNamedFramebufferDrawBuffer(stencil_only_.name(), GL_NONE);
+  if (glCheckNamedFramebufferStatus(fb, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE ||
+      glCheckNamedFramebufferStatus(stencil_only_.name(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
     throw RuntimeFailure("the shadow-volume targets are not supported by this driver; try another --backend");
   }
 }
@@ -39,8 +43,51 @@ void ShadowVolumePass::render(const GpuScene& scene, const glm::mat4& view_proje
   const GLint zero = 0;
   glClearNamedFramebufferfv(fb, GL_COLOR, 0, &unlit);
   glClearNamedFramebufferiv(fb, GL_STENCIL, 0, &zero);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 0, 0xFF);
+  count(scene, view_projection, light, counting);
+  // The mask: 1 where the count is 0.
+  glStencilFunc(GL_EQUAL, 0, 0xFF);
+  write_mask(1.0f);
+  glDisable(GL_STENCIL_TEST);
+}
 
-  // The volumes: no colour, no depth writes, both faces; far caps at infinity kept by depth clamp.
+void ShadowVolumePass::render_near_edges(const GpuScene& scene, const glm::mat4& view_projection, const shadow::Light& light,
+                                         Counting counting, GLuint visibility) const {
+  constexpr GLuint edge_bit = 0x80, count_bits = 0x7F;
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);  // the AOV is a compute pass's image
+  glCopyImageSubData(visibility, GL_TEXTURE_2D, 0, 0, 0, 0, mask_.name(), GL_TEXTURE_2D, 0, 0, 0, 0, width_, height_, 1);
+  const GLint zero = 0;
+  glClearNamedFramebufferiv(stencil_only_.name(), GL_STENCIL, 0, &zero);
+  glBindFramebuffer(GL_FRAMEBUFFER, stencil_only_.name());
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, edge_bit, edge_bit);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glUseProgram(edge_program_.name());
+  glBindTextureUnit(0, visibility);
+  glBindVertexArray(empty_vertex_array_.name());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.name());
+  glStencilFunc(GL_EQUAL, edge_bit, edge_bit);
+  glStencilMask(count_bits);
+  count(scene, view_projection, light, counting);
+  glStencilMask(0xFF);
+  // Near edges: 1 where the count is 0, 0 where it is not.
+  glStencilFunc(GL_EQUAL, edge_bit, 0xFF);
+  write_mask(1.0f);
+  glStencilFunc(GL_LESS, edge_bit, 0xFF);  // edge_bit < stencil: marked, and a count
+  write_mask(0.0f);
+  glDisable(GL_STENCIL_TEST);
+}
+
+// The volumes: no colour, no depth writes, both faces; far caps at infinity kept by depth clamp.
+// The stencil test is the caller's.
+void ShadowVolumePass::count(const GpuScene& scene, const glm::mat4& view_projection, const shadow::Light& light,
+                             Counting counting) const {
   const bool z_fail = counting == Counting::z_fail;
   glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glEnable(GL_DEPTH_TEST);
@@ -50,8 +97,6 @@ void ShadowVolumePass::render(const GpuScene& scene, const glm::mat4& view_proje
   glEnable(GL_DEPTH_CLAMP);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(offset_factor, offset_units);
-  glEnable(GL_STENCIL_TEST);
-  glStencilFunc(GL_ALWAYS, 0, 0xFF);
   glUseProgram(volume_program_.name());
   gl::set_uniform(volume_program_, "view_projection", view_projection);
   gl::set_uniform(volume_program_, "light", shadow::homogeneous(light));
@@ -68,16 +113,16 @@ void ShadowVolumePass::render(const GpuScene& scene, const glm::mat4& view_proje
   glDisable(GL_DEPTH_CLAMP);
   glDepthMask(GL_TRUE);
   glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
 
-  // The mask: 1 where the count is 0.
+void ShadowVolumePass::write_mask(float value) const {
   glDisable(GL_DEPTH_TEST);
-  glStencilFunc(GL_EQUAL, 0, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glUseProgram(mask_program_.name());
+  gl::set_uniform(mask_program_, "value", value);
   glBindVertexArray(empty_vertex_array_.name());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
-  glDisable(GL_STENCIL_TEST);
 }
 
 }  // namespace ecoview
