@@ -151,22 +151,26 @@ TEST(RendererChange, FramesAfterAChangeAreThoseOfAFreshRenderer) {
   }
 }
 
-// --bias-constant: polygon offset units, which for a float depth buffer are steps of 2^(e - 23)
-// at a depth of exponent e (the GL specification, 14.6.5). A ground plane under a light straight
-// above faces the map: no slope, so its depth in the map moves by the constant term alone.
-TEST(ShadowBias, TheConstantBiasMovesAFlatCasterByThatManyStepsOfItsDepth) {
-  const auto context = create_headless_context("egl");
+// The shadow map's depth at its centre, a window depth 0..1, of a ground plane under a light
+// straight above: the plane faces the map, no slope, so the bias moves it by the constant alone.
+double flat_ground_map_depth(ShadowDepth format, float constant_bias) {
   const Scene scene = load_scene({"ground.json", R"({"camera": {"position": [0, 10, 20], "target": [0, 0, 0]},
       "lights": [{"type": "directional", "direction": [0, -1, 0]}],
       "objects": [{"type": "plane", "center": [0, 0, 0], "size": [40, 40]}]})",
                                   [](const std::string&) { return std::nullopt; }});
-  auto centre_depth = [&](float constant) {
-    RenderSettings settings{320, 240, 256, shadow::Method::uniform};
-    settings.shadow_bias = {0.0f, constant};
-    Renderer renderer(scene, settings);
-    renderer.render(scene.camera, scene.lights[0]);
-    return renderer.shadow_map().read_layer(0).at(128, 128);
-  };
+  RenderSettings settings{320, 240, 256, shadow::Method::uniform};
+  settings.shadow_bias = {0.0f, constant_bias};
+  settings.shadow_depth = format;
+  Renderer renderer(scene, settings);
+  renderer.render(scene.camera, scene.lights[0]);
+  return renderer.shadow_map().read_layer(0).at(128, 128);
+}
+
+// --bias-constant: polygon offset units, which for a float depth buffer are steps of 2^(e - 23)
+// at a depth of exponent e (the GL specification, 14.6.5).
+TEST(ShadowBias, TheConstantBiasMovesAFlatCasterByThatManyStepsOfItsDepth) {
+  const auto context = create_headless_context("egl");
+  auto centre_depth = [](float constant) { return static_cast<float>(flat_ground_map_depth(ShadowDepth::float32, constant)); };
   const float unbiased = centre_depth(0.0f);
   ASSERT_GT(unbiased, 0.0f);
   ASSERT_LT(unbiased, 1.0f);
@@ -179,20 +183,9 @@ TEST(ShadowBias, TheConstantBiasMovesAFlatCasterByThatManyStepsOfItsDepth) {
 // of 1 / (2^bits - 1), and the constant bias moves the same flat caster in proportion to it.
 TEST(ShadowDepthFormat, FixedPointMapsHoldWholeStepsAndTheBiasCountsInThem) {
   const auto context = create_headless_context("egl");
-  const Scene scene = load_scene({"ground.json", R"({"camera": {"position": [0, 10, 20], "target": [0, 0, 0]},
-      "lights": [{"type": "directional", "direction": [0, -1, 0]}],
-      "objects": [{"type": "plane", "center": [0, 0, 0], "size": [40, 40]}]})",
-                                  [](const std::string&) { return std::nullopt; }});
   for (const auto& [format, bits] : {std::pair{ShadowDepth::fixed16, 16}, std::pair{ShadowDepth::fixed24, 24}}) {
     const double steps = std::ldexp(1.0, bits) - 1.0;
-    auto centre_depth = [&](float constant) {
-      RenderSettings settings{320, 240, 256, shadow::Method::uniform};
-      settings.shadow_bias = {0.0f, constant};
-      settings.shadow_depth = format;
-      Renderer renderer(scene, settings);
-      renderer.render(scene.camera, scene.lights[0]);
-      return static_cast<double>(renderer.shadow_map().read_layer(0).at(128, 128)) * steps;
-    };
+    auto centre_depth = [&, format = format](float constant) { return flat_ground_map_depth(format, constant) * steps; };
     const double unbiased = centre_depth(0.0f);
     ASSERT_GT(unbiased, 1.0) << bits;
     ASSERT_LT(unbiased, steps - 1.0) << bits;

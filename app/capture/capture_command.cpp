@@ -111,7 +111,7 @@ int run_capture(const CaptureOptions& o) {
   if (aovs.empty() && o.stats.empty()) throw InputError("--aov none writes no images: give --stats for the frames' figures");
   settings.aliasing = !o.stats.empty() || std::find(aovs.begin(), aovs.end(), Aov::aliasing) != aovs.end();
   if (std::find(aovs.begin(), aovs.end(), Aov::shadowmap) != aovs.end() &&
-      shadow::technique(settings.method).lookup != shadow::Lookup::map) {
+      !shadow::technique(settings.method).has_map()) {
     throw InputError("--aov: shadowmap needs a shadow map; --method " + o.render.method + " has none");
   }
   check_backend(o.backend);
