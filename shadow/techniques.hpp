@@ -48,8 +48,9 @@ struct Technique {
   // Whether the CPU sampler may skip point casters whose shadows fall on nothing the last frame
   // showed (pointgen::ReceiverMask).
   bool culls_casters;
-  // The map's views for a frame; none for `none`, the masks and `auto` (which predicts each
-  // candidate's aliasing on the last frame's surface, on the GPU).
+  // The map's views for a frame (for `hybrid`, the map that decides where its volumes count); none
+  // for `none`, `volumes`, `reference` and `auto` (which predicts each candidate's aliasing on the
+  // last frame's surface, on the GPU).
   ShadowSetup (*setup)(const ShadowInputs&) = nullptr;
 
   // Whether a shadow map is drawn for the frame: looked up, or helping to make the mask.
