@@ -12,7 +12,6 @@ namespace ecoview {
 // The field's lights turn from along the view (0°: from behind the camera) to into it (180°) in
 // steps of this many degrees, one light a step (data/scenes/field.json).
 constexpr float field_light_step_deg = 15.0f;
-constexpr std::size_t field_lights = 13;  // for progress counts before the scene loads
 
 // One view of a scene where `bench` takes its figures, with the scene's exact reference.
 struct MeasuredView {

@@ -464,7 +464,8 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   view_projection_ = camera.projection(aspect()) * camera.view();
   camera_ = camera;
   light_ = light;
-  const bool map = shadows && shadow::technique(settings_.method).has_map();
+  const shadow::Technique& technique = shadow::technique(settings_.method);
+  const bool map = shadows && technique.has_map();
   std::vector<shadow::Plane> casters;  // the focus body of the casters: planes, normals out
   if (map) {
     const shadow::ShadowInputs inputs = shadow_inputs(camera, light);
@@ -472,8 +473,8 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
     casters = inputs.bodies.casters.face_planes();
   }
   pointgen::SampledFrame selection =
-      gpu_sampler_ && map && settings_.method != shadow::Method::hybrid ? draw_sampled_on_gpu(camera, light, casters)
-                                                                        : draw_sampled_on_cpu(camera, light, shadows);
+      gpu_sampler_ && map && technique.lookup == shadow::Lookup::map ? draw_sampled_on_gpu(camera, light, casters)
+                                                                     : draw_sampled_on_cpu(camera, light, shadows);
   stats_.points = selection.point_count;
   stats_.triangles = fixed_triangles() + selection.triangle_count;
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {

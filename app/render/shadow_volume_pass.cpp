@@ -67,9 +67,7 @@ void ShadowVolumePass::render_near_edges(const GpuScene& scene, const glm::mat4&
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glUseProgram(edge_program_.name());
   glBindTextureUnit(0, visibility);
-  glBindVertexArray(empty_vertex_array_.name());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
+  draw_fullscreen();
 
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.name());
   glStencilFunc(GL_EQUAL, edge_bit, edge_bit);
@@ -120,6 +118,10 @@ void ShadowVolumePass::write_mask(float value) const {
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glUseProgram(mask_program_.name());
   gl::set_uniform(mask_program_, "value", value);
+  draw_fullscreen();
+}
+
+void ShadowVolumePass::draw_fullscreen() const {
   glBindVertexArray(empty_vertex_array_.name());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);

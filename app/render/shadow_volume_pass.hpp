@@ -33,6 +33,7 @@ class ShadowVolumePass {
   void count(const GpuScene& scene, const glm::mat4& view_projection, const shadow::Light& light, Counting counting) const;
   // Writes `value` into the mask where the stencil test passes.
   void write_mask(float value) const;
+  void draw_fullscreen() const;  // one triangle over the viewport, the program's own
 
   int width_, height_;
   gl::Texture mask_{GL_TEXTURE_2D};
