@@ -5,6 +5,9 @@
 
 layout(binding = 0) uniform sampler2DArrayShadow shadow_map;
 layout(binding = 1) uniform sampler2D light_mask;  // SCREEN_MASK (shadow volumes): 1 where lit
+// SILHOUETTES: per cell of the map's dual grid, a point of the silhouette edge crossing it, as
+// silhouette_point.frag writes it; negative where none does.
+layout(binding = 16) uniform sampler2DArray silhouette_points;
 
 // Low enough that a shadowed surface facing the light keeps about a quarter of its lit colour
 // ((0.08 + 0.2) against 1.08), so shadows read in the colour frames as in the PSM paper's figures;
@@ -15,6 +18,57 @@ const float shininess = 48.0;
 const float specular_strength = 0.25;
 // Hybrid shadows (MARK_EDGES): below this cosine the map's bias, not its depths, decides the test.
 const float grazing_n_dot_l = 0.4;
+
+// A cell's silhouette point: negative where no edge crosses the cell (or off the map).
+vec2 silhouette_point(ivec2 cell, int layer) {
+  if (any(lessThan(cell, ivec2(0))) || any(greaterThanEqual(cell, ivec2(shadow_size)))) return vec2(-1.0);
+  return texelFetch(silhouette_points, ivec3(cell, layer), 0).rg;
+}
+
+// A neighbour's silhouette point, or its centre, as seen from its neighbour cell `offset` away.
+vec2 neighbour_point(ivec2 cell, ivec2 offset, int layer) {
+  vec2 p = silhouette_point(cell + offset, layer);
+  return (p.x < 0.0 ? vec2(0.5) : p) + vec2(offset);
+}
+
+float cross2(vec2 u, vec2 v) { return u.x * v.y - u.y * v.x; }
+
+// Shadow silhouette maps (Sen, Cammarano and Hanrahan 2003): the map's depths are tested at the
+// four corners of the dual-grid cell that holds `position`. Where they agree, that is the answer;
+// where they do not and a silhouette edge crosses the cell, the lines from the cell's silhouette
+// point to its four neighbours' (their centres where they have none) cut the cell into four
+// sectors, one around each corner, and the sector that holds `position` takes its corner's test:
+// the edge between lit and shadowed is the silhouette itself, piecewise linear, not the texels'
+// staircase. The depths are compared with `offset`'s, the surface moved off along its normal as
+// the filtered lookup moves it against acne; the cell is `position`'s, which keeps the edge where
+// the silhouette puts it. Negative where the corners disagree and no edge crosses the cell (a
+// point splat's shadow): the filtered lookup answers there.
+float silhouette_test(int layer, vec3 position, vec3 offset) {
+  vec4 clip = shadow_clip(layer, position), offset_clip = shadow_clip(layer, offset);
+  if (clip.w <= 0.0 || offset_clip.w <= 0.0) return -1.0;
+  vec3 map = vec3(clip.xy / clip.w, offset_clip.z / offset_clip.w) * 0.5 + 0.5;
+  vec2 in_cells = map.xy * shadow_size - 0.5;
+  vec2 cell = floor(in_cells);
+  // The corners (0, 1), (1, 1), (1, 0), (0, 0), as textureGather orders them.
+  vec4 lit = textureGather(shadow_map, vec3((cell + 1.0) / shadow_size, layer), map.z);
+  if (lit == vec4(lit.x)) return lit.x;
+  ivec2 c = ivec2(cell);
+  vec2 centre = silhouette_point(c, layer);
+  if (centre.x < 0.0) return -1.0;
+  vec2 q = in_cells - cell - centre;
+  vec2 right = neighbour_point(c, ivec2(1, 0), layer) - centre;
+  vec2 up = neighbour_point(c, ivec2(0, 1), layer) - centre;
+  vec2 left = neighbour_point(c, ivec2(-1, 0), layer) - centre;
+  vec2 down = neighbour_point(c, ivec2(0, -1), layer) - centre;
+  // Counter-clockwise from the first line to the second.
+  if (cross2(right, q) >= 0.0 && cross2(q, up) >= 0.0) return lit.y;
+  if (cross2(up, q) >= 0.0 && cross2(q, left) >= 0.0) return lit.x;
+  if (cross2(left, q) >= 0.0 && cross2(q, down) >= 0.0) return lit.w;
+  if (cross2(down, q) >= 0.0 && cross2(q, right) >= 0.0) return lit.z;
+  // Sectors wider than a half turn (silhouette points on the cell's sides): the nearest corner.
+  vec2 f = in_cells - cell;
+  return f.y < 0.5 ? (f.x < 0.5 ? lit.w : lit.z) : (f.x < 0.5 ? lit.x : lit.y);
+}
 
 // Fraction of the light reaching `position` past the occluders in the map: 3x3 taps of
 // hardware-filtered comparisons (bilinear PCF), spread over the pixel's footprint in the map: one
@@ -31,6 +85,10 @@ float shadow_test(ivec2 pixel, vec3 position, vec3 n, float n_dot_l) {
   int layer = shadow_view(position);
   float sin_light = sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0));
   vec3 p = position + n * (1.5 * texel_world_size(layer, position) * sin_light);
+  if (SILHOUETTES) {
+    float edge = silhouette_test(layer, position, p);
+    if (edge >= 0.0) return edge;
+  }
   vec4 clip = shadow_clip(layer, p);
   if (clip.w <= 0.0) return 1.0;  // behind the map's projection centre: not covered
   vec3 map = clip.xyz / clip.w * 0.5 + 0.5;

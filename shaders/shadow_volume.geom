@@ -12,28 +12,13 @@ layout(triangle_strip, max_vertices = 18) out;
 in vec3 world_position[];
 
 uniform mat4 view_projection;
-// Homogeneous: (position, 1) for point and spot lights, (-direction, 0) for directional ones.
-uniform vec4 light;
+#include "light_facing.glsl"
 // z-fail counting needs the far caps; z-pass counting does without.
 uniform bool far_caps;
 
 vec4 near_vertex(vec3 p) { return view_projection * vec4(p, 1.0); }
 // The point at infinity in the direction from the light through p.
 vec4 far_vertex(vec3 p) { return view_projection * vec4(light.w * p - light.xyz, 0.0); }
-
-bool before(vec3 u, vec3 v) { return u.x != v.x ? u.x < v.x : u.y != v.y ? u.y < v.y : u.z < v.z; }
-
-// How triangle (a, b, c) faces the light, with the sign of this order of its vertices. Computed
-// from its vertices in one fixed order, so that a triangle and its neighbour agree bit for bit on
-// which way each faces: a disagreement would leave a gap in the volume.
-float facing(vec3 a, vec3 b, vec3 c) {
-  float order = 1.0;
-  vec3 t;
-  if (before(b, a)) { t = a; a = b; b = t; order = -order; }
-  if (before(c, b)) { t = b; b = c; c = t; order = -order; }
-  if (before(b, a)) { t = a; a = b; b = t; order = -order; }
-  return order * dot(cross(b - a, c - a), light.xyz - light.w * a);
-}
 
 void emit(vec4 a, vec4 b, vec4 c) {
   gl_Position = a; EmitVertex();

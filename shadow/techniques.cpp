@@ -12,7 +12,6 @@ namespace {
 constexpr Lights every_light{true, true, true};
 constexpr Lights directional_lights{true, false, false};
 constexpr Lights point_and_spot_lights{false, true, true};
-constexpr Lights no_light{};  // the uniform map's views for every light
 
 ShadowSetup four_cascades(const ShadowInputs& in) { return cascaded_map(in); }
 
@@ -32,12 +31,18 @@ const std::vector<Technique>& techniques() {
        dual_paraboloid_map},
       {Method::ipsm, "ipsm", "improved paraboloid map, turned and cut to the receivers", Lookup::map, point_and_spot_lights,
        LastFrame::nothing, true, improved_paraboloid_map},
+      {Method::silhouette, "silhouette",
+       "the focused uniform map and its silhouette map: per texel a point of the polygon casters' silhouette edges, "
+       "from which the lookup rebuilds sharp shadow edges (Sen, Cammarano and Hanrahan 2003); point splats cast through the depths alone",
+       Lookup::map, every_light, LastFrame::nothing, true, focused_uniform_map, true},
+      {Method::psm_silhouette, "psm+silhouette", "the perspective shadow map and its silhouette map, looked up as silhouette's",
+       Lookup::map, every_light, LastFrame::nearest_depth, true, perspective_shadow_map, true},
       {Method::volumes, "volumes", "exact shadows of polygons by stencil shadow volumes from silhouette edges, counted z-pass where the camera stands in no volume and z-fail elsewhere; point splats cast none",
        Lookup::mask, every_light, LastFrame::nothing, false},
       {Method::hybrid, "hybrid",
        "the focused uniform map, and shadow volumes counted only where its test is neither lit nor shadowed, near "
        "the edges of its shadows (Chan and Durand 2004): the volumes' edges at a fraction of their fill; point splats cast through the map",
-       Lookup::mask, no_light, LastFrame::nothing, false, focused_uniform_map},
+       Lookup::mask, every_light, LastFrame::nothing, false, focused_uniform_map},
       {Method::reference, "reference", "exact: rays to the light against every triangle, plants as meshes, with Embree",
        Lookup::mask, every_light, LastFrame::nothing, false},
       {Method::automatic, "auto",
@@ -62,11 +67,17 @@ const Technique* find_technique(std::string_view name) {
   return nullptr;
 }
 
-std::vector<Method> auto_candidates(LightType light) {
-  std::vector<Method> candidates;
+std::vector<Method> map_techniques(LightType light) {
+  std::vector<Method> maps;
   for (const Technique& t : techniques()) {
-    if (t.setup && t.warps.has(light)) candidates.push_back(t.method);
+    if (t.lookup == Lookup::map && t.setup && t.warps.has(light)) maps.push_back(t.method);
   }
+  return maps;
+}
+
+std::vector<Method> auto_candidates(LightType light) {
+  std::vector<Method> candidates = map_techniques(light);
+  std::erase_if(candidates, [](Method m) { return technique(m).silhouette_map; });
   return candidates;
 }
 

@@ -12,7 +12,7 @@
 // function (or a renderer pass, for a mask) and one row of the table.
 namespace shadow {
 
-enum class Method { none, uniform, psm, lispsm, cascades, dpsm, ipsm, volumes, hybrid, reference, automatic };
+enum class Method { none, uniform, psm, lispsm, cascades, dpsm, ipsm, silhouette, psm_silhouette, volumes, hybrid, reference, automatic };
 
 // What a technique hands the frame's lighting.
 enum class Lookup {
@@ -52,6 +52,9 @@ struct Technique {
   // for `none`, `volumes`, `reference` and `auto` (which predicts each candidate's aliasing on the
   // last frame's surface, on the GPU).
   ShadowSetup (*setup)(const ShadowInputs&) = nullptr;
+  // Whether a silhouette map goes with the map (Sen, Cammarano and Hanrahan 2003): the lookup
+  // rebuilds the polygon casters' shadow edges from it, instead of filtering the depths.
+  bool silhouette_map = false;
 
   // Whether a shadow map is drawn for the frame: looked up, or helping to make the mask.
   bool has_map() const { return lookup == Lookup::map || (lookup == Lookup::mask && setup != nullptr); }
@@ -62,7 +65,10 @@ const std::vector<Technique>& techniques();
 const Technique& technique(Method method);
 // The technique named `name`; nullptr where there is none.
 const Technique* find_technique(std::string_view name);
-// The maps `auto` chooses among for a light: those whose own setup handles it.
+// The maps whose own setup handles a light (looked up, with a setup, warps.has(light)).
+std::vector<Method> map_techniques(LightType light);
+// The maps `auto` chooses among for a light: those, filtered (a silhouette map changes the edges,
+// not the aliasing auto predicts).
 std::vector<Method> auto_candidates(LightType light);
 
 }  // namespace shadow

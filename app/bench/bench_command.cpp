@@ -29,9 +29,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The maps timed for a light: those `auto` chooses among, and `auto`.
+// The maps timed for a light: those with a setup of their own for it, and `auto`.
 std::vector<shadow::Method> map_methods(shadow::LightType light) {
-  std::vector<shadow::Method> methods = shadow::auto_candidates(light);
+  std::vector<shadow::Method> methods = shadow::map_techniques(light);
   methods.push_back(shadow::Method::automatic);
   return methods;
 }

@@ -2,6 +2,7 @@
 
 #include "app/errors.hpp"
 #include "app/gl/shader_program.hpp"
+#include "app/render/buffer_texture_units.hpp"
 #include "app/scene/scene_fields.hpp"
 
 #include <algorithm>
@@ -140,6 +141,7 @@ FramePass::ShadeVariant FramePass::shade_variant(const std::optional<ShadowLooku
   variant.shadows = true;
   variant.selection = static_cast<int>(shadow_map->setup.selection);
   variant.marks_edges = shadow_map->marks_edges;
+  variant.silhouettes = shadow_map->silhouettes != 0;
   for (const shadow::ShadowView& view : shadow_map->setup.views) variant.paraboloid |= view.paraboloid.has_value();
   return variant;
 }
@@ -148,7 +150,7 @@ std::string FramePass::defines(const ShadeVariant& variant) {
   const auto boolean = [](bool b) { return b ? std::string("true") : std::string("false"); };
   return "#define SHADOWS " + boolean(variant.shadows) + "\n#define SHADOW_SELECTION " + std::to_string(variant.selection) +
          "\n#define PARABOLOID_VIEWS " + boolean(variant.paraboloid) + "\n#define ALIASING " + boolean(variant.aliasing) +
-         "\n#define MARK_EDGES " + boolean(variant.marks_edges) + "\n";
+         "\n#define MARK_EDGES " + boolean(variant.marks_edges) + "\n#define SILHOUETTES " + boolean(variant.silhouettes) + "\n";
 }
 
 const gl::Program& FramePass::shade_program(const ShadeVariant& variant) const {
@@ -224,6 +226,7 @@ void FramePass::set_light(const gl::Program& program, const shadow::Light& light
     }
     gl::set_uniform(program, "shadow_size", static_cast<float>(shadow_map->size));
     glBindTextureUnit(setup.selection == shadow::ViewSelection::screen_mask ? 1 : 0, shadow_map->texture);
+    if (shadow_map->silhouettes != 0) glBindTextureUnit(silhouette_points_unit, shadow_map->silhouettes);
   }
 }
 

@@ -46,6 +46,9 @@ class FramePass {
     // For hybrid shadows, the lookup widened to mark where the map may be wrong, as a `shadow` AOV
     // neither 0 nor 1, so that the shadow volumes decide there (ShadowVolumePass::render_near_edges).
     bool marks_edges = false;
+    // For shadow silhouette maps, the map's silhouette points (SilhouettePass), one layer a view;
+    // 0 for none.
+    GLuint silhouettes = 0;
   };
   // Lights the surfaces drawn.
   void shade(const shadow::Camera& camera, const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;
@@ -88,6 +91,7 @@ class FramePass {
     bool paraboloid = false;
     bool aliasing = false;
     bool marks_edges = false;
+    bool silhouettes = false;
     auto operator<=>(const ShadeVariant&) const = default;
   };
   ShadeVariant shade_variant(const std::optional<ShadowLookup>& shadow_map) const;

@@ -116,6 +116,10 @@ void Renderer::make_method_passes() {
       mesh_boxes_.push_back(bounds.empty() ? shadow::Box{} : shadow::Box{bounds.min, bounds.max});
     }
   }
+  if (shadow::technique(settings_.method).silhouette_map && !silhouette_pass_) {
+    silhouette_pass_ = std::make_unique<SilhouettePass>(settings_.shadow_size);
+    gpu_scene_.add_adjacency(scene_);
+  }
   if (settings_.method == shadow::Method::reference && !reference_mask_) {
     reference_mask_ = std::make_unique<gl::Texture>(GL_TEXTURE_2D);
     glTextureStorage2D(reference_mask_->name(), 1, GL_R8, settings_.width, settings_.height);
@@ -131,6 +135,7 @@ void Renderer::change(shadow::Method method, int shadow_size, float k) {
   if (wanted.shadow_size != settings_.shadow_size) {
     shadow_pass_ = ShadowPass(wanted.shadow_size, wanted.shadow_bias, wanted.shadow_depth, gpu_scene_.has_surface_textures());
     shadow_points_.reset();
+    silhouette_pass_.reset();
   }
   // What the last frame left (near plane, surface, receivers) depends on the method and k: the next
   // frame starts again from one without shadows, as a fresh renderer's does.
@@ -256,6 +261,7 @@ void Renderer::render_shadow_map(const shadow::Camera& camera) {
     stats_.shadow_triangles += fixed_triangles() + drawn.triangle_count;
     shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer));
     stages_.end("map polygons");
+    render_silhouettes(static_cast<int>(layer));
     if (!settings_.points) continue;
     shadow_points_->upload(selections[layer].points, tables_, samples_);
     shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
@@ -264,6 +270,21 @@ void Renderer::render_shadow_map(const shadow::Camera& camera) {
   }
   shadow_timer_.stop();
   pending_.shadow_timer = true;
+}
+
+// The silhouettes of the scene's fixed polygons and of the plants this layer drew as polygons
+// on the CPU's choice; the GPU sampler's polygon plants are not among them (their shadows keep
+// the depth map's edges).
+void Renderer::render_silhouettes(int layer) {
+  if (!shadow::technique(settings_.method).silhouette_map) return;
+  silhouette_pass_->render(gpu_scene_, setup_, layer, light_);
+  stages_.end("map silhouettes");
+}
+
+FramePass::ShadowLookup Renderer::map_lookup() const {
+  const shadow::Technique& technique = shadow::technique(settings_.method);
+  return {shadow_pass_.depth_texture(), setup_, shadow_pass_.size(), technique.method == shadow::Method::hybrid,
+          technique.silhouette_map ? silhouette_pass_->points() : 0u};
 }
 
 // The frame drawn without shadows leaves the depth the volumes are counted against; timed as the
@@ -516,7 +537,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camer
   std::optional<FramePass::ShadowLookup> lookup;
   if (shadows && !volumes && !reference) {
     render_shadow_map(camera);
-    lookup.emplace(FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size(), hybrid});
+    lookup.emplace(map_lookup());
   }
   pointgen::SampledFrame selection;
   if (gpu_sampler_) {
@@ -584,6 +605,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
     stages_.end("map choice");
     shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer), &plants);
     stages_.end("map polygons");
+    render_silhouettes(static_cast<int>(layer));
     if (!draws_points()) continue;
     gpu_sampler_->cap_for_map(v.view_projection(), shadow_texels(), v.paraboloid ? 0.0f : settings_.k);
     stages_.end("map choice");
@@ -594,7 +616,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
   shadow_timer_.stop();
 
   finish_timer_.start();
-  finish_frame(camera, light, FramePass::ShadowLookup{shadow_pass_.depth_texture(), setup_, shadow_pass_.size()});
+  finish_frame(camera, light, map_lookup());
   finish_timer_.stop();
   pending_ = {2, true, true, setup_.views.size()};
   return selection;

@@ -11,6 +11,7 @@
 #include "app/render/shadow_pass.hpp"
 #include "app/reference/exact_visibility.hpp"
 #include "app/render/shadow_volume_pass.hpp"
+#include "app/render/silhouette_pass.hpp"
 #include "pointgen/sampling/frustum_culling.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
 #include "shadow/aliasing.hpp"
@@ -110,6 +111,10 @@ class Renderer {
   void remember_last_frame();
   // The frame's shadow map (setup_), its plants chosen on the CPU.
   void render_shadow_map(const shadow::Camera& camera);
+  // Silhouette maps: the silhouettes of the polygons the map's layer just drew.
+  void render_silhouettes(int layer);
+  // How the frame looks the shadow map up.
+  FramePass::ShadowLookup map_lookup() const;
   // Shadow volumes in place of a map: the lit-pixel mask of this frame.
   FramePass::ShadowLookup render_shadow_volumes(const shadow::Camera& camera, const shadow::Light& light);
   // Whether no caster stands between the camera's near plane and the light, so that the volumes
@@ -170,6 +175,7 @@ class Renderer {
   std::unique_ptr<DepthPyramid> receivers_;  // over the first shadow view: the frame's receivers
   std::unique_ptr<PointSplat> shadow_points_;  // made with the first shadow map that needs it
   std::unique_ptr<ShadowVolumePass> volume_pass_;  // --method volumes, hybrid
+  std::unique_ptr<SilhouettePass> silhouette_pass_;  // the methods with silhouette maps
   std::vector<shadow::Box> mesh_boxes_;             // with volume_pass_: each mesh's bounds (camera_outside_volumes)
   std::unique_ptr<ExactVisibility> exact_;          // made when first asked for
   std::unique_ptr<gl::Texture> reference_mask_;     // --method reference: R8, frame-sized, its lit pixels

@@ -1,0 +1,34 @@
+#pragma once
+#include "app/gl/gl_objects.hpp"
+#include "app/render/gpu_scene.hpp"
+#include "shadow/light.hpp"
+#include "shadow/shadow_setup.hpp"
+
+namespace ecoview {
+
+// The silhouette map of a shadow map (Sen, Cammarano and Hanrahan 2003): a grid as fine as the
+// depth map's, shifted half a texel so that each cell's corners are four depth samples, holding
+// per cell a point where a silhouette edge of the polygon casters, as the light sees them, crosses
+// it (the one nearest the light where several do); -1 where none does. The
+// frame's lighting rebuilds the shadow's edge from these points (shaders/lighting.glsl). Point
+// splats have no edges: their shadows are the depth map's alone.
+class SilhouettePass {
+ public:
+  explicit SilhouettePass(int size);
+  // The layer of view `layer` of `setup`, as the depth map has it; a paraboloid view gets none
+  // (edges are curves in its map). `scene` with its neighbours found (GpuScene::add_adjacency).
+  void render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const shadow::Light& light);
+  GLuint points() const { return points_.name(); }  // RG16F, a position in the cell (0..1 each way)
+
+ private:
+  void allocate(int layers);
+
+  int size_;
+  int layers_ = 0;
+  gl::Texture points_{GL_TEXTURE_2D_ARRAY};
+  gl::Texture depth_{GL_TEXTURE_2D};  // the edges' depths, to keep the nearest
+  gl::Framebuffer framebuffer_;
+  gl::Program program_;
+};
+
+}  // namespace ecoview
