@@ -59,13 +59,15 @@ struct Plan {
   int flight_frames;             // frames spread over the big scene's path
   int flicker_frames;            // consecutive frames (30 per second) for flicker
   std::string big_scene;
+  std::vector<std::string> polygon_scenes;  // every method at one map size
+  int scene_frames;              // timed frames a method there, after one
 };
 
 Plan plan_for(bool quick) {
-  if (quick) return {{512, 1024}, 1, 1, 1, 1, 6, {-5.0f, 5.0f}, 2, 2, "courtyard"};
+  if (quick) return {{512, 1024}, 1, 1, 1, 1, 6, {-5.0f, 5.0f}, 2, 2, "courtyard", {"chess"}, 1};
   // The field's frames as DESIGN.md times them (20 after 3); the big scene's take seconds each.
   return {{512, 1024, 2048, 4096, 8192}, 3, 20, 1, 2, 1, {-20.0f, -8.0f, -3.0f, -1.0f, -0.25f, 0.25f, 1.0f, 3.0f, 8.0f, 20.0f},
-          6, 4, "ecosystem"};
+          6, 4, "ecosystem", {"courtyard", "chess", "street"}, 5};
 }
 
 constexpr int favourable_light = 6;       // field: 90° between light and view
@@ -117,6 +119,30 @@ class ShadowBench {
       crop(renderer, scene_name, shadow::technique(exact).name);
     }
     progress.step();
+  }
+
+  // A polygon scene at the crop size: every method for its first light and the exact ones, timed
+  // in turn, so that each technique stands beside the one it improves on (hybrid beside the
+  // volumes, a silhouette map beside its map) where polygons cast every shadow.
+  void polygon_scene(const Scene& scene, const std::string& scene_name, Progress& progress) {
+    ExactVisibility exact(scene.meshes, scene.groups);
+    const MeasuredView view{scene, exact, scene.camera, scene.lights[0]};
+    std::vector<shadow::Method> methods = view.light.type == shadow::LightType::directional ? directional_methods : point_methods;
+    for (shadow::Method m : exact_methods()) methods.push_back(m);
+    std::vector<std::unique_ptr<Renderer>> renderers;
+    std::vector<Renderer*> timed;
+    for (shadow::Method method : methods) {
+      renderers.push_back(std::make_unique<Renderer>(scene, for_scene(settings(method, crop_size), scene)));
+      timed.push_back(renderers.back().get());
+    }
+    const std::vector<FrameTiming> timings = time_frames_in_turn(timed, view.camera, view.light, view.t, 1, plan_.scene_frames);
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      BenchRun run = measure_view(*renderers[m], view, timings[m]);
+      run.params.update({{"sweep", "scenes"}, {"scene", scene_name}, {"method", shadow::technique(methods[m]).name}, {"shadow_size", crop_size}});
+      results_.runs.push_back(run);
+      crop(*renderers[m], scene_name, shadow::technique(methods[m]).name);
+      progress.step();
+    }
   }
 
   // Stability against the light direction: the field's lights from along the view (0°) through
@@ -235,6 +261,7 @@ class ShadowBench {
     std::ostringstream html;
     html << "<h2>Speed against accuracy</h2><img src=\"chart_tradeoff.png\">\n"
          << "<h2>The uniform map at each method's error</h2><img src=\"chart_equal_err.png\">\n"
+         << "<h2>The polygon scenes, every method at " << crop_size << "²</h2><img src=\"chart_scenes.png\">\n"
          << "<h2>Stability</h2><img src=\"chart_stability.png\">\n"
          << "<h2>Flythrough</h2><img src=\"chart_flythrough.png\">\n"
          << "<h2>Crops (" << crop_size << "² maps, the middle of the lower half)</h2>\n";
@@ -260,7 +287,8 @@ class ShadowBench {
 
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
   CLI::App* cmd = app.add_subcommand("bench", "Shadow methods, speed against accuracy: every method and map size "
-                                              "against the exact reference on the field and the ecosystem, the light "
+                                              "against the exact reference on the field and the ecosystem, every "
+                                              "method on the courtyard, chess and street at 1024², the light "
                                               "turned 0-180 degrees from the view, a point light crossing the camera "
                                               "plane, a flythrough; writes results.json, results.csv, charts, image "
                                               "crops and report.html");
@@ -291,11 +319,19 @@ int run_bench(const BenchOptions& o) {
   ShadowBench bench(o, plan);
   const std::size_t angles = (field.lights.size() + static_cast<std::size_t>(plan.angle_step) - 1) / static_cast<std::size_t>(plan.angle_step);
   const std::size_t methods = directional_methods.size(), point_light_methods = point_methods.size();
-  Progress progress("bench: run", 2 * (methods * plan.sizes.size() + 1) + angles * methods +
+  std::vector<Scene> polygon_scenes;
+  std::size_t polygon_scene_runs = 0;
+  for (const std::string& name : plan.polygon_scenes) {
+    polygon_scenes.push_back(load_scene_option(name, o.run.memory_budget_gib));
+    const bool directional = polygon_scenes.back().lights.at(0).type == shadow::LightType::directional;
+    polygon_scene_runs += (directional ? methods : point_light_methods) + exact_methods().size();
+  }
+  Progress progress("bench: run", 2 * (methods * plan.sizes.size() + 1) + polygon_scene_runs + angles * methods +
                                       plan.crossing.size() * point_light_methods +
                                       methods * static_cast<std::size_t>(plan.flight_frames + 1));
   bench.trade_off({field, field_exact, field.camera, field.lights[favourable_light]}, "field", true, progress);
   bench.trade_off({big, big_exact, big.camera, big.lights[0]}, plan.big_scene, false, progress);
+  for (std::size_t i = 0; i < polygon_scenes.size(); ++i) bench.polygon_scene(polygon_scenes[i], plan.polygon_scenes[i], progress);
   bench.stability(field, field_exact, progress);
   bench.crossing(field, field_exact, progress);
   bench.flythrough(big, big_exact, path, plan.big_scene, progress);

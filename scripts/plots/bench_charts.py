@@ -9,8 +9,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-MARKERS = {"uniform": "o", "psm": "s", "lispsm": "^", "cascades": "v", "dpsm": "D", "ipsm": "P", "volumes": "*",
-           "reference": "h", "auto": "X"}
+MARKERS = {"uniform": "o", "psm": "s", "lispsm": "^", "cascades": "v", "dpsm": "D", "ipsm": "P", "silhouette": "<",
+           "psm+silhouette": ">", "volumes": "*", "hybrid": "p", "reference": "h", "auto": "X"}
 
 
 def runs(results, sweep, **params):
@@ -104,6 +104,27 @@ def equal_err_chart(results, out):
     fig.savefig(f"{out}/chart_equal_err.png", dpi=100)
 
 
+def scenes_chart(results, out):
+    """Per polygon scene, each method's err and frame time at one map size, as bars."""
+    rs = runs(results, "scenes")
+    scenes = list(dict.fromkeys(r["params"]["scene"] for r in rs))
+    if not scenes:
+        return
+    fig, axes = plt.subplots(len(scenes), 2, figsize=(12, 3.2 * len(scenes)), squeeze=False)
+    for (err_ax, ms_ax), scene in zip(axes, scenes):
+        line = [r for r in rs if r["params"]["scene"] == scene]
+        names = [r["params"]["method"] for r in line]
+        for ax, values, label in ((err_ax, [100 * r["figures"]["err"] for r in line], "err (%)"),
+                                  (ms_ax, [r["figures"]["frame_ms"] for r in line], "frame_ms")):
+            bars = ax.barh(range(len(line)), values)
+            ax.bar_label(bars, fmt="%.3g", fontsize=7)
+            ax.set_yticks(range(len(line)), names, fontsize=8)
+            ax.invert_yaxis()
+            ax.set(xlabel=label, title=f"{scene} ({line[0]['params']['shadow_size']}² maps)")
+    fig.tight_layout()
+    fig.savefig(f"{out}/chart_scenes.png", dpi=100)
+
+
 def stability_chart(results, out):
     fig, (err_ax, alias_ax, cross_ax) = plt.subplots(1, 3, figsize=(16, 4.5))
     rs = runs(results, "stability")
@@ -157,6 +178,7 @@ def main():
     out = sys.argv[2]
     tradeoff_chart(results, out)
     equal_err_chart(results, out)
+    scenes_chart(results, out)
     stability_chart(results, out)
     flythrough_chart(results, out)
 
