@@ -77,6 +77,13 @@ INSTANTIATE_TEST_SUITE_P(
       return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + method;
     });
 
+// The `shadow` AOV of the scene's first view under its first light.
+Image8 rendered_visibility(const Scene& scene, shadow::Method method, int map_size) {
+  Renderer renderer(scene, {640, 480, map_size, method});
+  renderer.render(scene.camera, scene.lights[0]);
+  return renderer.frame().read_visibility();
+}
+
 // Hybrid shadows are the volumes' where the volumes are counted, and the map is certain of the
 // rest: on floating boxes their `shadow` AOVs agree on every pixel but a few, shadow edges
 // included, where the uniform map's own edges differ in hundreds.
@@ -86,11 +93,7 @@ TEST(HybridShadows, MatchTheVolumesAlongShadowEdgesWhereTheMapDoesNot) {
   for (shadow::LightType type : {shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot}) {
     const FloatingBox s = random_floating_box(rng, type);
     const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
-    auto visibility = [&](shadow::Method method) {
-      Renderer renderer(scene, {640, 480, 512, method});
-      renderer.render(scene.camera, scene.lights[0]);
-      return renderer.frame().read_visibility();
-    };
+    auto visibility = [&](shadow::Method method) { return rendered_visibility(scene, method, 512); };
     auto differing = [](const Image8& a, const Image8& b) {
       std::size_t n = 0;
       for (std::size_t i = 0; i < a.samples.size(); ++i) n += (a.samples[i] >= 128) != (b.samples[i] >= 128);
@@ -112,9 +115,7 @@ TEST(SilhouetteMaps, HalveTheMapsDisagreementWithGeometryAlongShadowEdges) {
     const FloatingBox s = random_floating_box(rng, type);
     const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
     auto disagreeing = [&](shadow::Method method) {
-      Renderer renderer(scene, {640, 480, 256, method});
-      renderer.render(scene.camera, scene.lights[0]);
-      const TruthComparison c = compare_with_truth(s, renderer.frame().read_visibility(), 0);
+      const TruthComparison c = compare_with_truth(s, rendered_visibility(scene, method, 256), 0);
       return c.lit + c.shadowed - c.lit_agreeing - c.shadowed_agreeing;
     };
     for (const auto& [filtered, silhouette] : {std::pair{shadow::Method::uniform, shadow::Method::silhouette},

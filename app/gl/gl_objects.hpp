@@ -98,6 +98,16 @@ using Program = Object<ProgramKind>;
 using Shader = Object<ShaderKind>;
 using Query = Object<QueryKind>;
 
+// Binds `framebuffer` for drawing over its whole width x height with the depth test (the nearer
+// wins) and both faces of every triangle: planes are single-sided, but seen and cast from both.
+inline void draw_depth_tested(const Framebuffer& framebuffer, int width, int height) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.name());
+  glViewport(0, 0, width, height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+}
+
 // `buffer`'s content as texels of `format`, for shaders that read it by texelFetch (a buffer texture
 // over its store). Made once a store: attaching it again at every bind slowed llvmpipe's draws.
 inline Texture buffer_texels(const Buffer& buffer, GLenum format = GL_RGBA32F) {

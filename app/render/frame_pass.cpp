@@ -103,11 +103,7 @@ void FramePass::add_chosen_surfaces(const GpuScene& scene, const GpuSampler& sam
 }
 
 void FramePass::start_surfaces(const gl::Program& program, const shadow::Camera& camera) const {
-  glBindFramebuffer(GL_FRAMEBUFFER, surfaces_.name());
-  glViewport(0, 0, width_, height_);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
+  gl::draw_depth_tested(surfaces_, width_, height_);
   glUseProgram(program.name());
   set_camera(program, camera);
 }

@@ -52,11 +52,7 @@ void ShadowPass::allocate(int layers) {
 void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const GpuScene::PlantDraws* plants) {
   if (static_cast<int>(setup.views.size()) > layers_) allocate(static_cast<int>(setup.views.size()));
   const GLuint fb = framebuffer_.name();
-  glBindFramebuffer(GL_FRAMEBUFFER, fb);
-  glViewport(0, 0, size_, size_);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);  // planes are single-sided but cast shadows from both sides
+  gl::draw_depth_tested(framebuffer_, size_, size_);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(bias_.slope, bias_.constant);
   glNamedFramebufferTextureLayer(fb, GL_DEPTH_ATTACHMENT, depth_.name(), 0, layer);

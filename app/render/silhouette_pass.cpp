@@ -22,11 +22,7 @@ void SilhouettePass::allocate(int layers) {
 void SilhouettePass::render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const shadow::Light& light) {
   if (static_cast<int>(setup.views.size()) > layers_) allocate(static_cast<int>(setup.views.size()));
   const GLuint fb = framebuffer_.name();
-  glBindFramebuffer(GL_FRAMEBUFFER, fb);
-  glViewport(0, 0, size_, size_);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
+  gl::draw_depth_tested(framebuffer_, size_, size_);
   glUseProgram(program_.name());
   gl::set_uniform(program_, "map_size", static_cast<float>(size_));
   gl::set_uniform(program_, "light", shadow::homogeneous(light));
