@@ -39,13 +39,13 @@ float cross2(vec2 u, vec2 v) { return u.x * v.y - u.y * v.x; }
 // point to its four neighbours' (their centres where they have none) cut the cell into four
 // sectors, one around each corner, and the sector that holds `position` takes its corner's test:
 // the edge between lit and shadowed is the silhouette itself, piecewise linear, not the texels'
-// staircase. The depths are compared with `offset`'s, the surface moved off along its normal as
-// the filtered lookup moves it against acne; the cell is `position`'s, which keeps the edge where
-// the silhouette puts it. Negative where the corners disagree and no edge crosses the cell (a
-// point splat's shadow): the filtered lookup answers there.
-float silhouette_test(int layer, vec3 position, vec3 offset) {
-  vec4 clip = shadow_clip(layer, position), offset_clip = shadow_clip(layer, offset);
-  if (clip.w <= 0.0 || offset_clip.w <= 0.0) return -1.0;
+// staircase. The depths are compared with `offset_clip`'s, the surface moved off along its normal
+// as the filtered lookup moves it against acne (its clip coordinates, w > 0); the cell is
+// `position`'s, which keeps the edge where the silhouette puts it. Negative where the corners
+// disagree and no edge crosses the cell (a point splat's shadow): the filtered lookup answers there.
+float silhouette_test(int layer, vec3 position, vec4 offset_clip) {
+  vec4 clip = shadow_clip(layer, position);
+  if (clip.w <= 0.0) return -1.0;
   vec3 map = vec3(clip.xy / clip.w, offset_clip.z / offset_clip.w) * 0.5 + 0.5;
   vec2 in_cells = map.xy * shadow_size - 0.5;
   vec2 cell = floor(in_cells);
@@ -85,12 +85,12 @@ float shadow_test(ivec2 pixel, vec3 position, vec3 n, float n_dot_l) {
   int layer = shadow_view(position);
   float sin_light = sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0));
   vec3 p = position + n * (1.5 * texel_world_size(layer, position) * sin_light);
-  if (SILHOUETTES) {
-    float edge = silhouette_test(layer, position, p);
-    if (edge >= 0.0) return edge;
-  }
   vec4 clip = shadow_clip(layer, p);
   if (clip.w <= 0.0) return 1.0;  // behind the map's projection centre: not covered
+  if (SILHOUETTES) {
+    float edge = silhouette_test(layer, position, clip);
+    if (edge >= 0.0) return edge;
+  }
   vec3 map = clip.xyz / clip.w * 0.5 + 0.5;
   if (any(lessThan(map.xy, vec2(0.0))) || any(greaterThan(map.xy, vec2(1.0)))) return 1.0;
   float texels_per_pixel = cell_world_size(view_projection, frame_size, position) / texel_world_size(layer, position);
