@@ -9,7 +9,8 @@
 
 // Every shadow technique, registered in one table: what the command line, the viewer, the
 // benchmarks, `auto` and the renderer know of a method they read here. Adding a method is a setup
-// function (or a renderer pass, for a mask) and one row of the table.
+// function and one row of the table; a mask is a MaskTechnique on the GL side, registered in
+// app/render/mask_technique.cpp.
 namespace shadow {
 
 enum class Method { none, uniform, psm, lispsm, cascades, dpsm, ipsm, silhouette, psm_silhouette, volumes, hybrid, reference, automatic };
@@ -18,8 +19,8 @@ enum class Method { none, uniform, psm, lispsm, cascades, dpsm, ipsm, silhouette
 enum class Lookup {
   none,  // no shadows
   map,   // a shadow map, one layer per view of its ShadowSetup: polygons and point splats cast
-  mask,  // a per-pixel mask of the frame's lit surfaces, made by the renderer (with a map's help
-         // where the technique has a setup): polygons cast
+  mask,  // a per-pixel mask of the frame's lit surfaces, made after them (with a map's help where
+         // the technique has a setup): polygons cast
 };
 
 // What a technique takes from the frame before it.

@@ -6,7 +6,6 @@
 #include "app/render/pixel_rays.hpp"
 #include "shadow/aliasing.hpp"
 #include "shadow/paraboloid_map.hpp"
-#include "shadow/volume_counting.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -18,9 +17,6 @@
 
 namespace ecoview {
 namespace {
-
-// Window-depth offset of point splats in shadow maps, against self-shadowing of point surfaces.
-constexpr float shadow_point_bias = 2e-5f;
 
 // The nearest visible depth of a frame is taken with this margin, for surfaces that come nearer
 // by the next frame.
@@ -86,7 +82,7 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       gpu_scene_(scene),
       samples_(scene, settings_.points_per_triangle, settings_.points),
       cells_(tables_, samples_.meshes()),
-      shadow_pass_(settings.shadow_size, settings.shadow_bias, settings.shadow_depth, gpu_scene_.has_surface_textures()),
+      map_(settings, gpu_scene_.has_surface_textures()),
       frame_pass_(settings.width, settings.height, settings.aliasing, gpu_scene_.has_surface_textures()),
       frame_points_({settings.width, settings.height}) {
   make_method_passes();
@@ -107,23 +103,10 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
 
 // Made with the renderer, not with the first frame, so that frame times hold no shader compilation.
 void Renderer::make_method_passes() {
-  const bool volumes = settings_.method == shadow::Method::volumes || settings_.method == shadow::Method::hybrid;
-  if (volumes && !volume_pass_) {
-    volume_pass_ = std::make_unique<ShadowVolumePass>(settings_.width, settings_.height, frame_pass_.depth_stencil_texture());
-    gpu_scene_.add_adjacency(scene_);
-    for (const pointgen::TriangleMesh& mesh : scene_.meshes) {
-      const pointgen::Bounds bounds = mesh.bounds();
-      mesh_boxes_.push_back(bounds.empty() ? shadow::Box{} : shadow::Box{bounds.min, bounds.max});
-    }
-  }
-  if (shadow::technique(settings_.method).silhouette_map && !silhouette_pass_) {
-    silhouette_pass_ = std::make_unique<SilhouettePass>(settings_.shadow_size);
-    gpu_scene_.add_adjacency(scene_);
-  }
-  if (settings_.method == shadow::Method::reference && !reference_mask_) {
-    reference_mask_ = std::make_unique<gl::Texture>(GL_TEXTURE_2D);
-    glTextureStorage2D(reference_mask_->name(), 1, GL_R8, settings_.width, settings_.height);
-  }
+  map_.use(shadow::technique(settings_.method), gpu_scene_, scene_);
+  const MaskSources sources{scene_, gpu_scene_, frame_pass_, {settings_.width, settings_.height},
+                            [this]() -> ExactVisibility& { return exact(); }};
+  mask_ = make_mask_technique(settings_.method, sources);
 }
 
 void Renderer::change(shadow::Method method, int shadow_size, float k) {
@@ -132,16 +115,14 @@ void Renderer::change(shadow::Method method, int shadow_size, float k) {
   wanted.shadow_size = shadow_size;
   wanted.k = k;
   wanted = within_limits(wanted);
-  if (wanted.shadow_size != settings_.shadow_size) {
-    shadow_pass_ = ShadowPass(wanted.shadow_size, wanted.shadow_bias, wanted.shadow_depth, gpu_scene_.has_surface_textures());
-    shadow_points_.reset();
-    silhouette_pass_.reset();
-  }
+  const bool new_map = wanted.shadow_size != settings_.shadow_size;
+  const bool new_method = wanted.method != settings_.method;
+  if (new_map) map_ = MapTechnique(wanted, gpu_scene_.has_surface_textures());
   // What the last frame left (near plane, surface, receivers) depends on the method and k: the next
   // frame starts again from one without shadows, as a fresh renderer's does.
   has_last_frame_ = false;
   settings_ = wanted;
-  make_method_passes();
+  if (new_map || new_method) make_method_passes();
 }
 
 Image<std::uint32_t> Renderer::count_points_on(const Image<float>& surface_depth) {
@@ -232,7 +213,7 @@ shadow::ShadowSetup Renderer::best_predicted_setup(const shadow::ShadowInputs& i
 // The shadow map for this frame; with points on, far instances of point meshes are splatted into
 // it. Each view chooses its own points and polygons, so that a view with one frustum keeps the
 // sampler's cap and occlusion (cascades, cube faces). Timed from the first GL draw to the last.
-void Renderer::render_shadow_map(const shadow::Camera& camera) {
+FramePass::ShadowLookup Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Light& light) {
   std::vector<pointgen::SampledFrame> selections;
   if (settings_.points) {
     const auto start = std::chrono::steady_clock::now();
@@ -250,7 +231,6 @@ void Renderer::render_shadow_map(const shadow::Camera& camera) {
       stats_.shadow_points += selections.back().point_count;
     }
     stats_.sample_ms += ms_since(start);
-    if (!shadow_points_) shadow_points_ = std::make_unique<PointSplat>(glm::ivec2(settings_.shadow_size));
   }
   shadow_timer_.start();
   for (std::size_t layer = 0; layer < setup_.views.size(); ++layer) {
@@ -259,78 +239,56 @@ void Renderer::render_shadow_map(const shadow::Camera& camera) {
     const pointgen::SampledFrame& drawn = settings_.points ? selections[layer] : polygons;
     upload_polygons(drawn);
     stats_.shadow_triangles += fixed_triangles() + drawn.triangle_count;
-    shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer));
-    stages_.end("map polygons");
-    render_silhouettes(static_cast<int>(layer));
+    map_.draw_polygons(gpu_scene_, setup_, static_cast<int>(layer), light, stages_);
     if (!settings_.points) continue;
-    shadow_points_->upload(selections[layer].points, tables_, samples_);
-    shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
-                               settings_.shadow_splat_size, shadow_point_bias, v.paraboloid_parameters());
-    stages_.end("map splats");
+    map_.points().upload(selections[layer].points, tables_, samples_);
+    map_.draw_points(v, static_cast<int>(layer), stages_);
   }
   shadow_timer_.stop();
   pending_.shadow_timer = true;
-}
-
-// The silhouettes of the scene's fixed polygons and of the plants this layer drew as polygons
-// on the CPU's choice; the GPU sampler's polygon plants are not among them (their shadows keep
-// the depth map's edges).
-void Renderer::render_silhouettes(int layer) {
-  if (!shadow::technique(settings_.method).silhouette_map) return;
-  silhouette_pass_->render(gpu_scene_, setup_, layer, light_);
-  stages_.end("map silhouettes");
+  return map_lookup();
 }
 
 FramePass::ShadowLookup Renderer::map_lookup() const {
-  const shadow::Technique& technique = shadow::technique(settings_.method);
-  return {shadow_pass_.depth_texture(), setup_, shadow_pass_.size(), technique.method == shadow::Method::hybrid,
-          technique.silhouette_map ? silhouette_pass_->points() : 0u};
+  return map_.lookup(setup_, shadow::technique(settings_.method).lookup == shadow::Lookup::mask);
 }
 
-// The frame drawn without shadows leaves the depth the volumes are counted against; timed as the
-// shadow pass.
-FramePass::ShadowLookup Renderer::render_shadow_volumes(const shadow::Camera& camera, const shadow::Light& light) {
-  const bool z_pass = camera_outside_volumes(camera, light);
-  setup_ = {{}, shadow::ViewSelection::screen_mask, z_pass ? "volumes: z-pass" : "volumes: z-fail"};
-  shadow_timer_.start();
+MaskFrame Renderer::mask_frame(const shadow::Camera& camera, const shadow::Light& light) const {
+  return {camera, aspect(), light, view_projection_, gpu_scene_, tables_, cells_, frame_pass_};
+}
+
+// The frame drawn without shadows leaves the surfaces the mask is made for; both are timed as the
+// shadow pass, by the wall clock where the mask is CPU work.
+FramePass::ShadowLookup Renderer::render_mask(const shadow::Camera& camera, const shadow::Light& light) {
+  const auto start = std::chrono::steady_clock::now();
+  if (!mask_->made_on_cpu()) shadow_timer_.start();
   draw_frame(camera, light, std::nullopt);
-  volume_pass_->render(gpu_scene_, view_projection_, light,
-                       z_pass ? ShadowVolumePass::Counting::z_pass : ShadowVolumePass::Counting::z_fail);
-  stages_.end("shadow volumes");
-  shadow_timer_.stop();
-  pending_.shadow_timer = true;
-  return {volume_pass_->light_mask(), setup_, 0};
+  const GLuint lit = mask_->render(mask_frame(camera, light));
+  stages_.end(mask_->stage());
+  if (mask_->made_on_cpu()) {
+    stats_.shadow_pass_ms = ms_since(start);
+  } else {
+    shadow_timer_.stop();
+    pending_.shadow_timer = true;
+  }
+  setup_ = {{}, shadow::ViewSelection::screen_mask, mask_->description()};
+  return mask_lookup(lit);
 }
 
 // Chan and Durand 2004: where the map's filtered test was all lit or all shadowed its answer
-// stands; the volumes decide the rest. The map is timed as the shadow pass, this with the frame
-// pass (its stage: "shadow volumes").
-FramePass::ShadowLookup Renderer::render_volumes_near_edges(const shadow::Camera& camera, const shadow::Light& light) {
-  const bool z_pass = camera_outside_volumes(camera, light);
-  setup_.description += z_pass ? "; volumes near its edges: z-pass" : "; volumes near its edges: z-fail";
-  volume_pass_->render_near_edges(gpu_scene_, view_projection_, light,
-                                  z_pass ? ShadowVolumePass::Counting::z_pass : ShadowVolumePass::Counting::z_fail,
-                                  frame_pass_.visibility_texture());
-  stages_.end("shadow volumes");
-  // The frame reads the mask; setup_ keeps the map's views for the `shadowmap` AOV and the viewer.
-  static const shadow::ShadowSetup screen_mask{{}, shadow::ViewSelection::screen_mask, "hybrid mask"};
-  return {volume_pass_->light_mask(), screen_mask, 0};
+// stands; the mask decides the rest, and the frame is lit again by it. Timed with the frame pass.
+void Renderer::shade_with_mask_near_edges(const shadow::Camera& camera, const shadow::Light& light) {
+  const GLuint lit = mask_->render(mask_frame(camera, light));
+  stages_.end(mask_->stage());
+  // setup_ keeps the map's views for the `shadowmap` AOV and the viewer.
+  setup_.description += "; " + mask_->description();
+  frame_pass_.shade(camera, light, mask_lookup(lit));
+  stages_.end("shading");
 }
 
-// Each caster's cell first (a box around its members' spheres), then the box of each member in it.
-bool Renderer::camera_outside_volumes(const shadow::Camera& camera, const shadow::Light& light) const {
-  const std::vector<shadow::Plane> hull = shadow::near_plane_light_hull(camera, aspect(), light);
-  for (std::size_t g = 0; g < tables_.size(); ++g) {
-    const shadow::Box& mesh = mesh_boxes_[tables_[g].mesh];
-    if (mesh.empty()) continue;
-    for (const pointgen::InstanceCell& cell : cells_.by_table()[g]) {
-      if (!shadow::meets(hull, {cell.min, cell.max})) continue;
-      for (std::uint32_t i : cell.members) {
-        if (shadow::meets(hull, shadow::transformed(mesh, tables_[g].transforms[i]))) return false;
-      }
-    }
-  }
-  return true;
+FramePass::ShadowLookup Renderer::mask_lookup(GLuint mask) {
+  static const shadow::ShadowSetup screen_mask{{}, shadow::ViewSelection::screen_mask, "mask"};
+  return {mask, screen_mask, 0};
 }
 
 ExactVisibility& Renderer::exact() {
@@ -340,26 +298,6 @@ ExactVisibility& Renderer::exact() {
 }
 
 Image8 Renderer::exact_visibility() { return exact().trace(camera_, light_, frame_pass_.read_depth()); }
-
-// The frame drawn without shadows gives the depth the rays start from; the reference is CPU work,
-// timed by the wall clock as the shadow pass.
-FramePass::ShadowLookup Renderer::render_reference_mask(const shadow::Camera& camera, const shadow::Light& light) {
-  setup_ = {{}, shadow::ViewSelection::screen_mask, "reference"};
-  const auto start = std::chrono::steady_clock::now();
-  draw_frame(camera, light, std::nullopt);
-  const Image8 lit = exact_visibility();
-  std::vector<std::uint8_t> bottom_up;  // GL's rows go up from the bottom
-  bottom_up.reserve(lit.samples.size());
-  for (int y = lit.height - 1; y >= 0; --y) {
-    const auto row = lit.samples.begin() + static_cast<std::ptrdiff_t>(y) * lit.width;
-    bottom_up.insert(bottom_up.end(), row, row + lit.width);
-  }
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(reference_mask_->name(), 0, 0, 0, lit.width, lit.height, GL_RED, GL_UNSIGNED_BYTE, bottom_up.data());
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  stats_.shadow_pass_ms = ms_since(start);
-  return {reference_mask_->name(), setup_, 0};
-}
 
 void Renderer::draw_frame(const shadow::Camera& camera, const shadow::Light& light,
                           const std::optional<FramePass::ShadowLookup>& lookup) {
@@ -477,7 +415,23 @@ void Renderer::remember_last_frame() {
   last_receivers_ = surface_positions(depth, PixelRays(camera_, depth.width, depth.height), 4);
 }
 
+// Where the GPU sampler chooses the plants, a map technique draws the frame's surfaces first and
+// its map from the same plants; otherwise the map (or the mask) and the frame take their plants
+// from the CPU's choice.
 void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows) {
+  begin_frame(camera, light, t);
+  const shadow::Technique& technique = shadow::technique(settings_.method);
+  const bool map = shadows && technique.has_map();
+  const std::vector<shadow::Plane> casters = map ? set_up_map(camera, light) : std::vector<shadow::Plane>{};
+  const pointgen::SampledFrame selection = gpu_sampler_ && map && technique.lookup == shadow::Lookup::map
+                                               ? draw_sampled_on_gpu(camera, light, casters)
+                                               : draw_sampled_on_cpu(camera, light, shadows);
+  stats_.points = selection.point_count;
+  stats_.triangles = fixed_triangles() + selection.triangle_count;
+  throw_on_gl_error();
+}
+
+void Renderer::begin_frame(const shadow::Camera& camera, const shadow::Light& light, double t) {
   pose(t);
   stats_ = {};
   pending_ = {};
@@ -485,19 +439,15 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   view_projection_ = camera.projection(aspect()) * camera.view();
   camera_ = camera;
   light_ = light;
-  const shadow::Technique& technique = shadow::technique(settings_.method);
-  const bool map = shadows && technique.has_map();
-  std::vector<shadow::Plane> casters;  // the focus body of the casters: planes, normals out
-  if (map) {
-    const shadow::ShadowInputs inputs = shadow_inputs(camera, light);
-    setup_ = make_shadow_setup(inputs);
-    casters = inputs.bodies.casters.face_planes();
-  }
-  pointgen::SampledFrame selection =
-      gpu_sampler_ && map && technique.lookup == shadow::Lookup::map ? draw_sampled_on_gpu(camera, light, casters)
-                                                                     : draw_sampled_on_cpu(camera, light, shadows);
-  stats_.points = selection.point_count;
-  stats_.triangles = fixed_triangles() + selection.triangle_count;
+}
+
+std::vector<shadow::Plane> Renderer::set_up_map(const shadow::Camera& camera, const shadow::Light& light) {
+  const shadow::ShadowInputs inputs = shadow_inputs(camera, light);
+  setup_ = make_shadow_setup(inputs);
+  return inputs.bodies.casters.face_planes();
+}
+
+void Renderer::throw_on_gl_error() {
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
     char code[16];
     std::snprintf(code, sizeof code, "0x%04x", error);
@@ -515,55 +465,54 @@ std::size_t Renderer::fixed_triangles() const {
 }
 
 pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camera, const shadow::Light& light, bool shadows) {
-  const bool volumes = settings_.method == shadow::Method::volumes;
-  const bool hybrid = settings_.method == shadow::Method::hybrid;
-  const bool reference = settings_.method == shadow::Method::reference;
-  // The frame's points are chosen on another thread while this one chooses the shadow map's and
-  // draws it: sampling is CPU work, and on llvmpipe the GL work is too, so the two overlap on two
-  // cores. The sampler only reads what pose() left.
-  std::future<pointgen::SampledFrame> frame_sample;
-  double frame_sample_ms = 0.0, frame_sample_cpu_ms = 0.0;
-  if (settings_.points && !gpu_sampler_) {
-    frame_sample = std::async(std::launch::async, [this, &camera, &frame_sample_ms, &frame_sample_cpu_ms] {
-      const auto start = std::chrono::steady_clock::now();
-      const double cpu_start = thread_cpu_ms();
-      pointgen::SampledFrame sampled =
-          pointgen::sample_view(sampler_view(camera, settings_, {view_projection_}), tables_, samples_.meshes(), cells_);
-      frame_sample_ms = ms_since(start);
-      frame_sample_cpu_ms = thread_cpu_ms() - cpu_start;
-      return sampled;
-    });
-  }
+  const shadow::Technique& technique = shadow::technique(settings_.method);
+  std::future<TimedSelection> chosen = choose_frame_points(camera);
   std::optional<FramePass::ShadowLookup> lookup;
-  if (shadows && !volumes && !reference) {
-    render_shadow_map(camera);
-    lookup.emplace(map_lookup());
-  }
+  if (shadows && technique.has_map()) lookup.emplace(render_shadow_map(camera, light));
+  const pointgen::SampledFrame selection = frame_plants(chosen);
+  upload_polygons(selection);
+  const bool mask = shadows && mask_;
+  if (mask && !technique.has_map()) lookup.emplace(render_mask(camera, light));
+  frame_timer_.start();
+  draw_frame(camera, light, lookup);
+  if (mask && technique.has_map()) shade_with_mask_near_edges(camera, light);
+  frame_timer_.stop();
+  pending_.frame_timers = 1;
+  pending_.gpu_choice = gpu_sampler_ != nullptr;
+  return selection;
+}
+
+// The frame's points are chosen on another thread while this one chooses the shadow map's and
+// draws it: sampling is CPU work, and on llvmpipe the GL work is too, so the two overlap on two
+// cores. The sampler only reads what pose() left.
+std::future<Renderer::TimedSelection> Renderer::choose_frame_points(const shadow::Camera& camera) const {
+  if (!settings_.points || gpu_sampler_) return {};
+  return std::async(std::launch::async, [this, camera] {
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = thread_cpu_ms();
+    TimedSelection chosen;
+    chosen.selection = pointgen::sample_view(sampler_view(camera, settings_, {view_projection_}), tables_, samples_.meshes(), cells_);
+    chosen.ms = ms_since(start);
+    chosen.cpu_ms = thread_cpu_ms() - cpu_start;
+    return chosen;
+  });
+}
+
+pointgen::SampledFrame Renderer::frame_plants(std::future<TimedSelection>& chosen) {
   pointgen::SampledFrame selection;
   if (gpu_sampler_) {
     selection.polygons.resize(tables_.size());  // the frame's plants come from gpu_sampler_
   } else if (settings_.points) {
-    selection = frame_sample.get();
-    stats_.sample_ms += frame_sample_ms;
-    stats_.host_ms += frame_sample_cpu_ms;
-    if (settings_.measure != RenderSettings::Measure::off) selection = measured(selection);
+    TimedSelection timed = chosen.get();
+    stats_.sample_ms += timed.ms;
+    stats_.host_ms += timed.cpu_ms;
+    selection = settings_.measure != RenderSettings::Measure::off ? measured(timed.selection) : std::move(timed.selection);
     frame_points_.upload(selection.points, tables_, samples_);
   } else {
-    // Shadow volumes are drawn from the frame's polygons and need the casters out of view too.
-    selection = volumes || hybrid ? polygons_in(std::nullopt) : polygons_in(pointgen::ViewFrusta({view_projection_}));
+    // A mask drawn from the frame's polygons needs the casters out of view too.
+    const bool every_caster = mask_ && mask_->casts_from_frame_polygons();
+    selection = every_caster ? polygons_in(std::nullopt) : polygons_in(pointgen::ViewFrusta({view_projection_}));
   }
-  upload_polygons(selection);
-  if (shadows && volumes) lookup.emplace(render_shadow_volumes(camera, light));
-  if (shadows && reference) lookup.emplace(render_reference_mask(camera, light));
-  frame_timer_.start();
-  draw_frame(camera, light, lookup);
-  if (shadows && hybrid) {
-    frame_pass_.shade(camera, light, render_volumes_near_edges(camera, light));
-    stages_.end("shading");
-  }
-  frame_timer_.stop();
-  pending_.frame_timers = 1;
-  pending_.gpu_choice = gpu_sampler_ != nullptr;
   return selection;
 }
 
@@ -583,8 +532,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
   // texels are coarser than the camera's pixels (the uniform map near the eye), each plant is
   // thinned to k points a texel (GpuSampler::cap_for_map), as a sampling for the map would make it
   // (uniform err 13.40 % against 12.52 % thinned; docs/benchmarks.md).
-  if (!shadow_points_) shadow_points_ = std::make_unique<PointSplat>(glm::ivec2(settings_.shadow_size));
-  shadow_points_->use(gpu_sampler_->draw_list(), samples_);
+  map_.points().use(gpu_sampler_->draw_list(), samples_);
   shadow_timer_.start();
   // Every band's polygon plants, listed on the GPU for the first map that draws them all.
   std::optional<GpuScene::PlantDraws> every_band;
@@ -603,15 +551,11 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
                                                   : every_band_draws();
     earlier.push_back(v.view_projection());
     stages_.end("map choice");
-    shadow_pass_.render(gpu_scene_, setup_, static_cast<int>(layer), &plants);
-    stages_.end("map polygons");
-    render_silhouettes(static_cast<int>(layer));
+    map_.draw_polygons(gpu_scene_, setup_, static_cast<int>(layer), light, stages_, &plants);
     if (!draws_points()) continue;
     gpu_sampler_->cap_for_map(v.view_projection(), shadow_texels(), v.paraboloid ? 0.0f : settings_.k);
     stages_.end("map choice");
-    shadow_points_->splat_onto(shadow_pass_.depth_texture(), static_cast<int>(layer), v.view_projection(),
-                               settings_.shadow_splat_size, shadow_point_bias, v.paraboloid_parameters());
-    stages_.end("map splats");
+    map_.draw_points(v, static_cast<int>(layer), stages_);
   }
   shadow_timer_.stop();
 
@@ -642,7 +586,7 @@ const FrameStats& Renderer::stats() const {
     stats_.points = chosen.frame_points;
     stats_.triangles = fixed_triangles() + chosen.frame_triangles;
     if (pending_.shadow_views > 0) {
-      stats_.shadow_points = shadow_points_->points_drawn_onto();
+      stats_.shadow_points = map_.points_drawn();
       stats_.shadow_triangles = pending_.shadow_views * fixed_triangles();
       for (std::size_t layer = 0; layer < pending_.shadow_views; ++layer) {
         stats_.shadow_triangles += layer < chosen.layer_triangles.size() ? chosen.layer_triangles[layer] : chosen.triangles;

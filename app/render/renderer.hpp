@@ -5,17 +5,18 @@
 #include "app/render/frame_pass.hpp"
 #include "app/render/gpu_sampler.hpp"
 #include "app/render/gpu_scene.hpp"
+#include "app/render/map_technique.hpp"
+#include "app/render/mask_technique.hpp"
 #include "app/render/point_samples.hpp"
 #include "app/render/point_splat.hpp"
 #include "app/render/render_settings.hpp"
 #include "app/render/shadow_pass.hpp"
 #include "app/reference/exact_visibility.hpp"
-#include "app/render/shadow_volume_pass.hpp"
-#include "app/render/silhouette_pass.hpp"
 #include "pointgen/sampling/frustum_culling.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
 #include "shadow/aliasing.hpp"
 
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -65,7 +66,7 @@ class Renderer {
   void change(shadow::Method method, int shadow_size, float k);
   const RenderSettings& settings() const { return settings_; }
   const FramePass& frame() const { return frame_pass_; }
-  const ShadowPass& shadow_map() const { return shadow_pass_; }
+  const ShadowPass& shadow_map() const { return map_.depths(); }
   // The shadow setup of the last frame drawn with shadows.
   const shadow::ShadowSetup& shadow_setup() const { return setup_; }
   // The last frame's figures; those the GPU measures or counts are read back when first asked.
@@ -86,14 +87,21 @@ class Renderer {
   float aspect() const;
   // How the frame sees its points, for the share of each pixel they cover.
   PointSplat::CoverageView coverage_view(const shadow::Camera& camera) const;
-  // What the method needs besides a shadow map: the volume pass, the reference's mask.
+  // The GL side of the method: what its map needs besides depths, its mask.
   void make_method_passes();
   // Moves the moving objects to time t.
   void pose(double t);
   // Loads the GPU instance buffers of point meshes with the instances `selection` draws as polygons.
   void upload_polygons(const pointgen::SampledFrame& selection);
-  // One frame, with or without the shadow map.
+  // One frame, with or without shadows.
   void draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows);
+  // The frame's time, camera and light; its figures start from nothing.
+  void begin_frame(const shadow::Camera& camera, const shadow::Light& light, double t);
+  // The map's setup for this frame (setup_); returns the focus body of its casters (planes, normals
+  // out).
+  std::vector<shadow::Plane> set_up_map(const shadow::Camera& camera, const shadow::Light& light);
+  // Throws RuntimeFailure where GL reports an error (an allocation the driver refused).
+  static void throw_on_gl_error();
   // What the frame's shadow techniques set up from: the focus bodies, clipped once.
   shadow::ShadowInputs shadow_inputs(const shadow::Camera& camera, const shadow::Light& light) const;
   // The map of the method, or for `auto` the best predicted one.
@@ -109,26 +117,30 @@ class Renderer {
   // Keeps what the next frame needs of this one: its nearest depth (PSM), its camera (auto predicts
   // from its surfaces, which the frame pass keeps) and its receivers (culls_casters).
   void remember_last_frame();
-  // The frame's shadow map (setup_), its plants chosen on the CPU.
-  void render_shadow_map(const shadow::Camera& camera);
-  // Silhouette maps: the silhouettes of the polygons the map's layer just drew.
-  void render_silhouettes(int layer);
-  // How the frame looks the shadow map up.
+  // The frame's shadow map (setup_), its plants chosen on the CPU; returns how the frame looks it
+  // up.
+  FramePass::ShadowLookup render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
   FramePass::ShadowLookup map_lookup() const;
-  // Shadow volumes in place of a map: the lit-pixel mask of this frame.
-  FramePass::ShadowLookup render_shadow_volumes(const shadow::Camera& camera, const shadow::Light& light);
-  // Whether no caster stands between the camera's near plane and the light, so that the volumes
-  // may be counted z-pass (shadow/volume_counting.hpp).
-  bool camera_outside_volumes(const shadow::Camera& camera, const shadow::Light& light) const;
-  // --method hybrid: the frame just lit by the map, then the volumes near its shadows' edges; the
-  // lit-pixel mask to light it again with.
-  FramePass::ShadowLookup render_volumes_near_edges(const shadow::Camera& camera, const shadow::Light& light);
-  // The exact reference in place of a map: the mask from ExactVisibility.
-  FramePass::ShadowLookup render_reference_mask(const shadow::Camera& camera, const shadow::Light& light);
+  MaskFrame mask_frame(const shadow::Camera& camera, const shadow::Light& light) const;
+  // A mask in place of a map: the frame drawn without shadows, then the mask made for it.
+  FramePass::ShadowLookup render_mask(const shadow::Camera& camera, const shadow::Light& light);
+  // A mask that refines a map (`hybrid`): made for the frame the map lit, which it lights again.
+  void shade_with_mask_near_edges(const shadow::Camera& camera, const shadow::Light& light);
+  static FramePass::ShadowLookup mask_lookup(GLuint mask);
   ExactVisibility& exact();
   // A frame whose plants the CPU's view sampler chooses, for the frame and for each shadow view;
   // or, with the GPU sampler, one without a shadow map. Returns what the frame drew.
   pointgen::SampledFrame draw_sampled_on_cpu(const shadow::Camera& camera, const shadow::Light& light, bool shadows);
+  // The CPU sampler's choice for the frame, and its wall-clock and CPU time.
+  struct TimedSelection {
+    pointgen::SampledFrame selection;
+    double ms = 0.0, cpu_ms = 0.0;
+  };
+  // The CPU sampler's choice of the frame's points on another thread; none without it.
+  std::future<TimedSelection> choose_frame_points(const shadow::Camera& camera) const;
+  // The plants the frame draws: those `chosen`, or with points off the polygons in view (and out of
+  // view where a mask's casters are the frame's polygons), or with the GPU sampler none from here.
+  pointgen::SampledFrame frame_plants(std::future<TimedSelection>& chosen);
   // A frame with a shadow map whose plants the GPU sampler chooses once, for the camera: the frame's
   // surfaces first, then the map from the same plants (and the casters out of view), then the
   // frame's lighting.
@@ -167,18 +179,14 @@ class Renderer {
   GpuScene gpu_scene_;
   PointSamples samples_;
   pointgen::InstanceCells cells_;  // of tables_
-  ShadowPass shadow_pass_;
+  MapTechnique map_;
   FramePass frame_pass_;
   PointSplat frame_points_;
   std::unique_ptr<GpuSampler> gpu_sampler_;  // --sampler gpu
   std::unique_ptr<DepthPyramid> occluders_;  // over the frame, for gpu_sampler_
   std::unique_ptr<DepthPyramid> receivers_;  // over the first shadow view: the frame's receivers
-  std::unique_ptr<PointSplat> shadow_points_;  // made with the first shadow map that needs it
-  std::unique_ptr<ShadowVolumePass> volume_pass_;  // --method volumes, hybrid
-  std::unique_ptr<SilhouettePass> silhouette_pass_;  // the methods with silhouette maps
-  std::vector<shadow::Box> mesh_boxes_;             // with volume_pass_: each mesh's bounds (camera_outside_volumes)
+  std::unique_ptr<MaskTechnique> mask_;             // the method's, where its lookup is a mask
   std::unique_ptr<ExactVisibility> exact_;          // made when first asked for
-  std::unique_ptr<gl::Texture> reference_mask_;     // --method reference: R8, frame-sized, its lit pixels
   shadow::Camera camera_;                            // of the last frame
   shadow::Camera last_camera_;  // of the frame before this one, whose surfaces auto predicts from
   shadow::Light light_;                              // of the last frame

@@ -1,0 +1,50 @@
+#include "app/render/map_technique.hpp"
+
+namespace ecoview {
+namespace {
+
+// Window-depth offset of point splats in shadow maps, against self-shadowing of point surfaces.
+constexpr float shadow_point_bias = 2e-5f;
+
+}  // namespace
+
+MapTechnique::MapTechnique(const RenderSettings& settings, bool surface_textures)
+    : splat_size_(settings.shadow_splat_size),
+      depths_(settings.shadow_size, settings.shadow_bias, settings.shadow_depth, surface_textures) {}
+
+void MapTechnique::use(const shadow::Technique& technique, GpuScene& polygons, const Scene& scene) {
+  silhouette_map_ = technique.silhouette_map;
+  if (silhouette_map_ && !silhouettes_) {
+    silhouettes_ = std::make_unique<SilhouettePass>(depths_.size());
+    polygons.add_adjacency(scene);
+  }
+}
+
+// The silhouettes are those of the scene's fixed polygons and of the plants the layer drew as
+// polygons on the CPU's choice; the GPU sampler's polygon plants are not among them (their shadows
+// keep the depth map's edges).
+void MapTechnique::draw_polygons(const GpuScene& polygons, const shadow::ShadowSetup& setup, int layer,
+                                 const shadow::Light& light, gl::GpuStages& stages, const GpuScene::PlantDraws* plants) {
+  depths_.render(polygons, setup, layer, plants);
+  stages.end("map polygons");
+  if (!silhouette_map_) return;
+  silhouettes_->render(polygons, setup, layer, light);
+  stages.end("map silhouettes");
+}
+
+PointSplat& MapTechnique::points() {
+  if (!points_) points_ = std::make_unique<PointSplat>(glm::ivec2(depths_.size()));
+  return *points_;
+}
+
+void MapTechnique::draw_points(const shadow::ShadowView& view, int layer, gl::GpuStages& stages) {
+  points().splat_onto(depths_.depth_texture(), layer, view.view_projection(), splat_size_, shadow_point_bias,
+                      view.paraboloid_parameters());
+  stages.end("map splats");
+}
+
+FramePass::ShadowLookup MapTechnique::lookup(const shadow::ShadowSetup& setup, bool marks_edges) const {
+  return {depths_.depth_texture(), setup, depths_.size(), marks_edges, silhouette_map_ ? silhouettes_->points() : 0u};
+}
+
+}  // namespace ecoview
