@@ -70,6 +70,17 @@ float silhouette_test(int layer, vec3 position, vec4 offset_clip) {
   return f.y < 0.5 ? (f.x < 0.5 ? lit.w : lit.z) : (f.x < 0.5 ? lit.x : lit.y);
 }
 
+// The mean of 3x3 filtered taps `step` apart around `map` in `layer`.
+float filtered_test(vec3 map, int layer, float step) {
+  float sum = 0.0;
+  for (int y = -1; y <= 1; ++y) {
+    for (int x = -1; x <= 1; ++x) {
+      sum += texture(shadow_map, vec4(map.xy + vec2(x, y) * step, layer, map.z));
+    }
+  }
+  return sum / 9.0;
+}
+
 // Fraction of the light reaching `position` past the occluders in the map: 3x3 taps of
 // hardware-filtered comparisons (bilinear PCF), spread over the pixel's footprint in the map: one
 // tap's 2x2 texels where a texel is as large as a pixel or larger, up to 4x4 texels where texels
@@ -80,8 +91,6 @@ float silhouette_test(int layer, vec3 position, vec4 offset_clip) {
 // centre tap.
 float shadow_test(ivec2 pixel, vec3 position, vec3 n, float n_dot_l) {
   if (shadow_selection == SCREEN_MASK) return texelFetch(light_mask, pixel, 0).r;
-  // Hybrid shadows: where the light grazes the surface, neither lit nor shadowed.
-  if (MARK_EDGES && n_dot_l < grazing_n_dot_l) return 0.5;
   int layer = shadow_view(position);
   float sin_light = sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0));
   vec3 p = position + n * (1.5 * texel_world_size(layer, position) * sin_light);
@@ -95,16 +104,16 @@ float shadow_test(ivec2 pixel, vec3 position, vec3 n, float n_dot_l) {
   if (any(lessThan(map.xy, vec2(0.0))) || any(greaterThan(map.xy, vec2(1.0)))) return 1.0;
   float texels_per_pixel = cell_world_size(view_projection, frame_size, position) / texel_world_size(layer, position);
   float step = clamp(0.5 * (texels_per_pixel - 1.0), 0.0, 1.0) / shadow_size;
-  // Hybrid shadows: taps a texel apart, so that an edge the normal offset moved (up to 1.5 texels)
-  // still falls among them and the test reads neither lit nor shadowed.
-  if (MARK_EDGES) step = 1.0 / shadow_size;
-  float sum = 0.0;
-  for (int y = -1; y <= 1; ++y) {
-    for (int x = -1; x <= 1; ++x) {
-      sum += texture(shadow_map, vec4(map.xy + vec2(x, y) * step, layer, map.z));
-    }
+  if (MARK_EDGES) {
+    // Hybrid shadows. The point splats, in layers of their own after the views', cast no volumes:
+    // their shadows are the map's, lit or not. Then the polygons': where the light grazes the
+    // surface, or taps a texel apart disagree (so that an edge the normal offset moved, up to 1.5
+    // texels, still falls among them), neither lit nor shadowed, for the volumes to decide.
+    if (filtered_test(map, shadow_view_count + layer, step) < 0.5) return 0.0;
+    if (n_dot_l < grazing_n_dot_l) return 0.5;
+    step = 1.0 / shadow_size;
   }
-  return sum / 9.0;
+  return filtered_test(map, layer, step);
 }
 
 vec3 linear_to_srgb(vec3 c) {

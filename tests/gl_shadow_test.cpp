@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <vector>
 
 namespace ecoview::test {
@@ -110,6 +111,34 @@ TEST(HybridShadows, MatchTheVolumesAlongShadowEdgesWhereTheMapDoesNot) {
     EXPECT_LE(differing(visibility(shadow::Method::hybrid), volumes), 20u) << light_name(type);
     EXPECT_GE(differing(visibility(shadow::Method::uniform), volumes), 100u) << light_name(type);
   }
+}
+
+// Point splats cast no volumes, so the hybrid's map keeps them in layers of their own and decides
+// their shadows alone; the volumes decide only near the polygons' edges. Under a grove drawn as
+// points, the hybrid errs against the ray-traced reference (plants as meshes) about as the uniform
+// map it starts from does: where the points' shadow edges went to the volumes, they were lit.
+TEST(HybridShadows, LeaveThePointCastersShadowsToTheMap) {
+  const auto context = create_headless_context("egl");
+  std::ostringstream json;
+  json << R"({"camera": {"position": [0, 12, 0], "target": [0, 0, -60], "fov_y_deg": 50, "near": 0.5, "far": 400},
+      "lights": [{"type": "directional", "direction": [0.5, -0.6, -0.4]}],
+      "objects": [{"type": "plane", "center": [0, 0, -100], "size": [300, 300]},
+                  {"type": "plant", "species": "beech", "positions": [)";
+  for (int i = 0; i < 24; ++i) json << (i ? ", " : "") << "[" << (i % 6) * 16 - 40 << ", 0, " << -40 - (i / 6) * 20 << "]";
+  json << "]}]}";
+  const Scene scene = load_scene({"grove.json", json.str(), [](const std::string&) { return std::nullopt; }});
+  auto wrong_share = [&](shadow::Method method) {
+    Renderer renderer(scene, {640, 360, 1024, method});
+    renderer.render(scene.camera, scene.lights[0]);
+    const Image8 seen = renderer.frame().read_visibility(), exact = renderer.exact_visibility();
+    std::size_t wrong = 0;
+    for (std::size_t i = 0; i < seen.samples.size(); ++i) wrong += (seen.samples[i] >= 128) != (exact.samples[i] >= 128);
+    return static_cast<double>(wrong) / static_cast<double>(seen.samples.size());
+  };
+  const double uniform = wrong_share(shadow::Method::uniform), hybrid = wrong_share(shadow::Method::hybrid);
+  std::cout << "wrong pixels: uniform " << 100.0 * uniform << " %, hybrid " << 100.0 * hybrid << " %\n";
+  EXPECT_GE(uniform, 0.005);  // the grove's shadows are in view, and a map errs along them
+  EXPECT_LE(hybrid, 1.1 * uniform);
 }
 
 // A silhouette map moves a shadow's edges from the texels' staircase onto the casters' silhouette:

@@ -14,6 +14,7 @@ MapTechnique::MapTechnique(const RenderSettings& settings, bool surface_textures
 
 void MapTechnique::use(const shadow::Technique& technique, GpuScene& polygons, const Scene& scene) {
   silhouette_map_ = technique.silhouette_map;
+  points_apart_ = technique.lookup == shadow::Lookup::mask;
   if (silhouette_map_ && !silhouettes_) {
     silhouettes_ = std::make_unique<SilhouettePass>(depths_.size());
     polygons.add_adjacency(scene);
@@ -25,7 +26,10 @@ void MapTechnique::use(const shadow::Technique& technique, GpuScene& polygons, c
 // keep the depth map's edges).
 void MapTechnique::draw_polygons(const GpuScene& polygons, const shadow::ShadowSetup& setup, int layer,
                                  const shadow::Light& light, gl::GpuStages& stages, const GpuScene::PlantDraws* plants) {
+  const int views = static_cast<int>(setup.views.size());
+  if (points_apart_) depths_.reserve_layers(2 * views);
   depths_.render(polygons, setup, layer, plants);
+  if (points_apart_) depths_.clear_layer(views + layer);
   stages.end("map polygons");
   if (!silhouette_map_) return;
   silhouettes_->render(polygons, setup, layer, light);
@@ -37,8 +41,10 @@ PointSplat& MapTechnique::points() {
   return *points_;
 }
 
-void MapTechnique::draw_points(const shadow::ShadowView& view, int layer, gl::GpuStages& stages) {
-  points().splat_onto(depths_.depth_texture(), layer, view.view_projection(), splat_size_, shadow_point_bias,
+void MapTechnique::draw_points(const shadow::ShadowSetup& setup, int layer, gl::GpuStages& stages) {
+  const shadow::ShadowView& view = setup.views[static_cast<std::size_t>(layer)];
+  const int target = points_apart_ ? static_cast<int>(setup.views.size()) + layer : layer;
+  points().splat_onto(depths_.depth_texture(), target, view.view_projection(), splat_size_, shadow_point_bias,
                       view.paraboloid_parameters());
   stages.end("map splats");
 }

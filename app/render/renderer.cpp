@@ -242,7 +242,7 @@ FramePass::ShadowLookup Renderer::render_shadow_map(const shadow::Camera& camera
     map_.draw_polygons(gpu_scene_, setup_, static_cast<int>(layer), light, stages_);
     if (!settings_.points) continue;
     map_.points().upload(selections[layer].points, tables_, samples_);
-    map_.draw_points(v, static_cast<int>(layer), stages_);
+    map_.draw_points(setup_, static_cast<int>(layer), stages_);
   }
   shadow_timer_.stop();
   pending_.shadow_timer = true;
@@ -555,7 +555,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
     if (!draws_points()) continue;
     gpu_sampler_->cap_for_map(v.view_projection(), shadow_texels(), v.paraboloid ? 0.0f : settings_.k);
     stages_.end("map choice");
-    map_.draw_points(v, static_cast<int>(layer), stages_);
+    map_.draw_points(setup_, static_cast<int>(layer), stages_);
   }
   shadow_timer_.stop();
 

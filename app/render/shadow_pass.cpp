@@ -49,15 +49,23 @@ void ShadowPass::allocate(int layers) {
   glNamedFramebufferReadBuffer(framebuffer_.name(), GL_NONE);
 }
 
-void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const GpuScene::PlantDraws* plants) {
-  if (static_cast<int>(setup.views.size()) > layers_) allocate(static_cast<int>(setup.views.size()));
+void ShadowPass::reserve_layers(int layers) {
+  if (layers > layers_) allocate(layers);
+}
+
+void ShadowPass::clear_layer(int layer) {
   const GLuint fb = framebuffer_.name();
-  gl::draw_depth_tested(framebuffer_, size_, size_);
-  glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(bias_.slope, bias_.constant);
   glNamedFramebufferTextureLayer(fb, GL_DEPTH_ATTACHMENT, depth_.name(), 0, layer);
   const float far_depth = 1.0f;
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
+}
+
+void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const GpuScene::PlantDraws* plants) {
+  reserve_layers(static_cast<int>(setup.views.size()));
+  gl::draw_depth_tested(framebuffer_, size_, size_);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(bias_.slope, bias_.constant);
+  clear_layer(layer);
   const shadow::ShadowView& view = setup.views[static_cast<std::size_t>(layer)];
   const gl::Program& scene_program = view.paraboloid ? paraboloid_program_ : program_;
   const gl::Program& plant_program = view.paraboloid ? plant_paraboloid_program_ : plant_program_;

@@ -18,6 +18,11 @@ class ShadowPass {
   // Draws one view of the setup into its layer.
   // With `plants`, also those polygon plants of a GPU sampler.
   void render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const GpuScene::PlantDraws* plants = nullptr);
+  // Makes room for `layers` layers (the views' and others after them) before any is drawn: a
+  // larger texture drops what the layers held.
+  void reserve_layers(int layers);
+  // Sets a layer to depth 1 (nothing drawn), for casters drawn there without polygons.
+  void clear_layer(int layer);
   GLuint depth_texture() const { return depth_.name(); }
   GLenum depth_format() const { return format_; }  // the texture's internal format
   // One layer's depths, window depth 0 (near) to 1 (far), rows from the top.
