@@ -3,6 +3,7 @@
 #include "app/bench/density_figures.hpp"
 #include "app/gl/context.hpp"
 #include "depth_coverage.hpp"
+#include "test_support.hpp"
 #include "app/render/renderer.hpp"
 #include "app/scene/scene_file.hpp"
 
@@ -22,11 +23,7 @@ std::string grove(int nearest = 40, const std::string& species = "beech") {
   std::ostringstream s;
   s << R"({"camera": {"position": [0, 8, 0], "target": [0, 6, -60], "fov_y_deg": 40, "near": 0.5, "far": 400},
           "lights": [{"type": "directional", "direction": [0.4, -0.8, -0.3]}],
-          "objects": [{"type": "plant", "species": ")" << species << R"(", "positions": [)";
-  for (int i = 0; i < 40; ++i) {
-    s << (i ? ", " : "") << "[" << (i % 8) * 14 - 49 << ", 0, " << -nearest - (i / 8) * 20 << "]";
-  }
-  s << "]}]}";
+          "objects": [)" << test::plant_grid_json(species, 40, 8, -49, 14, static_cast<float>(-nearest), -20) << "]}";
   return s.str();
 }
 

@@ -2,6 +2,7 @@
 // the same counts, the same choice of points or polygons, and a draw list a point splat can read.
 #include "app/gl/context.hpp"
 #include "depth_coverage.hpp"
+#include "test_support.hpp"
 #include "app/render/depth_pyramid.hpp"
 #include "app/render/drawn_commands.hpp"
 #include "app/render/gpu_sampler.hpp"
@@ -604,10 +605,8 @@ TEST_F(GpuSampling, ACoarseMapTakesOfEachPlantKPointsATexel) {
   std::ostringstream json;
   json << R"({"camera": {"position": [0, 1.5, 0], "target": [0, 0, -20], "fov_y_deg": 40, "near": 0.5, "far": 200},
       "lights": [{"type": "directional", "direction": [0.3, -1, -0.2]}],
-      "objects": [{"type": "plane", "center": [0, 0, -20], "size": [120, 120]},
-                  {"type": "plant", "species": "fern", "positions": [)";
-  for (int i = 0; i < 40; ++i) json << (i ? ", " : "") << "[" << (i % 8) * 3 - 10 << ", 0, " << -30 - (i / 8) * 6 << "]";
-  json << "]}]}";
+      "objects": [{"type": "plane", "center": [0, 0, -20], "size": [120, 120]}, )"
+       << test::plant_grid_json("fern", 40, 8, -10, 3, -30, -6) << "]}";
   const Scene ferns = load_scene({"ferns.json", json.str(), [](const std::string&) { return std::nullopt; }});
   settings.method = shadow::Method::uniform;
   settings.shadow_size = 128;

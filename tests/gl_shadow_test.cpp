@@ -5,6 +5,7 @@
 #include "app/render/renderer.hpp"
 #include "app/scene/scene_file.hpp"
 #include "floating_box.hpp"
+#include "test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -122,10 +123,8 @@ TEST(HybridShadows, LeaveThePointCastersShadowsToTheMap) {
   std::ostringstream json;
   json << R"({"camera": {"position": [0, 12, 0], "target": [0, 0, -60], "fov_y_deg": 50, "near": 0.5, "far": 400},
       "lights": [{"type": "directional", "direction": [0.5, -0.6, -0.4]}],
-      "objects": [{"type": "plane", "center": [0, 0, -100], "size": [300, 300]},
-                  {"type": "plant", "species": "beech", "positions": [)";
-  for (int i = 0; i < 24; ++i) json << (i ? ", " : "") << "[" << (i % 6) * 16 - 40 << ", 0, " << -40 - (i / 6) * 20 << "]";
-  json << "]}]}";
+      "objects": [{"type": "plane", "center": [0, 0, -100], "size": [300, 300]}, )"
+       << plant_grid_json("beech", 24, 6, -40, 16, -40, -20) << "]}";
   const Scene scene = load_scene({"grove.json", json.str(), [](const std::string&) { return std::nullopt; }});
   auto wrong_share = [&](shadow::Method method) {
     Renderer renderer(scene, {640, 360, 1024, method});

@@ -65,6 +65,16 @@ CommandResult run_shell(const std::string& script) {
   return result;
 }
 
+std::string plant_grid_json(const std::string& species, int count, int per_row, float x0, float dx, float z0, float dz) {
+  std::ostringstream s;
+  s << R"({"type": "plant", "species": ")" << species << R"(", "positions": [)";
+  for (int i = 0; i < count; ++i) {
+    s << (i ? ", " : "") << "[" << x0 + static_cast<float>(i % per_row) * dx << ", 0, " << z0 + static_cast<float>(i / per_row) * dz << "]";
+  }
+  s << "]}";
+  return s.str();
+}
+
 std::filesystem::path source_dir() { return ECOVIEW_SOURCE_DIR; }
 std::filesystem::path shared_testdata_dir() { return source_dir().parent_path() / "shared" / "testdata"; }
 

@@ -38,6 +38,10 @@ CommandResult run_shell(const std::string& script);
 // `s` quoted for /bin/sh.
 std::string shell_quote(const std::string& s);
 
+// A scene file's plant object: `count` plants of `species` on the ground in rows of `per_row`,
+// from (x0, z0), `dx` apart along x and `dz` from row to row.
+std::string plant_grid_json(const std::string& species, int count, int per_row, float x0, float dx, float z0, float dz);
+
 // The repository's root folder, and the shared test data beside it (which a user's clone lacks).
 std::filesystem::path source_dir();
 std::filesystem::path shared_testdata_dir();
