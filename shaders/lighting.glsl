@@ -105,11 +105,11 @@ float shadow_test(ivec2 pixel, vec3 position, vec3 n, float n_dot_l) {
   float texels_per_pixel = cell_world_size(view_projection, frame_size, position) / texel_world_size(layer, position);
   float step = clamp(0.5 * (texels_per_pixel - 1.0), 0.0, 1.0) / shadow_size;
   if (MARK_EDGES) {
-    // Hybrid shadows. The point splats, in layers of their own after the views', cast no volumes:
-    // their shadows are the map's, lit or not. Then the polygons': where the light grazes the
+    // Hybrid shadows. The point splats, in layers of their own after the views' (POINT_LAYERS),
+    // cast no volumes: their shadows are the map's, lit or not. Then the polygons': where the light grazes the
     // surface, or taps a texel apart disagree (so that an edge the normal offset moved, up to 1.5
     // texels, still falls among them), neither lit nor shadowed, for the volumes to decide.
-    if (filtered_test(map, shadow_view_count + layer, step) < 0.5) return 0.0;
+    if (POINT_LAYERS && filtered_test(map, shadow_view_count + layer, step) < 0.5) return 0.0;
     if (n_dot_l < grazing_n_dot_l) return 0.5;
     step = 1.0 / shadow_size;
   }

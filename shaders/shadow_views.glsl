@@ -11,8 +11,8 @@ uniform vec3 camera_position;
 vec3 direction_to_light(vec3 p) { return light_type == DIRECTIONAL ? -light_direction : normalize(light_position - p); }
 
 // What the frame's shadows need is fixed when the program is built (FramePass::ShadeVariant,
-// from the defines SHADOWS, SHADOW_SELECTION, PARABOLOID_VIEWS, ALIASING, MARK_EDGES and
-// SILHOUETTES): llvmpipe runs both sides of a branch, so code no pixel takes would cost every pixel.
+// from the defines SHADOWS, SHADOW_SELECTION, PARABOLOID_VIEWS, ALIASING, MARK_EDGES,
+// POINT_LAYERS and SILHOUETTES): llvmpipe runs both sides of a branch, so code no pixel takes would cost every pixel.
 const bool shadows_enabled = SHADOWS;
 // The views of the shadow setup (shadow::ShadowSetup), one map layer each, and how a point picks
 // its view: one map, cube faces by the major axis of (point - light), the first cascade that

@@ -1,5 +1,7 @@
 #include "floating_box.hpp"
 
+#include "app/scene/scene_file.hpp"
+
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
@@ -82,6 +84,10 @@ std::string FloatingBox::scene_json() const {
     << 2 * plane_half_size << "]},\n  " << R"({"type": "box", "min": )" << vec(box_min) << R"(, "max": )"
     << vec(box_max) << "}]}\n";
   return s.str();
+}
+
+Scene FloatingBox::scene() const {
+  return load_scene({"floating_box.json", scene_json(), [](const std::string&) { return std::nullopt; }});
 }
 
 FloatingBox random_floating_box(pointgen::Random& rng, shadow::LightType type) {

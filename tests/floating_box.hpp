@@ -1,5 +1,6 @@
 #pragma once
 #include "app/render/image.hpp"
+#include "app/scene/scene.hpp"
 #include "pointgen/random.hpp"
 #include "shadow/camera.hpp"
 #include "shadow/light.hpp"
@@ -17,6 +18,8 @@ struct FloatingBox {
   shadow::Camera camera;
 
   std::string scene_json() const;
+  // That scene, as a scene file named floating_box.json loads it.
+  Scene scene() const;
 };
 
 // A random configuration whose shadow falls on the plane in view.

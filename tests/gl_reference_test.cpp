@@ -19,7 +19,7 @@ TEST_P(ReferenceOnFloatingBoxes, MatchesGeometryAwayFromEdges) {
   pointgen::Random rng(70 + static_cast<int>(GetParam()));
   for (int i = 0; i < 4; ++i) {
     const FloatingBox s = random_floating_box(rng, GetParam());
-    const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
+    const Scene scene = s.scene();
     Renderer renderer(scene, {640, 480, 1024, shadow::Method::none});
     renderer.render(scene.camera, scene.lights[0]);
     const TruthComparison c = compare_with_truth(s, renderer.exact_visibility(), 2);
@@ -52,7 +52,7 @@ TEST(ReferenceAgainstVolumes, AgreesOnFloatingBoxesUnderEveryLight) {
   for (const shadow::LightType type : {shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot}) {
     for (int i = 0; i < 3; ++i) {
       const FloatingBox s = random_floating_box(rng, type);
-      const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
+      const Scene scene = s.scene();
       Renderer renderer(scene, {640, 480, 1024, shadow::Method::volumes});
       renderer.render(scene.camera, scene.lights[0]);
       const double a = agreement(renderer.frame().read_visibility(), renderer.exact_visibility(), renderer.frame().read_depth());

@@ -53,7 +53,7 @@ TEST_P(FloatingBoxShadow, ShadowAovMatchesGeometryAwayFromEdges) {
   const int cases = env_int("ECOVIEW_TRUTH_CASES", 3);
   for (int i = 0; i < cases; ++i) {
     const FloatingBox s = random_floating_box(rng, type);
-    const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
+    const Scene scene = s.scene();
     Renderer renderer(scene, {640, 480, 2048, method});
     renderer.render(scene.camera, scene.lights[0]);
     const TruthComparison c = compare_with_truth(s, renderer.frame().read_visibility(), 2);
@@ -86,6 +86,13 @@ INSTANTIATE_TEST_SUITE_P(
       return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + method;
     });
 
+// Pixels whose binary shadow state (visibility < 0.5) differs between two `shadow` AOVs.
+std::size_t binary_differences(const Image8& a, const Image8& b) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.samples.size(); ++i) n += (a.samples[i] >= 128) != (b.samples[i] >= 128);
+  return n;
+}
+
 // The `shadow` AOV of the scene's first view under its first light.
 Image8 rendered_visibility(const Scene& scene, shadow::Method method, int map_size) {
   Renderer renderer(scene, {640, 480, map_size, method});
@@ -101,16 +108,11 @@ TEST(HybridShadows, MatchTheVolumesAlongShadowEdgesWhereTheMapDoesNot) {
   pointgen::Random rng(5);
   for (shadow::LightType type : {shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot}) {
     const FloatingBox s = random_floating_box(rng, type);
-    const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
+    const Scene scene = s.scene();
     auto visibility = [&](shadow::Method method) { return rendered_visibility(scene, method, 512); };
-    auto differing = [](const Image8& a, const Image8& b) {
-      std::size_t n = 0;
-      for (std::size_t i = 0; i < a.samples.size(); ++i) n += (a.samples[i] >= 128) != (b.samples[i] >= 128);
-      return n;
-    };
     const Image8 volumes = visibility(shadow::Method::volumes);
-    EXPECT_LE(differing(visibility(shadow::Method::hybrid), volumes), 20u) << light_name(type);
-    EXPECT_GE(differing(visibility(shadow::Method::uniform), volumes), 100u) << light_name(type);
+    EXPECT_LE(binary_differences(visibility(shadow::Method::hybrid), volumes), 20u) << light_name(type);
+    EXPECT_GE(binary_differences(visibility(shadow::Method::uniform), volumes), 100u) << light_name(type);
   }
 }
 
@@ -129,10 +131,8 @@ TEST(HybridShadows, LeaveThePointCastersShadowsToTheMap) {
   auto wrong_share = [&](shadow::Method method) {
     Renderer renderer(scene, {640, 360, 1024, method});
     renderer.render(scene.camera, scene.lights[0]);
-    const Image8 seen = renderer.frame().read_visibility(), exact = renderer.exact_visibility();
-    std::size_t wrong = 0;
-    for (std::size_t i = 0; i < seen.samples.size(); ++i) wrong += (seen.samples[i] >= 128) != (exact.samples[i] >= 128);
-    return static_cast<double>(wrong) / static_cast<double>(seen.samples.size());
+    const Image8 seen = renderer.frame().read_visibility();
+    return static_cast<double>(binary_differences(seen, renderer.exact_visibility())) / static_cast<double>(seen.samples.size());
   };
   const double uniform = wrong_share(shadow::Method::uniform), hybrid = wrong_share(shadow::Method::hybrid);
   std::cout << "wrong pixels: uniform " << 100.0 * uniform << " %, hybrid " << 100.0 * hybrid << " %\n";
@@ -148,7 +148,7 @@ TEST(SilhouetteMaps, HalveTheMapsDisagreementWithGeometryAlongShadowEdges) {
   pointgen::Random rng(9);
   for (shadow::LightType type : {shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot}) {
     const FloatingBox s = random_floating_box(rng, type);
-    const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
+    const Scene scene = s.scene();
     auto disagreeing = [&](shadow::Method method) {
       const TruthComparison c = compare_with_truth(s, rendered_visibility(scene, method, 256), 0);
       return c.lit + c.shadowed - c.lit_agreeing - c.shadowed_agreeing;
@@ -180,7 +180,7 @@ TEST(ParaboloidSeam, AShadowInTheBackParaboloidMatchesGeometry) {
   s.camera.fov_y_deg = 60.0f;
   s.camera.near = 0.1f;
   s.camera.far = 100.0f;
-  const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
+  const Scene scene = s.scene();
   Renderer renderer(scene, {640, 480, 2048, shadow::Method::ipsm});
   renderer.render(scene.camera, scene.lights[0]);
   const shadow::ShadowSetup& setup = renderer.shadow_setup();
@@ -199,7 +199,7 @@ TEST(RendererChange, FramesAfterAChangeAreThoseOfAFreshRenderer) {
   const auto context = create_headless_context("egl");
   pointgen::Random rng(77);
   const FloatingBox s = random_floating_box(rng, shadow::LightType::directional);
-  const Scene scene = load_scene({"floating_box.json", s.scene_json(), [](const std::string&) { return std::nullopt; }});
+  const Scene scene = s.scene();
   Renderer changed(scene, {320, 240, 1024, shadow::Method::uniform});
   changed.render(scene.camera, scene.lights[0]);
   // Method alone, size alone, both, and back to methods that keep state between frames.

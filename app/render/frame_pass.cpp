@@ -137,6 +137,7 @@ FramePass::ShadeVariant FramePass::shade_variant(const std::optional<ShadowLooku
   variant.shadows = true;
   variant.selection = static_cast<int>(shadow_map->setup.selection);
   variant.marks_edges = shadow_map->marks_edges;
+  variant.point_layers = shadow_map->point_layers;
   variant.silhouettes = shadow_map->silhouettes != 0;
   for (const shadow::ShadowView& view : shadow_map->setup.views) variant.paraboloid |= view.paraboloid.has_value();
   return variant;
@@ -146,7 +147,8 @@ std::string FramePass::defines(const ShadeVariant& variant) {
   const auto boolean = [](bool b) { return b ? std::string("true") : std::string("false"); };
   return "#define SHADOWS " + boolean(variant.shadows) + "\n#define SHADOW_SELECTION " + std::to_string(variant.selection) +
          "\n#define PARABOLOID_VIEWS " + boolean(variant.paraboloid) + "\n#define ALIASING " + boolean(variant.aliasing) +
-         "\n#define MARK_EDGES " + boolean(variant.marks_edges) + "\n#define SILHOUETTES " + boolean(variant.silhouettes) + "\n";
+         "\n#define MARK_EDGES " + boolean(variant.marks_edges) + "\n#define POINT_LAYERS " + boolean(variant.point_layers) +
+         "\n#define SILHOUETTES " + boolean(variant.silhouettes) + "\n";
 }
 
 const gl::Program& FramePass::shade_program(const ShadeVariant& variant) const {

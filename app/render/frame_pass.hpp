@@ -46,6 +46,8 @@ class FramePass {
     // For hybrid shadows, the lookup widened to mark where the map may be wrong, as a `shadow` AOV
     // neither 0 nor 1, so that the shadow volumes decide there (ShadowVolumePass::render_near_edges).
     bool marks_edges = false;
+    // For hybrid shadows with point casters, their splats in layers of their own, after the views'.
+    bool point_layers = false;
     // For shadow silhouette maps, the map's silhouette points (SilhouettePass), one layer a view;
     // 0 for none.
     GLuint silhouettes = 0;
@@ -91,6 +93,7 @@ class FramePass {
     bool paraboloid = false;
     bool aliasing = false;
     bool marks_edges = false;
+    bool point_layers = false;
     bool silhouettes = false;
     auto operator<=>(const ShadeVariant&) const = default;
   };

@@ -12,9 +12,9 @@ MapTechnique::MapTechnique(const RenderSettings& settings, bool surface_textures
     : splat_size_(settings.shadow_splat_size),
       depths_(settings.shadow_size, settings.shadow_bias, settings.shadow_depth, surface_textures) {}
 
-void MapTechnique::use(const shadow::Technique& technique, GpuScene& polygons, const Scene& scene) {
+void MapTechnique::use(const shadow::Technique& technique, bool point_casters, GpuScene& polygons, const Scene& scene) {
   silhouette_map_ = technique.silhouette_map;
-  points_apart_ = technique.lookup == shadow::Lookup::mask;
+  points_apart_ = point_casters && technique.lookup == shadow::Lookup::mask;
   if (silhouette_map_ && !silhouettes_) {
     silhouettes_ = std::make_unique<SilhouettePass>(depths_.size());
     polygons.add_adjacency(scene);
@@ -50,7 +50,8 @@ void MapTechnique::draw_points(const shadow::ShadowSetup& setup, int layer, gl::
 }
 
 FramePass::ShadowLookup MapTechnique::lookup(const shadow::ShadowSetup& setup, bool marks_edges) const {
-  return {depths_.depth_texture(), setup, depths_.size(), marks_edges, silhouette_map_ ? silhouettes_->points() : 0u};
+  return {depths_.depth_texture(), setup, depths_.size(), marks_edges, points_apart_,
+          silhouette_map_ ? silhouettes_->points() : 0u};
 }
 
 }  // namespace ecoview

@@ -16,18 +16,18 @@ namespace ecoview {
 // The GL side of a technique with a shadow map (shadow::Technique::has_map): the depth map's
 // layers, one a view of the frame's setup; the point splats drawn onto them; a silhouette map
 // beside them where the technique has one; and how the frame looks them up. A map that helps a
-// mask (`hybrid`) keeps its point splats in layers of their own after the views': the mask has
-// polygon casters only, so the points' shadows are the map's to decide, and only the polygons'
-// edges are the mask's. Which plants each layer draws is the renderer's choice (its sampler's).
+// mask (`hybrid`) keeps point splats, where the frame has any, in layers of their own after the
+// views': the mask has polygon casters only, so the points' shadows are the map's to decide, and
+// only the polygons' edges are the mask's. Which plants each layer draws is the renderer's choice (its sampler's).
 class MapTechnique {
  public:
   // `surface_textures`: the scene has textures or alpha masks (GpuScene::has_surface_textures).
   MapTechnique(const RenderSettings& settings, bool surface_textures);
-  // From the next layer drawn on, the map of `technique`; what it needs besides depths is made
-  // here, so that frame times hold no shader compilation.
-  void use(const shadow::Technique& technique, GpuScene& polygons, const Scene& scene);
+  // From the next layer drawn on, the map of `technique`, in frames with point casters or without;
+  // what it needs besides depths is made here, so that frame times hold no shader compilation.
+  void use(const shadow::Technique& technique, bool point_casters, GpuScene& polygons, const Scene& scene);
   // Layer `layer` of `setup`: the polygons' depths (with `plants`, also those polygon plants of a
-  // GPU sampler), then the silhouettes of the polygons the scene holds; an empty layer for its
+  // GPU sampler), then the silhouettes of the polygons the scene holds; an empty layer for the
   // points where they have their own.
   void draw_polygons(const GpuScene& polygons, const shadow::ShadowSetup& setup, int layer, const shadow::Light& light,
                      gl::GpuStages& stages, const GpuScene::PlantDraws* plants = nullptr);

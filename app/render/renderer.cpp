@@ -103,7 +103,7 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
 
 // Made with the renderer, not with the first frame, so that frame times hold no shader compilation.
 void Renderer::make_method_passes() {
-  map_.use(shadow::technique(settings_.method), gpu_scene_, scene_);
+  map_.use(shadow::technique(settings_.method), settings_.points && scene_.has_point_meshes(), gpu_scene_, scene_);
   const MaskSources sources{scene_, gpu_scene_, frame_pass_, {settings_.width, settings_.height},
                             [this]() -> ExactVisibility& { return exact(); }};
   mask_ = make_mask_technique(settings_.method, sources);
