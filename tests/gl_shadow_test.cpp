@@ -140,6 +140,44 @@ TEST(HybridShadows, LeaveThePointCastersShadowsToTheMap) {
   EXPECT_LE(hybrid, 1.1 * uniform);
 }
 
+// The GPU sampler lists the plants it draws as polygons on the GPU, apart from the scene's instance
+// tables; the shadow volumes and the silhouette map draw those lists too. Under a row of plants near
+// enough to be drawn as polygons, the volumes' shadows are the ray-traced reference's (plants as
+// meshes) but for a few edge pixels, with the GPU's choice as with the CPU's; without the plants'
+// volumes they would miss the plants' shadows whole. The silhouette map with the GPU's choice
+// agrees with the CPU's about as well.
+TEST(GpuSampledPlants, CastShadowVolumesAndSilhouettes) {
+  const auto context = create_headless_context("egl");
+  std::ostringstream json;
+  json << R"({"camera": {"position": [0, 3, 8], "target": [0, 1, -4], "fov_y_deg": 50, "near": 0.2, "far": 200},
+      "lights": [{"type": "directional", "direction": [0.6, -0.7, -0.3]}],
+      "objects": [{"type": "plane", "center": [0, 0, -20], "size": [80, 80]}, )"
+       << plant_grid_json("beech", 3, 3, -4, 4, -4, 0) << "]}";
+  const Scene scene = load_scene({"row.json", json.str(), [](const std::string&) { return std::nullopt; }});
+  auto visibility = [&](shadow::Method method, bool gpu_sampler, Image8* exact) {
+    RenderSettings settings{640, 360, 1024, method};
+    settings.gpu_sampler = gpu_sampler;
+    Renderer renderer(scene, settings);
+    renderer.render(scene.camera, scene.lights[0]);
+    if (exact != nullptr) *exact = renderer.exact_visibility();
+    return renderer.frame().read_visibility();
+  };
+  Image8 exact;
+  const Image8 volumes_gpu = visibility(shadow::Method::volumes, true, &exact);
+  const Image8 volumes_cpu = visibility(shadow::Method::volumes, false, nullptr);
+  const Image8 silhouette_gpu = visibility(shadow::Method::silhouette, true, nullptr);
+  const Image8 silhouette_cpu = visibility(shadow::Method::silhouette, false, nullptr);
+  std::size_t shadowed = 0;
+  for (std::uint8_t v : exact.samples) shadowed += v < 128;
+  std::cout << "shadowed " << shadowed << ", volumes wrong: gpu " << binary_differences(volumes_gpu, exact) << ", cpu "
+            << binary_differences(volumes_cpu, exact) << "; silhouette gpu against cpu " << binary_differences(silhouette_gpu, silhouette_cpu)
+            << ", against exact: gpu " << binary_differences(silhouette_gpu, exact) << ", cpu " << binary_differences(silhouette_cpu, exact) << "\n";
+  EXPECT_GE(shadowed, exact.samples.size() / 20);  // the plants' shadows are in view
+  EXPECT_LE(binary_differences(volumes_gpu, exact), shadowed / 50);
+  EXPECT_LE(binary_differences(volumes_cpu, exact), shadowed / 50);
+  EXPECT_LE(binary_differences(silhouette_gpu, silhouette_cpu), shadowed / 50);
+}
+
 // A silhouette map moves a shadow's edges from the texels' staircase onto the casters' silhouette:
 // on floating boxes under a coarse map, its plane pixels that disagree with the geometry's shadow,
 // edges included, are at most half those of the same map filtered.

@@ -135,10 +135,34 @@ void GpuScene::gather_point_meshes() {
   glEnableVertexArrayAttrib(vao, 3);
   glVertexArrayAttribIFormat(vao, 3, 1, GL_UNSIGNED_INT, 0);
   glVertexArrayAttribBinding(vao, 3, 1);
+  if (!meshes_.empty() && meshes_.front().adjacency) gather_adjacency();
+}
+
+void GpuScene::gather_adjacency() {
+  glNamedBufferStorage(chosen_->adjacency.emplace().name(), 2 * static_cast<GLsizeiptr>(std::max(point_mesh_indices_, 1)) * sizeof(GLuint), nullptr, 0);
+  for (std::size_t m = 0; m < meshes_.size(); ++m) {
+    if (!meshes_[m].point_mesh) continue;
+    glCopyNamedBufferSubData(meshes_[m].adjacency->name(), chosen_->adjacency->name(), 0,
+                             2 * static_cast<GLintptr>(places_[m].first_index) * static_cast<GLintptr>(sizeof(GLuint)),
+                             2 * static_cast<GLsizeiptr>(meshes_[m].index_count) * static_cast<GLsizeiptr>(sizeof(GLuint)));
+  }
 }
 
 void GpuScene::draw_chosen(const PlantDraws& draws, GLenum mode) const {
   if (!chosen_ || draws.command_count == 0) return;
+  multi_draw_chosen(draws, mode);
+}
+
+void GpuScene::draw_chosen_with_adjacency(const PlantDraws& adjacency_draws) const {
+  if (!chosen_ || adjacency_draws.command_count == 0) return;
+  if (!chosen_->adjacency) throw RuntimeFailure("draw_chosen_with_adjacency before add_adjacency");
+  const GLuint vao = chosen_->vertex_array.name();
+  glVertexArrayElementBuffer(vao, chosen_->adjacency->name());
+  multi_draw_chosen(adjacency_draws, GL_TRIANGLES_ADJACENCY);
+  glVertexArrayElementBuffer(vao, chosen_->indices.name());
+}
+
+void GpuScene::multi_draw_chosen(const PlantDraws& draws, GLenum mode) const {
   if (draws.draw_counts == 0) throw RuntimeFailure("plant draws without their count (DrawnCommands::keep_drawn)");
   glVertexArrayVertexBuffer(chosen_->vertex_array.name(), 1, draws.plant_indices, 0, sizeof(GLuint));
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws.commands);
@@ -158,6 +182,7 @@ void GpuScene::add_adjacency(const Scene& scene) {
   for (std::size_t m = 0; m < meshes_.size(); ++m) {
     if (!meshes_[m].adjacency) gl::store(meshes_[m].adjacency.emplace(), pointgen::adjacency_indices(scene.meshes[m]));
   }
+  if (chosen_ && !chosen_->adjacency) gather_adjacency();
 }
 
 void GpuScene::draw_with_adjacency() const {

@@ -37,7 +37,8 @@ class GpuScene {
   // whatever parts were chosen (shadow volumes need the casters the camera does not see).
   void draw(GLenum mode = GL_TRIANGLES, Parts parts = Parts::chosen) const;
   // Finds each triangle's neighbours across its edges (pointgen::adjacency_indices) for
-  // draw_with_adjacency; `scene` is the one this was made from. Once, before the first draw.
+  // draw_with_adjacency and draw_chosen_with_adjacency; `scene` is the one this was made from.
+  // Once, before the first draw.
   void add_adjacency(const Scene& scene);
   // Every instance whole, each triangle with its neighbours (GL_TRIANGLES_ADJACENCY), for shadow
   // volumes from silhouette edges.
@@ -60,6 +61,9 @@ class GpuScene {
   // indirect multi-draw, for programs built with PLANT_INDEX (shaders/instance.glsl); `mode` as
   // for draw().
   void draw_chosen(const PlantDraws& draws, GLenum mode = GL_TRIANGLES) const;
+  // The same plants, each triangle with its neighbours (GL_TRIANGLES_ADJACENCY), from draws whose
+  // index counts and first indices count six indices a triangle (AdjacencyDraw makes them).
+  void draw_chosen_with_adjacency(const PlantDraws& adjacency_draws) const;
 
  private:
   struct Range {
@@ -87,6 +91,8 @@ class GpuScene {
     std::size_t capacity = 0;
   };
   static void set_vertex_attributes(GLuint vertex_array, GLuint vertices, GLuint indices, GLuint surfaces);
+  void multi_draw_chosen(const PlantDraws& draws, GLenum mode) const;
+  void gather_adjacency();  // the point meshes' neighbours, laid out as their indices in Chosen
   static void set_attributes(GLuint vertex_array, const Mesh& mesh, GLuint instances);
   void reserve(Group& group, std::size_t instances);
   SurfaceTextures textures_;
@@ -98,6 +104,8 @@ class GpuScene {
   struct Chosen {
     gl::Buffer vertices, indices;
     std::optional<gl::Buffer> surfaces;  // when a mesh has materials
+    // Six indices a triangle, each point mesh's at twice its first index (draw_chosen_with_adjacency).
+    std::optional<gl::Buffer> adjacency;
     gl::VertexArray vertex_array;
   };
   std::unique_ptr<Chosen> chosen_;

@@ -21,9 +21,8 @@ void MapTechnique::use(const shadow::Technique& technique, bool point_casters, G
   }
 }
 
-// The silhouettes are those of the scene's fixed polygons and of the plants the layer drew as
-// polygons on the CPU's choice; the GPU sampler's polygon plants are not among them (their shadows
-// keep the depth map's edges).
+// The silhouettes are those of every polygon the layer drew: the scene's fixed polygons, and the
+// plants drawn as polygons on the CPU's choice or the GPU's (`plants`).
 void MapTechnique::draw_polygons(const GpuScene& polygons, const shadow::ShadowSetup& setup, int layer,
                                  const shadow::Light& light, gl::GpuStages& stages, const GpuScene::PlantDraws* plants) {
   const int views = static_cast<int>(setup.views.size());
@@ -32,7 +31,7 @@ void MapTechnique::draw_polygons(const GpuScene& polygons, const shadow::ShadowS
   if (points_apart_) depths_.clear_layer(views + layer);
   stages.end("map polygons");
   if (!silhouette_map_) return;
-  silhouettes_->render(polygons, setup, layer, light);
+  silhouettes_->render(polygons, plants, setup, layer, light);
   stages.end("map silhouettes");
 }
 

@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,9 @@ struct MaskFrame {
   const shadow::Light& light;
   const glm::mat4& view_projection;
   const GpuScene& polygons;                             // the polygon casters, those out of view too
+  // With the GPU sampler, the plants it chose as polygons for the frame (GpuScene::draw_chosen):
+  // casters too, which `polygons` does not hold.
+  std::optional<GpuScene::PlantDraws> plants;
   const std::vector<pointgen::InstanceTable>& tables;  // as posed for the frame
   const pointgen::InstanceCells& cells;                 // of tables
   const FramePass& frame;

@@ -254,7 +254,9 @@ FramePass::ShadowLookup Renderer::map_lookup() const {
 }
 
 MaskFrame Renderer::mask_frame(const shadow::Camera& camera, const shadow::Light& light) const {
-  return {camera, aspect(), light, view_projection_, gpu_scene_, tables_, cells_, frame_pass_};
+  std::optional<GpuScene::PlantDraws> plants;
+  if (gpu_sampler_ && draws_points()) plants = gpu_sampler_->polygon_draws(0, gpu_sampler_->band_count());
+  return {camera, aspect(), light, view_projection_, gpu_scene_, plants, tables_, cells_, frame_pass_};
 }
 
 // The frame drawn without shadows leaves the surfaces the mask is made for; both are timed as the

@@ -19,7 +19,7 @@ constexpr float offset_units = 8.0f;
 ShadowVolumePass::ShadowVolumePass(int width, int height, GLuint depth_stencil)
     : width_(width),
       height_(height),
-      volume_program_(gl::build_program({"world_position.vert", "shadow_volume.geom", "shadow_depth.frag"})),
+      volumes_({"world_position.vert", "shadow_volume.geom", "shadow_depth.frag"}),
       mask_program_(gl::build_program({"fullscreen.vert", "light_mask.frag"})),
       edge_program_(gl::build_program({"fullscreen.vert", "edge_pixels.frag"})) {
   glTextureStorage2D(mask_.name(), 1, GL_R8, width, height);
@@ -34,8 +34,8 @@ ShadowVolumePass::ShadowVolumePass(int width, int height, GLuint depth_stencil)
   }
 }
 
-void ShadowVolumePass::render(const GpuScene& scene, const glm::mat4& view_projection, const shadow::Light& light,
-                              Counting counting) const {
+void ShadowVolumePass::render(const GpuScene& scene, const GpuScene::PlantDraws* plants, const glm::mat4& view_projection,
+                              const shadow::Light& light, Counting counting) {
   const GLuint fb = framebuffer_.name();
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glViewport(0, 0, width_, height_);
@@ -45,15 +45,15 @@ void ShadowVolumePass::render(const GpuScene& scene, const glm::mat4& view_proje
   glClearNamedFramebufferiv(fb, GL_STENCIL, 0, &zero);
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_ALWAYS, 0, 0xFF);
-  count(scene, view_projection, light, counting);
+  count(scene, plants, view_projection, light, counting);
   // The mask: 1 where the count is 0.
   glStencilFunc(GL_EQUAL, 0, 0xFF);
   write_mask(1.0f);
   glDisable(GL_STENCIL_TEST);
 }
 
-void ShadowVolumePass::render_near_edges(const GpuScene& scene, const glm::mat4& view_projection, const shadow::Light& light,
-                                         Counting counting, GLuint visibility) const {
+void ShadowVolumePass::render_near_edges(const GpuScene& scene, const GpuScene::PlantDraws* plants, const glm::mat4& view_projection,
+                                         const shadow::Light& light, Counting counting, GLuint visibility) {
   constexpr GLuint edge_bit = 0x80, count_bits = 0x7F;
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);  // the AOV is a compute pass's image
   glCopyImageSubData(visibility, GL_TEXTURE_2D, 0, 0, 0, 0, mask_.name(), GL_TEXTURE_2D, 0, 0, 0, 0, width_, height_, 1);
@@ -72,7 +72,7 @@ void ShadowVolumePass::render_near_edges(const GpuScene& scene, const glm::mat4&
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.name());
   glStencilFunc(GL_EQUAL, edge_bit, edge_bit);
   glStencilMask(count_bits);
-  count(scene, view_projection, light, counting);
+  count(scene, plants, view_projection, light, counting);
   glStencilMask(0xFF);
   // Near edges: 1 where the count is 0, 0 where it is not.
   glStencilFunc(GL_EQUAL, edge_bit, 0xFF);
@@ -84,8 +84,8 @@ void ShadowVolumePass::render_near_edges(const GpuScene& scene, const glm::mat4&
 
 // The volumes: no colour, no depth writes, both faces; far caps at infinity kept by depth clamp.
 // The stencil test is the caller's.
-void ShadowVolumePass::count(const GpuScene& scene, const glm::mat4& view_projection, const shadow::Light& light,
-                             Counting counting) const {
+void ShadowVolumePass::count(const GpuScene& scene, const GpuScene::PlantDraws* plants, const glm::mat4& view_projection,
+                             const shadow::Light& light, Counting counting) {
   const bool z_fail = counting == Counting::z_fail;
   glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glEnable(GL_DEPTH_TEST);
@@ -95,10 +95,6 @@ void ShadowVolumePass::count(const GpuScene& scene, const glm::mat4& view_projec
   glEnable(GL_DEPTH_CLAMP);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(offset_factor, offset_units);
-  glUseProgram(volume_program_.name());
-  gl::set_uniform(volume_program_, "view_projection", view_projection);
-  gl::set_uniform(volume_program_, "light", shadow::homogeneous(light));
-  gl::set_uniform(volume_program_, "far_caps", z_fail ? 1 : 0);
   if (z_fail) {  // leaving a volume behind the surface (a back face failing the depth test) counts +1
     glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
     glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
@@ -106,7 +102,11 @@ void ShadowVolumePass::count(const GpuScene& scene, const glm::mat4& view_projec
     glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
     glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
   }
-  scene.draw_with_adjacency();
+  volumes_.draw(scene, plants, [&](const gl::Program& program) {
+    gl::set_uniform(program, "view_projection", view_projection);
+    gl::set_uniform(program, "light", shadow::homogeneous(light));
+    gl::set_uniform(program, "far_caps", z_fail ? 1 : 0);
+  });
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_DEPTH_CLAMP);
   glDepthMask(GL_TRUE);

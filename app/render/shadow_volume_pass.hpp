@@ -1,5 +1,6 @@
 #pragma once
 #include "app/gl/gl_objects.hpp"
+#include "app/render/adjacency_draw.hpp"
 #include "app/render/gpu_scene.hpp"
 #include "shadow/light.hpp"
 
@@ -17,20 +18,23 @@ class ShadowVolumePass {
   // `depth_stencil`: the frame's GL_DEPTH32F_STENCIL8 texture of width x height.
   ShadowVolumePass(int width, int height, GLuint depth_stencil);
   enum class Counting { z_pass, z_fail };
-  // `scene` with its neighbours found (GpuScene::add_adjacency).
-  void render(const GpuScene& scene, const glm::mat4& view_projection, const shadow::Light& light, Counting counting) const;
+  // The casters are `scene`, with its neighbours found (GpuScene::add_adjacency), and `plants`, if
+  // any: the plants the GPU sampler chose as polygons (GpuScene::draw_chosen).
+  void render(const GpuScene& scene, const GpuScene::PlantDraws* plants, const glm::mat4& view_projection,
+              const shadow::Light& light, Counting counting);
   // Hybrid shadows (Chan and Durand 2004): the mask is `visibility` (the frame's R8 `shadow` AOV
   // as a shadow map lit it) where that is 0 or 1, and the volumes' count only where it lies
   // between, near the edges of the map's shadows. The stencil's top bit marks those pixels as the
   // computation mask: the volumes' faces elsewhere fail the stencil test, and counts wrap in the
   // seven bits below it.
-  void render_near_edges(const GpuScene& scene, const glm::mat4& view_projection, const shadow::Light& light,
-                         Counting counting, GLuint visibility) const;
+  void render_near_edges(const GpuScene& scene, const GpuScene::PlantDraws* plants, const glm::mat4& view_projection,
+                         const shadow::Light& light, Counting counting, GLuint visibility);
   GLuint light_mask() const { return mask_.name(); }
 
  private:
   // Adds each volume face's +1 or -1 to the stencil where its test passes.
-  void count(const GpuScene& scene, const glm::mat4& view_projection, const shadow::Light& light, Counting counting) const;
+  void count(const GpuScene& scene, const GpuScene::PlantDraws* plants, const glm::mat4& view_projection,
+             const shadow::Light& light, Counting counting);
   // Writes `value` into the mask where the stencil test passes.
   void write_mask(float value) const;
   void draw_fullscreen() const;  // one triangle over the viewport, the program's own
@@ -39,7 +43,7 @@ class ShadowVolumePass {
   gl::Texture mask_{GL_TEXTURE_2D};
   gl::Framebuffer framebuffer_;
   gl::Framebuffer stencil_only_;  // the frame's depth and stencil alone: marks pixels from the mask's source
-  gl::Program volume_program_;
+  AdjacencyDraw volumes_;
   gl::Program mask_program_;
   gl::Program edge_program_;
   gl::VertexArray empty_vertex_array_;

@@ -6,7 +6,7 @@
 namespace ecoview {
 
 SilhouettePass::SilhouettePass(int size)
-    : size_(size), program_(gl::build_program({"world_position.vert", "silhouette_edges.geom", "silhouette_point.frag"})) {
+    : size_(size), edges_({"world_position.vert", "silhouette_edges.geom", "silhouette_point.frag"}) {
   glTextureStorage2D(depth_.name(), 1, GL_DEPTH_COMPONENT32F, size, size);
   glNamedFramebufferTexture(framebuffer_.name(), GL_DEPTH_ATTACHMENT, depth_.name(), 0);
   allocate(1);
@@ -19,13 +19,11 @@ void SilhouettePass::allocate(int layers) {
   glTextureStorage3D(points_.name(), 1, GL_RG16F, size_, size_, layers);
 }
 
-void SilhouettePass::render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const shadow::Light& light) {
+void SilhouettePass::render(const GpuScene& scene, const GpuScene::PlantDraws* plants, const shadow::ShadowSetup& setup,
+                            int layer, const shadow::Light& light) {
   if (static_cast<int>(setup.views.size()) > layers_) allocate(static_cast<int>(setup.views.size()));
   const GLuint fb = framebuffer_.name();
   gl::draw_depth_tested(framebuffer_, size_, size_);
-  glUseProgram(program_.name());
-  gl::set_uniform(program_, "map_size", static_cast<float>(size_));
-  gl::set_uniform(program_, "light", shadow::homogeneous(light));
   glNamedFramebufferTextureLayer(fb, GL_COLOR_ATTACHMENT0, points_.name(), 0, layer);
   const float no_edge[4] = {-1.0f, -1.0f, 0.0f, 0.0f};
   const float far_depth = 1.0f;
@@ -33,8 +31,11 @@ void SilhouettePass::render(const GpuScene& scene, const shadow::ShadowSetup& se
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
   const shadow::ShadowView& view = setup.views[static_cast<std::size_t>(layer)];
   if (view.paraboloid) return;
-  gl::set_uniform(program_, "light_view_projection", view.view_projection());
-  scene.draw_with_adjacency();
+  edges_.draw(scene, plants, [&](const gl::Program& program) {
+    gl::set_uniform(program, "map_size", static_cast<float>(size_));
+    gl::set_uniform(program, "light", shadow::homogeneous(light));
+    gl::set_uniform(program, "light_view_projection", view.view_projection());
+  });
 }
 
 }  // namespace ecoview

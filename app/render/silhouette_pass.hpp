@@ -1,5 +1,6 @@
 #pragma once
 #include "app/gl/gl_objects.hpp"
+#include "app/render/adjacency_draw.hpp"
 #include "app/render/gpu_scene.hpp"
 #include "shadow/light.hpp"
 #include "shadow/shadow_setup.hpp"
@@ -16,8 +17,10 @@ class SilhouettePass {
  public:
   explicit SilhouettePass(int size);
   // The layer of view `layer` of `setup`, as the depth map has it; a paraboloid view gets none
-  // (edges are curves in its map). `scene` with its neighbours found (GpuScene::add_adjacency).
-  void render(const GpuScene& scene, const shadow::ShadowSetup& setup, int layer, const shadow::Light& light);
+  // (edges are curves in its map). The casters are `scene`, with its neighbours found
+  // (GpuScene::add_adjacency), and `plants`, if any: the plants the GPU sampler chose as polygons.
+  void render(const GpuScene& scene, const GpuScene::PlantDraws* plants, const shadow::ShadowSetup& setup, int layer,
+              const shadow::Light& light);
   GLuint points() const { return points_.name(); }  // RG16F, a position in the cell (0..1 each way)
 
  private:
@@ -28,7 +31,7 @@ class SilhouettePass {
   gl::Texture points_{GL_TEXTURE_2D_ARRAY};
   gl::Texture depth_{GL_TEXTURE_2D};  // the edges' depths, to keep the nearest
   gl::Framebuffer framebuffer_;
-  gl::Program program_;
+  AdjacencyDraw edges_;
 };
 
 }  // namespace ecoview

@@ -16,11 +16,12 @@ VolumeMask::VolumeMask(Where where, const MaskSources& sources)
 GLuint VolumeMask::render(const MaskFrame& frame) {
   const bool z_pass = camera_outside_volumes(frame);
   const auto counting = z_pass ? ShadowVolumePass::Counting::z_pass : ShadowVolumePass::Counting::z_fail;
+  const GpuScene::PlantDraws* plants = frame.plants ? &*frame.plants : nullptr;
   if (where_ == Where::everywhere) {
-    pass_.render(frame.polygons, frame.view_projection, frame.light, counting);
+    pass_.render(frame.polygons, plants, frame.view_projection, frame.light, counting);
     description_ = z_pass ? "volumes: z-pass" : "volumes: z-fail";
   } else {
-    pass_.render_near_edges(frame.polygons, frame.view_projection, frame.light, counting, frame.frame.visibility_texture());
+    pass_.render_near_edges(frame.polygons, plants, frame.view_projection, frame.light, counting, frame.frame.visibility_texture());
     description_ = z_pass ? "volumes near its edges: z-pass" : "volumes near its edges: z-fail";
   }
   return pass_.light_mask();
