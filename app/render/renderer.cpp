@@ -259,12 +259,10 @@ MaskFrame Renderer::mask_frame(const shadow::Camera& camera, const shadow::Light
   return {camera, aspect(), light, view_projection_, gpu_scene_, plants, tables_, cells_, frame_pass_};
 }
 
-// The frame drawn without shadows leaves the surfaces the mask is made for; both are timed as the
-// shadow pass, by the wall clock where the mask is CPU work.
+// Timed as the shadow pass, by the wall clock where the mask is CPU work.
 FramePass::ShadowLookup Renderer::render_mask(const shadow::Camera& camera, const shadow::Light& light) {
   const auto start = std::chrono::steady_clock::now();
   if (!mask_->made_on_cpu()) shadow_timer_.start();
-  draw_frame(camera, light, std::nullopt);
   const GLuint lit = mask_->render(mask_frame(camera, light));
   stages_.end(mask_->stage());
   if (mask_->made_on_cpu()) {
@@ -301,12 +299,6 @@ ExactVisibility& Renderer::exact() {
 
 Image8 Renderer::exact_visibility() { return exact().trace(camera_, light_, frame_pass_.read_depth()); }
 
-void Renderer::draw_frame(const shadow::Camera& camera, const shadow::Light& light,
-                          const std::optional<FramePass::ShadowLookup>& lookup) {
-  draw_surfaces(camera, {});
-  finish_frame(camera, light, lookup);
-}
-
 void Renderer::draw_surfaces(const shadow::Camera& camera, const std::vector<shadow::Plane>& casters) {
   frame_pass_.draw_surfaces(gpu_scene_, camera);
   stages_.end("polygons");
@@ -319,15 +311,22 @@ void Renderer::draw_surfaces(const shadow::Camera& camera, const std::vector<sha
   }
 }
 
-void Renderer::finish_frame(const shadow::Camera& camera, const shadow::Light& light,
-                            const std::optional<FramePass::ShadowLookup>& lookup) {
-  if (draws_points()) {
-    frame_points_.resolve(view_projection_, settings_.splat_size, 0.0f);
-    frame_pass_.add_points(frame_points_, camera);
-    stages_.end("splats");
-  }
+void Renderer::resolve_points(const shadow::Camera& camera) {
+  if (!draws_points()) return;
+  frame_points_.resolve(view_projection_, settings_.splat_size, 0.0f);
+  frame_pass_.add_points(frame_points_, camera);
+  stages_.end("splats");
+}
+
+void Renderer::shade(const shadow::Camera& camera, const shadow::Light& light, const std::optional<FramePass::ShadowLookup>& lookup) {
   frame_pass_.shade(camera, light, lookup);
   stages_.end("shading");
+}
+
+void Renderer::finish_frame(const shadow::Camera& camera, const shadow::Light& light,
+                            const std::optional<FramePass::ShadowLookup>& lookup) {
+  resolve_points(camera);
+  shade(camera, light, lookup);
 }
 
 void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<shadow::Plane>& casters) {
@@ -474,12 +473,16 @@ pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camer
   const pointgen::SampledFrame selection = frame_plants(chosen);
   upload_polygons(selection);
   const bool mask = shadows && mask_;
-  if (mask && !technique.has_map()) lookup.emplace(render_mask(camera, light));
   frame_timer_.start();
-  draw_frame(camera, light, lookup);
-  if (mask && technique.has_map()) shade_with_mask_near_edges(camera, light);
+  draw_surfaces(camera, {});
+  resolve_points(camera);
   frame_timer_.stop();
-  pending_.frame_timers = 1;
+  if (mask && !technique.has_map()) lookup.emplace(render_mask(camera, light));
+  finish_timer_.start();
+  shade(camera, light, lookup);
+  if (mask && technique.has_map()) shade_with_mask_near_edges(camera, light);
+  finish_timer_.stop();
+  pending_.frame_timers = true;
   pending_.gpu_choice = gpu_sampler_ != nullptr;
   return selection;
 }
@@ -564,7 +567,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
   finish_timer_.start();
   finish_frame(camera, light, map_lookup());
   finish_timer_.stop();
-  pending_ = {2, true, true, setup_.views.size()};
+  pending_ = {true, true, true, setup_.views.size()};
   return selection;
 }
 
@@ -580,9 +583,9 @@ GpuScene::PlantDraws Renderer::cascade_casters(int layer, const glm::mat4& map_v
 // The GPU's figures of the last frame drawn, read back when asked: nothing in a frame waits for
 // them, and a caller that asks after the next frame's commands waits for no more than this one.
 const FrameStats& Renderer::stats() const {
-  if (pending_.frame_timers > 0) stats_.frame_pass_ms = frame_timer_.ms() + (pending_.frame_timers > 1 ? finish_timer_.ms() : 0.0);
+  if (pending_.frame_timers) stats_.frame_pass_ms = frame_timer_.ms() + finish_timer_.ms();
   if (pending_.shadow_timer) stats_.shadow_pass_ms = shadow_timer_.ms();
-  if (pending_.frame_timers > 0) stats_.stage_ms = stages_.ms();
+  if (pending_.frame_timers) stats_.stage_ms = stages_.ms();
   if (pending_.gpu_choice) {
     const GpuSampler::Totals chosen = gpu_sampler_->read_totals();
     stats_.points = chosen.frame_points;

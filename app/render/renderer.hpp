@@ -122,7 +122,7 @@ class Renderer {
   FramePass::ShadowLookup render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
   FramePass::ShadowLookup map_lookup() const;
   MaskFrame mask_frame(const shadow::Camera& camera, const shadow::Light& light) const;
-  // A mask in place of a map: the frame drawn without shadows, then the mask made for it.
+  // A mask in place of a map, made for the frame's surfaces.
   FramePass::ShadowLookup render_mask(const shadow::Camera& camera, const shadow::Light& light);
   // A mask that refines a map (`hybrid`): made for the frame the map lit, which it lights again.
   void shade_with_mask_near_edges(const shadow::Camera& camera, const shadow::Light& light);
@@ -161,10 +161,11 @@ class Renderer {
   void sample_on_gpu(const shadow::Camera& camera, const std::vector<shadow::Plane>& casters);
   // The frame's surfaces: polygons, and with points their nearest depths (the splat's pass 1).
   void draw_surfaces(const shadow::Camera& camera, const std::vector<shadow::Plane>& casters);
-  // Then the points' surfaces and the lighting.
+  // Then the points' surfaces (the splat's pass 2),
+  void resolve_points(const shadow::Camera& camera);
+  // and the lighting.
+  void shade(const shadow::Camera& camera, const shadow::Light& light, const std::optional<FramePass::ShadowLookup>& lookup);
   void finish_frame(const shadow::Camera& camera, const shadow::Light& light, const std::optional<FramePass::ShadowLookup>& lookup);
-  // The frame pass proper: polygons, then the point splats.
-  void draw_frame(const shadow::Camera& camera, const shadow::Light& light, const std::optional<FramePass::ShadowLookup>& lookup);
   // With every plant as polygons (no points): the instances of point meshes the frusta hold, culled
   // as the sampler culls them, so that points and polygons are timed on the same instances; with
   // none, all of them.
@@ -198,13 +199,13 @@ class Renderer {
   bool has_last_frame_ = false;
   glm::mat4 view_projection_{1.0f};  // of the last frame
   mutable FrameStats stats_;
-  // The frame pass is timed in one piece (frame_timer_) or, around the GPU sampler's shadow
-  // pass, two (finish_timer_ after it).
+  // The frame pass is timed in two pieces: its surfaces (frame_timer_), and after the shadow map or
+  // mask made for them, the lighting (finish_timer_).
   gl::GpuTimer shadow_timer_, frame_timer_, finish_timer_;
   gl::GpuStages stages_;
   // What stats() still reads back from the GPU for the last frame.
   struct PendingStats {
-    int frame_timers = 0;
+    bool frame_timers = false;
     bool shadow_timer = false;
     bool gpu_choice = false;         // the GPU sampler's totals
     std::size_t shadow_views = 0;    // of its shadow map, in those totals
