@@ -35,7 +35,7 @@ uniform mat4 map_view_projection;
 uniform float map_texels;
 uniform float k;
 uniform float points_per_triangle;
-uniform bool projective_map;  // a paraboloid map draws every polygon plant: none are moved to points
+uniform bool polygons_to_points;  // off: the map draws every polygon plant (GpuSampler::add_casters)
 
 bool map_takes_points(uint i) {
   mat4 model = instance_model(i);
@@ -52,7 +52,7 @@ void main() {
   if (i >= plant_count) return;
   Count c = count_of(i);
   bool hidden = c.hidden && band_ends[c.band - 1u] <= hidden_reach;
-  band_keys[i] = hidden || (projective_map && c.polygons && c.points == 0u && map_takes_points(i)) ? 0u : no_band;
+  band_keys[i] = hidden || (polygons_to_points && c.polygons && c.points == 0u && map_takes_points(i)) ? 0u : no_band;
 }
 #elif defined(KEYS) || defined(HISTOGRAM)
 layout(local_size_x = 256) in;

@@ -117,9 +117,10 @@ TEST(HybridShadows, MatchTheVolumesAlongShadowEdgesWhereTheMapDoesNot) {
 }
 
 // Point splats cast no volumes, so the hybrid's map keeps them in layers of their own and decides
-// their shadows alone; the volumes decide only near the polygons' edges. Under a grove drawn as
-// points, the hybrid errs against the ray-traced reference (plants as meshes) about as the uniform
-// map it starts from does: where the points' shadow edges went to the volumes, they were lit.
+// their shadows alone; the volumes decide only near the polygons' edges. Under a grove, far trees
+// as points and near ones as polygons, the hybrid errs against the ray-traced reference (plants as
+// meshes) no more than the uniform map it starts from: where the points' shadow edges went to the
+// volumes, they were lit (8.5 % of pixels wrong against the map's 5.4 %).
 TEST(HybridShadows, LeaveThePointCastersShadowsToTheMap) {
   const auto context = create_headless_context("egl");
   std::ostringstream json;

@@ -297,9 +297,9 @@ void GpuSampler::sort(const gl::Program& keys, int band_count, int first_band) {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
-void GpuSampler::add_casters(const glm::mat4& map_view, float texels, const DepthPyramid& receivers, bool projective) {
+void GpuSampler::add_casters(const glm::mat4& map_view, float texels, const DepthPyramid& receivers, bool to_points) {
   if (!casters_band_) return;
-  gl::set_uniform(hidden_keys_program_, "projective_map", projective ? 1 : 0);
+  gl::set_uniform(hidden_keys_program_, "polygons_to_points", to_points ? 1 : 0);
   gl::set_uniform(hidden_keys_program_, "map_view_projection", map_view);
   gl::set_uniform(hidden_keys_program_, "map_texels", texels);
   gl::set_uniform(count_program_, "cap_to_map", 1);

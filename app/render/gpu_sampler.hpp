@@ -67,9 +67,9 @@ class GpuSampler {
   // `map_view` (its first view's world → clip matrix): only plants whose boxes cover a receiver
   // farther from the light in `receivers` (a mask over that view's image,
   // DepthPyramid::build_receivers), none with more points than k per texel it covers there. Their
-  // points are for the maps alone. Polygon plants are moved to points for `projective` maps alone
-  // (a paraboloid map draws every band's polygon plants).
-  void add_casters(const glm::mat4& map_view, float texels, const DepthPyramid& receivers, bool projective);
+  // points are for the maps alone. Polygon plants are moved to points only where `to_points`: a
+  // paraboloid map draws every band's polygon plants, and so does a hybrid's, whose volumes count them.
+  void add_casters(const glm::mat4& map_view, float texels, const DepthPyramid& receivers, bool to_points);
   // One band holding every plant, without occlusion.
   void sample(const pointgen::SamplerView& view);
 

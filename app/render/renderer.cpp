@@ -354,7 +354,9 @@ void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<sha
     occluders_->build_changed(frame_pass_.depth_stencil_texture(), frame_points_.depth_buffer());
     receivers_->build_receivers(*occluders_, view_projection_, map_view);
     stages_.end("occlusion");
-    gpu_sampler_->add_casters(map_view, shadow_texels(), *receivers_, !setup_.views.front().paraboloid);
+    // A hybrid's map keeps the frame's polygon plants polygons: its volumes count them near the
+    // map's edges, which points would not have (street, 1024²: err 1.36 -> 0.99 %).
+    gpu_sampler_->add_casters(map_view, shadow_texels(), *receivers_, !setup_.views.front().paraboloid && !mask_);
     stages_.end("map choice");
   }
 }
@@ -416,16 +418,15 @@ void Renderer::remember_last_frame() {
   last_receivers_ = surface_positions(depth, PixelRays(camera_, depth.width, depth.height), 4);
 }
 
-// Where the GPU sampler chooses the plants, a map technique draws the frame's surfaces first and
-// its map from the same plants; otherwise the map (or the mask) and the frame take their plants
-// from the CPU's choice.
+// Where the GPU sampler chooses the plants, a technique with a map draws the frame's surfaces first
+// and its map from the same plants; otherwise the map (or the mask) and the frame take their
+// plants from the CPU's choice.
 void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, double t, bool shadows) {
   begin_frame(camera, light, t);
   const shadow::Technique& technique = shadow::technique(settings_.method);
   const bool map = shadows && technique.has_map();
   const std::vector<shadow::Plane> casters = map ? set_up_map(camera, light) : std::vector<shadow::Plane>{};
-  const pointgen::SampledFrame selection = gpu_sampler_ && map && technique.lookup == shadow::Lookup::map
-                                               ? draw_sampled_on_gpu(camera, light, casters)
+  const pointgen::SampledFrame selection = gpu_sampler_ && map ? draw_sampled_on_gpu(camera, light, casters)
                                                : draw_sampled_on_cpu(camera, light, shadows);
   stats_.points = selection.point_count;
   stats_.triangles = fixed_triangles() + selection.triangle_count;
@@ -566,6 +567,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
 
   finish_timer_.start();
   finish_frame(camera, light, map_lookup());
+  if (mask_) shade_with_mask_near_edges(camera, light);
   finish_timer_.stop();
   pending_ = {true, true, true, setup_.views.size()};
   return selection;
