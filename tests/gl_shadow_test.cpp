@@ -116,6 +116,15 @@ TEST(HybridShadows, MatchTheVolumesAlongShadowEdgesWhereTheMapDoesNot) {
   }
 }
 
+// A scene of `plants` (plant_grid_json) and a `plane` object under a directional light, seen by
+// `camera` (each in the scene format's JSON).
+Scene plants_on_a_plane(const std::string& camera, const std::string& light_direction, const std::string& plane,
+                        const std::string& plants) {
+  const std::string json = R"({"camera": )" + camera + R"(, "lights": [{"type": "directional", "direction": )" + light_direction +
+                           R"(}], "objects": [)" + plane + ", " + plants + "]}";
+  return load_scene({"plants.json", json, [](const std::string&) { return std::nullopt; }});
+}
+
 // Point splats cast no volumes, so the hybrid's map keeps them in layers of their own and decides
 // their shadows alone; the volumes decide only near the polygons' edges. Under a grove, far trees
 // as points and near ones as polygons, the hybrid errs against the ray-traced reference (plants as
@@ -123,12 +132,9 @@ TEST(HybridShadows, MatchTheVolumesAlongShadowEdgesWhereTheMapDoesNot) {
 // volumes, they were lit (8.5 % of pixels wrong against the map's 5.4 %).
 TEST(HybridShadows, LeaveThePointCastersShadowsToTheMap) {
   const auto context = create_headless_context("egl");
-  std::ostringstream json;
-  json << R"({"camera": {"position": [0, 12, 0], "target": [0, 0, -60], "fov_y_deg": 50, "near": 0.5, "far": 400},
-      "lights": [{"type": "directional", "direction": [0.5, -0.6, -0.4]}],
-      "objects": [{"type": "plane", "center": [0, 0, -100], "size": [300, 300]}, )"
-       << plant_grid_json("beech", 24, 6, -40, 16, -40, -20) << "]}";
-  const Scene scene = load_scene({"grove.json", json.str(), [](const std::string&) { return std::nullopt; }});
+  const Scene scene = plants_on_a_plane(R"({"position": [0, 12, 0], "target": [0, 0, -60], "fov_y_deg": 50, "near": 0.5, "far": 400})",
+                                        "[0.5, -0.6, -0.4]", R"({"type": "plane", "center": [0, 0, -100], "size": [300, 300]})",
+                                        plant_grid_json("beech", 24, 6, -40, 16, -40, -20));
   auto wrong_share = [&](shadow::Method method) {
     Renderer renderer(scene, {640, 360, 1024, method});
     renderer.render(scene.camera, scene.lights[0]);
@@ -149,12 +155,9 @@ TEST(HybridShadows, LeaveThePointCastersShadowsToTheMap) {
 // agrees with the CPU's about as well.
 TEST(GpuSampledPlants, CastShadowVolumesAndSilhouettes) {
   const auto context = create_headless_context("egl");
-  std::ostringstream json;
-  json << R"({"camera": {"position": [0, 3, 8], "target": [0, 1, -4], "fov_y_deg": 50, "near": 0.2, "far": 200},
-      "lights": [{"type": "directional", "direction": [0.6, -0.7, -0.3]}],
-      "objects": [{"type": "plane", "center": [0, 0, -20], "size": [80, 80]}, )"
-       << plant_grid_json("beech", 3, 3, -4, 4, -4, 0) << "]}";
-  const Scene scene = load_scene({"row.json", json.str(), [](const std::string&) { return std::nullopt; }});
+  const Scene scene = plants_on_a_plane(R"({"position": [0, 3, 8], "target": [0, 1, -4], "fov_y_deg": 50, "near": 0.2, "far": 200})",
+                                        "[0.6, -0.7, -0.3]", R"({"type": "plane", "center": [0, 0, -20], "size": [80, 80]})",
+                                        plant_grid_json("beech", 3, 3, -4, 4, -4, 0));
   auto visibility = [&](shadow::Method method, bool gpu_sampler, Image8* exact) {
     RenderSettings settings{640, 360, 1024, method};
     settings.gpu_sampler = gpu_sampler;
