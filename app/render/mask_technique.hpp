@@ -17,9 +17,9 @@
 
 namespace ecoview {
 
-// What a mask technique sees of a frame. The frame pass holds the frame's surfaces, drawn without
-// shadows, or for a technique with a map lit by it (its `shadow` AOV then says where the map may
-// be wrong).
+// What a mask technique sees of a frame. The frame pass holds the frame's surfaces, not yet lit,
+// or for a technique with a map lit by it (its `shadow` AOV then says where the map may be
+// wrong).
 struct MaskFrame {
   const shadow::Camera& camera;
   float aspect;
