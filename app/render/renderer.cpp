@@ -254,8 +254,12 @@ FramePass::ShadowLookup Renderer::map_lookup() const {
 }
 
 MaskFrame Renderer::mask_frame(const shadow::Camera& camera, const shadow::Light& light) const {
+  // The GPU sampler's polygon plants, for a mask whose casters are the frame's polygons (the
+  // reference traces every plant as a mesh).
   std::optional<GpuScene::PlantDraws> plants;
-  if (gpu_sampler_ && draws_points()) plants = gpu_sampler_->polygon_draws(0, gpu_sampler_->band_count());
+  if (gpu_sampler_ && draws_points() && mask_->casts_from_frame_polygons()) {
+    plants = gpu_sampler_->polygon_draws(0, gpu_sampler_->band_count());
+  }
   return {camera, aspect(), light, view_projection_, gpu_scene_, plants, tables_, cells_, frame_pass_};
 }
 
