@@ -81,6 +81,21 @@ float filtered_test(vec3 map, int layer, float step) {
   return sum / 9.0;
 }
 
+// --method adaptive: the filtered test below, in the finest page drawn at the level the pixel
+// asked for (page_requests.comp) or coarser, its taps a texel of that page's level apart at most.
+float paged_shadow_test(int view, vec3 position, vec3 n, float n_dot_l) {
+  int level = wanted_level(view, position);
+  vec4 clip = shadow_matrices[view] * vec4(page_lookup_position(view, level, position, n, n_dot_l), 1.0);
+  if (clip.w <= 0.0) return 1.0;
+  vec3 ndc = clip.xyz / clip.w;
+  if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 1.0;  // outside the map: not covered
+  ResidentPage page = resident_page(view, ndc.xy, level);
+  if (page.level < 0) return 1.0;
+  float texels_per_pixel = cell_world_size(view_projection, frame_size, position) / page_texel_world_size(view, page.level, position);
+  float step = clamp(0.5 * (texels_per_pixel - 1.0), 0.0, 1.0) / shadow_size;
+  return filtered_test(vec3(page.map, ndc.z * 0.5 + 0.5), page.layer, step);
+}
+
 // Fraction of the light reaching `position` past the occluders in the map: 3x3 taps of
 // hardware-filtered comparisons (bilinear PCF), spread over the pixel's footprint in the map: one
 // tap's 2x2 texels where a texel is as large as a pixel or larger, up to 4x4 texels where texels
@@ -92,6 +107,7 @@ float filtered_test(vec3 map, int layer, float step) {
 float shadow_test(ivec2 pixel, vec3 position, vec3 n, float n_dot_l) {
   if (shadow_selection == SCREEN_MASK) return texelFetch(light_mask, pixel, 0).r;
   int layer = shadow_view(position);
+  if (VIRTUAL_PAGES) return paged_shadow_test(layer, position, n, n_dot_l);
   float sin_light = sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0));
   vec3 p = position + n * (1.5 * texel_world_size(layer, position) * sin_light);
   vec4 clip = shadow_clip(layer, p);

@@ -12,7 +12,7 @@ vec3 direction_to_light(vec3 p) { return light_type == DIRECTIONAL ? -light_dire
 
 // What the frame's shadows need is fixed when the program is built (FramePass::ShadeVariant,
 // from the defines SHADOWS, SHADOW_SELECTION, PARABOLOID_VIEWS, ALIASING, MARK_EDGES,
-// POINT_LAYERS and SILHOUETTES): llvmpipe runs both sides of a branch, so code no pixel takes would cost every pixel.
+// POINT_LAYERS, SILHOUETTES and VIRTUAL_PAGES): llvmpipe runs both sides of a branch, so code no pixel takes would cost every pixel.
 const bool shadows_enabled = SHADOWS;
 // The views of the shadow setup (shadow::ShadowSetup), one map layer each, and how a point picks
 // its view: one map, cube faces by the major axis of (point - light), the first cascade that
@@ -60,6 +60,8 @@ float texel_world_size(int layer, vec3 p) {
   }
   return cell_world_size(shadow_matrices[layer], vec2(shadow_size), p);
 }
+
+#include "virtual_pages.glsl"
 
 // The layer of the map that holds p's shadow.
 int shadow_view(vec3 p) {
@@ -111,7 +113,14 @@ float aliasing_factor(vec3 p, vec3 n) {
   if (!shadows_enabled || !aliasing_wanted || shadow_selection == SCREEN_MASK) return 0.0;
   vec3 t1 = normalize(abs(n.y) < 0.9 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
   vec3 t2 = cross(n, t1);
-  mat2 texels = 0.5 * shadow_size * shadow_jacobian(shadow_view(p), p, t1, t2);
+  int view = shadow_view(p);
+  float texels_a_side = shadow_size;
+  if (VIRTUAL_PAGES) {
+    vec4 clip = shadow_matrices[view] * vec4(p, 1.0);
+    int level = max(resident_page(view, clip.xy / clip.w, wanted_level(view, p)).level, 0);
+    texels_a_side = page_texels * float(pages_per_side(level));
+  }
+  mat2 texels = 0.5 * texels_a_side * shadow_jacobian(view, p, t1, t2);
   mat2 pixels = mat2(0.5 * frame_size.x, 0.0, 0.0, 0.5 * frame_size.y) * screen_jacobian(view_projection, p, t1, t2);
   float size = dot(texels[0], texels[0]) + dot(texels[1], texels[1]);
   if (abs(determinant(texels)) <= 1e-6 * size) return 1e9;  // the light grazes the surface

@@ -13,12 +13,15 @@
 // app/render/mask_technique.cpp.
 namespace shadow {
 
-enum class Method { none, uniform, psm, lispsm, cascades, dpsm, ipsm, silhouette, psm_silhouette, volumes, hybrid, reference, automatic };
+enum class Method { none, uniform, psm, lispsm, cascades, dpsm, ipsm, silhouette, psm_silhouette, adaptive, volumes, hybrid, reference, automatic };
 
 // What a technique hands the frame's lighting.
 enum class Lookup {
   none,  // no shadows
   map,   // a shadow map, one layer per view of its ShadowSetup: polygons and point splats cast
+  // a virtual map of each view of its ShadowSetup, paged (shadow/virtual_map.hpp): drawn after the
+  // frame's surfaces, only the pages they ask for; polygons and point splats cast
+  pages,
   mask,  // a per-pixel mask of the frame's lit surfaces, made after them (with a map's help where
          // the technique has a setup): polygons cast
 };
@@ -58,7 +61,7 @@ struct Technique {
   bool silhouette_map = false;
 
   // Whether a shadow map is drawn for the frame: looked up, or helping to make the mask.
-  bool has_map() const { return lookup == Lookup::map || (lookup == Lookup::mask && setup != nullptr); }
+  bool has_map() const { return lookup == Lookup::map || lookup == Lookup::pages || (lookup == Lookup::mask && setup != nullptr); }
 };
 
 // Every technique, in the order --help and the viewer list them.

@@ -65,6 +65,13 @@ nlohmann::json stage_figures(const FrameStats& s) {
   return stages;
 }
 
+// A paged map's pages (FrameStats::Pages); null for other methods.
+nlohmann::json page_figures(const RenderOptions& options, const FrameStats& s) {
+  const shadow::Technique* t = shadow::find_technique(options.method);
+  if (!t || t->lookup != shadow::Lookup::pages) return nullptr;
+  return {{"requested", s.pages.requested}, {"drawn", s.pages.drawn}, {"cached", s.pages.cached}, {"dropped", s.pages.dropped}};
+}
+
 // One frame's figures for --stats (names as DESIGN.md defines them).
 // render_ms: the wall time of this one frame, sampling, passes and read-backs, until glFinish.
 nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOptions& options, const Renderer& renderer) {
@@ -74,7 +81,7 @@ nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOp
           {"alias_p95", alias_percentile(renderer.frame().read_aliasing(), renderer.frame().read_visibility(), shadow::p95_fraction)},
           {"sample_ms", s.sample_ms}, {"host_ms", s.host_ms}, {"shadow_pass_ms", s.shadow_pass_ms}, {"frame_pass_ms", s.frame_pass_ms},
           {"points", s.points}, {"triangles", s.triangles}, {"shadow_points", s.shadow_points},
-          {"shadow_triangles", s.shadow_triangles}, {"stage_ms", stage_figures(s)}};
+          {"shadow_triangles", s.shadow_triangles}, {"stage_ms", stage_figures(s)}, {"pages", page_figures(options, s)}};
 }
 
 }  // namespace
@@ -113,6 +120,10 @@ int run_capture(const CaptureOptions& o) {
   if (std::find(aovs.begin(), aovs.end(), Aov::shadowmap) != aovs.end() &&
       !shadow::technique(settings.method).has_map()) {
     throw InputError("--aov: shadowmap needs a shadow map; --method " + o.render.method + " has none");
+  }
+  if (std::find(aovs.begin(), aovs.end(), Aov::shadowmap) != aovs.end() &&
+      shadow::technique(settings.method).lookup == shadow::Lookup::pages) {
+    throw InputError("--aov: shadowmap shows one map a view; --method " + o.render.method + " keeps pages of many levels");
   }
   check_backend(o.backend);
   const bool frames_asked = !o.frames.empty();

@@ -117,6 +117,9 @@ void add_render_options(CLI::App& command, RenderOptions& o) {
                                                        "steps even over the map's depth range) or 32f (float: as fine "
                                                        "as 24 bits at the far end, finer towards the near plane)")
       ->capture_default_str();
+  command.add_option("--page-pool", o.page_pool, "--method adaptive: MiB of depths for the pages it keeps drawn; where the "
+                                                 "frame asks for more pages, the finest go without and a coarser level serves")
+      ->capture_default_str();
 }
 
 RenderSettings render_settings(const RenderOptions& o) {
@@ -138,6 +141,8 @@ RenderSettings render_settings(const RenderOptions& o) {
   settings.splat_size = o.splat;
   settings.shadow_bias = {check_bias("--bias-slope", o.bias_slope), check_bias("--bias-constant", o.bias_constant)};
   settings.shadow_depth = parse_shadow_depth(o.shadow_depth);
+  if (o.page_pool < 1 || o.page_pool > 65536) throw InputError("--page-pool: must be between 1 and 65536 MiB");
+  settings.page_pool_mib = o.page_pool;
   return settings;
 }
 

@@ -46,6 +46,7 @@ struct RenderOptions {
   double bias_slope = RenderSettings{}.shadow_bias.slope;
   double bias_constant = RenderSettings{}.shadow_bias.constant;
   std::string shadow_depth = shadow_depth_name(RenderSettings{}.shadow_depth);
+  int page_pool = RenderSettings{}.page_pool_mib;
 };
 void add_render_options(CLI::App& command, RenderOptions& options);
 // Validated settings; throws InputError naming the option.

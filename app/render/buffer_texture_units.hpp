@@ -12,5 +12,7 @@ inline constexpr GLuint instance_texels_unit = 8, position_texels_unit = 9, norm
 inline constexpr GLuint surface_texture_unit = 15;
 // A shadow silhouette map's points, for the frame's lighting (shaders/lighting.glsl).
 inline constexpr GLuint silhouette_points_unit = 16;
+// A virtual paged map's page table (shaders/virtual_pages.glsl).
+inline constexpr GLuint page_table_unit = 17;
 
 }  // namespace ecoview

@@ -139,6 +139,7 @@ FramePass::ShadeVariant FramePass::shade_variant(const std::optional<ShadowLooku
   variant.marks_edges = shadow_map->marks_edges;
   variant.point_layers = shadow_map->point_layers;
   variant.silhouettes = shadow_map->silhouettes != 0;
+  variant.pages = shadow_map->page_table != 0;
   for (const shadow::ShadowView& view : shadow_map->setup.views) variant.paraboloid |= view.paraboloid.has_value();
   return variant;
 }
@@ -148,7 +149,7 @@ std::string FramePass::defines(const ShadeVariant& variant) {
   return "#define SHADOWS " + boolean(variant.shadows) + "\n#define SHADOW_SELECTION " + std::to_string(variant.selection) +
          "\n#define PARABOLOID_VIEWS " + boolean(variant.paraboloid) + "\n#define ALIASING " + boolean(variant.aliasing) +
          "\n#define MARK_EDGES " + boolean(variant.marks_edges) + "\n#define POINT_LAYERS " + boolean(variant.point_layers) +
-         "\n#define SILHOUETTES " + boolean(variant.silhouettes) + "\n";
+         "\n#define SILHOUETTES " + boolean(variant.silhouettes) + "\n#define VIRTUAL_PAGES " + boolean(variant.pages) + "\n";
 }
 
 const gl::Program& FramePass::shade_program(const ShadeVariant& variant) const {
@@ -225,7 +226,29 @@ void FramePass::set_light(const gl::Program& program, const shadow::Light& light
     gl::set_uniform(program, "shadow_size", static_cast<float>(shadow_map->size));
     glBindTextureUnit(setup.selection == shadow::ViewSelection::screen_mask ? 1 : 0, shadow_map->texture);
     if (shadow_map->silhouettes != 0) glBindTextureUnit(silhouette_points_unit, shadow_map->silhouettes);
+    const shadow::VirtualMap& pages = shadow_map->pages;
+    gl::set_uniform(program, "page_levels", pages.levels);
+    gl::set_uniform(program, "page_texels", static_cast<float>(pages.page_texels));
+    gl::set_uniform(program, "page_guard", static_cast<float>(pages.guard));
+    gl::set_uniform(program, "page_pixel_texels", static_cast<float>(pages.pixel_texels));
+    if (shadow_map->page_table != 0) glBindTextureUnit(page_table_unit, shadow_map->page_table);
   }
+}
+
+void FramePass::request_pages(const shadow::Camera& camera, const shadow::Light& light, const ShadowLookup& pages) const {
+  ShadeVariant variant = shade_variant(pages);
+  variant.pages = true;
+  auto found = request_programs_.find(variant);
+  if (found == request_programs_.end()) {
+    found = request_programs_.emplace(variant, gl::build_program({"page_requests.comp"}, defines(variant))).first;
+  }
+  const gl::Program& program = found->second;
+  glUseProgram(program.name());
+  set_lighting(program, camera, camera, light, pages);
+  bind_surfaces(program);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  glDispatchCompute(static_cast<GLuint>((width_ + 7) / 8), static_cast<GLuint>((height_ + 7) / 8), 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 void FramePass::shade(const shadow::Camera& camera, const shadow::Light& light,

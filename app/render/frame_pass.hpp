@@ -7,6 +7,7 @@
 #include "shadow/camera.hpp"
 #include "shadow/light.hpp"
 #include "shadow/shadow_setup.hpp"
+#include "shadow/virtual_map.hpp"
 
 #include <map>
 #include <memory>
@@ -51,6 +52,10 @@ class FramePass {
     // For shadow silhouette maps, the map's silhouette points (SilhouettePass), one layer a view;
     // 0 for none.
     GLuint silhouettes = 0;
+    // For a virtual paged map (--method adaptive), its page table (PagedMap): `texture` holds the
+    // pages, one a layer, each `size` texels a side with its guard; 0 for none.
+    GLuint page_table = 0;
+    shadow::VirtualMap pages{};
   };
   // Lights the surfaces drawn.
   void shade(const shadow::Camera& camera, const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;
@@ -62,6 +67,12 @@ class FramePass {
   // bins an octave: within 0.3 % of the value.
   std::vector<float> predict_aliasing(const shadow::Camera& surface_camera, const shadow::Camera& camera, const shadow::Light& light,
                                       const std::vector<shadow::ShadowSetup>& setups, int map_size, float fraction) const;
+
+  // The pages of the virtual map `pages` (its page_table unset) that the lighting will look up for
+  // the frame's surfaces, appended once each as page numbers (shadow::VirtualMap::id) to the list
+  // bound at storage binding 28 (a count, then the numbers), flagged in the array at binding 27,
+  // which starts at zero (shaders/page_requests.comp).
+  void request_pages(const shadow::Camera& camera, const shadow::Light& light, const ShadowLookup& pages) const;
 
   Image8 read_color() const;
   Image8 read_visibility() const;
@@ -95,6 +106,7 @@ class FramePass {
     bool marks_edges = false;
     bool point_layers = false;
     bool silhouettes = false;
+    bool pages = false;
     auto operator<=>(const ShadeVariant&) const = default;
   };
   ShadeVariant shade_variant(const std::optional<ShadowLookup>& shadow_map) const;
@@ -138,7 +150,7 @@ class FramePass {
   gl::Program surface_program_;
   gl::Program plant_surface_program_;  // for the GPU sampler's polygon plants (shaders/instance.glsl)
   gl::Program point_program_;
-  mutable std::map<ShadeVariant, gl::Program> shade_programs_, prediction_programs_;
+  mutable std::map<ShadeVariant, gl::Program> shade_programs_, prediction_programs_, request_programs_;
   gl::Buffer histograms_;  // predict_aliasing's
   gl::VertexArray empty_vertex_array_;  // for the fullscreen triangle, which has no attributes
   gl::Buffer nearest_;

@@ -1,5 +1,9 @@
 #include "app/render/render_settings.hpp"
 
+#include "shadow/virtual_map.hpp"
+
+#include <cstdint>
+
 namespace ecoview {
 
 std::string shadow_depth_name(ShadowDepth depth) {
@@ -9,6 +13,12 @@ std::string shadow_depth_name(ShadowDepth depth) {
     case ShadowDepth::float32: return "32f";
   }
   return "";
+}
+
+int page_pool_layers(const RenderSettings& settings) {
+  const std::int64_t texel_bytes = settings.shadow_depth == ShadowDepth::fixed16 ? 2 : 4;  // 24 bits are stored in 32
+  const std::int64_t side = shadow::VirtualMap{}.layer_texels();
+  return static_cast<int>((static_cast<std::int64_t>(settings.page_pool_mib) << 20) / (side * side * texel_bytes));
 }
 
 RenderSettings for_scene(RenderSettings settings, const Scene& scene) {

@@ -65,6 +65,10 @@ std::string driver_refusal(const RenderSettings& s) {
            std::to_string(max_texture) + ", point buffers up to " + std::to_string(max_storage_block >> 20) +
            " MiB); use a smaller map";
   }
+  if (shadow::technique(s.method).lookup == shadow::Lookup::pages && page_pool_layers(s) > PagedMap::most_layers()) {
+    return "--page-pool: " + std::to_string(s.page_pool_mib) + " MiB is " + std::to_string(page_pool_layers(s)) +
+           " pages, more than this driver holds in one texture (" + std::to_string(PagedMap::most_layers()) + "); use a smaller pool";
+  }
   return {};
 }
 
@@ -107,6 +111,10 @@ void Renderer::make_method_passes() {
   const MaskSources sources{scene_, gpu_scene_, frame_pass_, {settings_.width, settings_.height},
                             [this]() -> ExactVisibility& { return exact(); }};
   mask_ = make_mask_technique(settings_.method, sources);
+  pages_.reset();
+  if (shadow::technique(settings_.method).lookup == shadow::Lookup::pages) {
+    pages_ = std::make_unique<PagedMap>(shadow::VirtualMap{}, page_pool_layers(settings_), map_.depths().depth_format());
+  }
 }
 
 void Renderer::change(shadow::Method method, int shadow_size, float k) {
@@ -214,39 +222,110 @@ shadow::ShadowSetup Renderer::best_predicted_setup(const shadow::ShadowInputs& i
 // it. Each view chooses its own points and polygons, so that a view with one frustum keeps the
 // sampler's cap and occlusion (cascades, cube faces). Timed from the first GL draw to the last.
 FramePass::ShadowLookup Renderer::render_shadow_map(const shadow::Camera& camera, const shadow::Light& light) {
-  std::vector<pointgen::SampledFrame> selections;
-  if (settings_.points) {
-    const auto start = std::chrono::steady_clock::now();
-    for (const shadow::ShadowView& v : setup_.views) {
-      pointgen::SamplerView view = sampler_view(camera, settings_, culling_frusta(v));
-      view.pixels = glm::ivec2(settings_.shadow_size);
-      view.splat_pixels = settings_.shadow_splat_size;
-      view.cap_to_pixels = true;
-      // Layer under layer of canopy as the light sees it: counts follow the expected visible share
-      // (docs/point_density.md, "Occlusion"; what it costs and saves in docs/benchmarks.md).
-      view.full_count_transmittance = 1.0f;
-      std::optional<pointgen::ReceiverMask> receivers;
-      if (culls_casters() && !v.paraboloid) view.receivers = &receivers.emplace(v.view_projection(), last_receivers_);
-      selections.push_back(pointgen::sample_view(view, tables_, samples_.meshes(), cells_));
-      stats_.shadow_points += selections.back().point_count;
-    }
-    stats_.sample_ms += ms_since(start);
-  }
+  const std::vector<pointgen::SampledFrame> chosen = choose_map_casters(camera, setup_.views);
   shadow_timer_.start();
-  for (std::size_t layer = 0; layer < setup_.views.size(); ++layer) {
-    const shadow::ShadowView& v = setup_.views[layer];
-    const pointgen::SampledFrame polygons = settings_.points ? pointgen::SampledFrame{} : polygons_in(pointgen::ViewFrusta(culling_frusta(v)));
-    const pointgen::SampledFrame& drawn = settings_.points ? selections[layer] : polygons;
-    upload_polygons(drawn);
-    stats_.shadow_triangles += fixed_triangles() + drawn.triangle_count;
-    map_.draw_polygons(gpu_scene_, setup_, static_cast<int>(layer), light, stages_);
-    if (!settings_.points) continue;
-    map_.points().upload(selections[layer].points, tables_, samples_);
-    map_.draw_points(setup_, static_cast<int>(layer), stages_);
-  }
+  for (std::size_t layer = 0; layer < setup_.views.size(); ++layer) draw_map_view(setup_, static_cast<int>(layer), chosen, light);
   shadow_timer_.stop();
   pending_.shadow_timer = true;
   return map_lookup();
+}
+
+std::vector<pointgen::SampledFrame> Renderer::choose_map_casters(const shadow::Camera& camera,
+                                                                 const std::vector<shadow::ShadowView>& views) {
+  std::vector<pointgen::SampledFrame> chosen;
+  if (!settings_.points) return chosen;
+  const auto start = std::chrono::steady_clock::now();
+  for (const shadow::ShadowView& v : views) {
+    pointgen::SamplerView view = sampler_view(camera, settings_, culling_frusta(v));
+    view.pixels = glm::ivec2(settings_.shadow_size);
+    view.splat_pixels = settings_.shadow_splat_size;
+    view.cap_to_pixels = true;
+    // Layer under layer of canopy as the light sees it: counts follow the expected visible share
+    // (docs/point_density.md, "Occlusion"; what it costs and saves in docs/benchmarks.md).
+    view.full_count_transmittance = 1.0f;
+    std::optional<pointgen::ReceiverMask> receivers;
+    if (culls_casters() && !v.paraboloid) view.receivers = &receivers.emplace(v.view_projection(), last_receivers_);
+    chosen.push_back(pointgen::sample_view(view, tables_, samples_.meshes(), cells_));
+    stats_.shadow_points += chosen.back().point_count;
+  }
+  stats_.sample_ms += ms_since(start);
+  return chosen;
+}
+
+void Renderer::draw_map_view(const shadow::ShadowSetup& setup, int layer, const std::vector<pointgen::SampledFrame>& chosen,
+                             const shadow::Light& light) {
+  const shadow::ShadowView& v = setup.views[static_cast<std::size_t>(layer)];
+  const pointgen::SampledFrame polygons = settings_.points ? pointgen::SampledFrame{} : polygons_in(pointgen::ViewFrusta(culling_frusta(v)));
+  const pointgen::SampledFrame& drawn = settings_.points ? chosen[static_cast<std::size_t>(layer)] : polygons;
+  upload_polygons(drawn);
+  stats_.shadow_triangles += fixed_triangles() + drawn.triangle_count;
+  map_.draw_polygons(gpu_scene_, setup, layer, light, stages_);
+  if (!settings_.points) return;
+  map_.points().upload(drawn.points, tables_, samples_);
+  map_.draw_points(setup, layer, stages_);
+}
+
+void Renderer::request_pages(const shadow::Camera& camera, const shadow::Light& light) {
+  pages_->request(frame_pass_, camera, light, setup_);
+  stages_.end("map pages");
+  const shadow::PagePool::Frame& asked = pages_->last_request();
+  setup_.description = "adaptive over " + setup_.description + ": " + std::to_string(asked.requested) + " pages asked for, " +
+                       std::to_string(asked.to_draw.size()) + " drawn, " + std::to_string(asked.dropped) + " dropped";
+}
+
+std::vector<shadow::PageTile> Renderer::page_tiles() const {
+  std::vector<shadow::Page> pages;
+  for (const auto& [page, layer] : pages_->last_request().to_draw) pages.push_back(page);
+  return shadow::tiles_of(pages, pages_->map().tile_pages(settings_.shadow_size));
+}
+
+shadow::ShadowSetup Renderer::tile_setup(const shadow::PageTile& tile) const {
+  const shadow::ShadowView& base = setup_.views[static_cast<std::size_t>(tile.view)];
+  return {{pages_->map().tile_view(base, tile, settings_.shadow_size)}, shadow::ViewSelection::single, "page tile"};
+}
+
+// The pages are asked for and drawn after the frame's surfaces, each tile of them into the map's
+// first layer and copied from there; timed as the shadow pass.
+FramePass::ShadowLookup Renderer::render_pages_on_cpu(const shadow::Camera& camera, const shadow::Light& light) {
+  shadow_timer_.start();
+  request_pages(camera, light);
+  const std::vector<shadow::PageTile> tiles = page_tiles();
+  std::vector<shadow::ShadowSetup> setups;
+  std::vector<shadow::ShadowView> views;
+  for (const shadow::PageTile& tile : tiles) {
+    setups.push_back(tile_setup(tile));
+    views.push_back(setups.back().views.front());
+  }
+  const std::vector<pointgen::SampledFrame> chosen = choose_map_casters(camera, views);
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
+    const std::vector<pointgen::SampledFrame> one = settings_.points ? std::vector{chosen[i]} : std::vector<pointgen::SampledFrame>{};
+    draw_map_view(setups[i], 0, one, light);
+    pages_->copy_pages(map_.depths().depth_texture(), tiles[i]);
+    stages_.end("map pages");
+  }
+  shadow_timer_.stop();
+  pending_.shadow_timer = true;
+  return pages_->lookup(setup_);
+}
+
+FramePass::ShadowLookup Renderer::render_pages_on_gpu(const shadow::Camera& camera, const shadow::Light& light) {
+  request_pages(camera, light);
+  std::optional<GpuScene::PlantDraws> plants;
+  if (draws_points()) plants = gpu_sampler_->polygon_draws(0, gpu_sampler_->band_count());
+  const std::vector<shadow::PageTile> tiles = page_tiles();
+  for (const shadow::PageTile& tile : tiles) {
+    const shadow::ShadowSetup setup = tile_setup(tile);
+    map_.draw_polygons(gpu_scene_, setup, 0, light, stages_, plants ? &*plants : nullptr);
+    if (draws_points()) {
+      gpu_sampler_->cap_for_map(setup.views.front().view_projection(), shadow_texels(), settings_.k);
+      stages_.end("map choice");
+      map_.draw_points(setup, 0, stages_);
+    }
+    pages_->copy_pages(map_.depths().depth_texture(), tile);
+    stages_.end("map pages");
+  }
+  pending_.shadow_views = tiles.size();
+  return pages_->lookup(setup_);
 }
 
 FramePass::ShadowLookup Renderer::map_lookup() const {
@@ -474,7 +553,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camer
   const shadow::Technique& technique = shadow::technique(settings_.method);
   std::future<TimedSelection> chosen = choose_frame_points(camera);
   std::optional<FramePass::ShadowLookup> lookup;
-  if (shadows && technique.has_map()) lookup.emplace(render_shadow_map(camera, light));
+  if (shadows && technique.has_map() && !pages_) lookup.emplace(render_shadow_map(camera, light));
   const pointgen::SampledFrame selection = frame_plants(chosen);
   upload_polygons(selection);
   const bool mask = shadows && mask_;
@@ -482,6 +561,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camer
   draw_surfaces(camera, {});
   resolve_points(camera);
   frame_timer_.stop();
+  if (shadows && pages_) lookup.emplace(render_pages_on_cpu(camera, light));
   if (mask && !technique.has_map()) lookup.emplace(render_mask(camera, light));
   finish_timer_.start();
   shade(camera, light, lookup);
@@ -543,7 +623,22 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
   // thinned to k points a texel (GpuSampler::cap_for_map), as a sampling for the map would make it
   // (uniform err 13.40 % against 12.52 % thinned; docs/benchmarks.md).
   map_.points().use(gpu_sampler_->draw_list(), samples_);
+  // A paged map's pages are asked for by every surface, the points' too.
+  if (pages_) resolve_points(camera);
   shadow_timer_.start();
+  pending_ = {true, true, true, setup_.views.size()};
+  const FramePass::ShadowLookup lookup = pages_ ? render_pages_on_gpu(camera, light) : render_map_on_gpu(light);
+  shadow_timer_.stop();
+
+  finish_timer_.start();
+  if (!pages_) resolve_points(camera);
+  shade(camera, light, lookup);
+  if (mask_) shade_with_mask_near_edges(camera, light);
+  finish_timer_.stop();
+  return selection;
+}
+
+FramePass::ShadowLookup Renderer::render_map_on_gpu(const shadow::Light& light) {
   // Every band's polygon plants, listed on the GPU for the first map that draws them all.
   std::optional<GpuScene::PlantDraws> every_band;
   const auto every_band_draws = [&] {
@@ -567,14 +662,7 @@ pointgen::SampledFrame Renderer::draw_sampled_on_gpu(const shadow::Camera& camer
     stages_.end("map choice");
     map_.draw_points(setup_, static_cast<int>(layer), stages_);
   }
-  shadow_timer_.stop();
-
-  finish_timer_.start();
-  finish_frame(camera, light, map_lookup());
-  if (mask_) shade_with_mask_near_edges(camera, light);
-  finish_timer_.stop();
-  pending_ = {true, true, true, setup_.views.size()};
-  return selection;
+  return map_lookup();
 }
 
 // A cascade draws the polygon plants that shadow the surfaces that look it up, those in no
@@ -603,6 +691,10 @@ const FrameStats& Renderer::stats() const {
         stats_.shadow_triangles += layer < chosen.layer_triangles.size() ? chosen.layer_triangles[layer] : chosen.triangles;
       }
     }
+  }
+  if (pages_) {
+    const shadow::PagePool::Frame& asked = pages_->last_request();
+    stats_.pages = {asked.requested, static_cast<int>(asked.to_draw.size()), asked.cached, asked.dropped};
   }
   pending_ = {};
   return stats_;

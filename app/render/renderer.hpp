@@ -6,6 +6,7 @@
 #include "app/render/gpu_sampler.hpp"
 #include "app/render/gpu_scene.hpp"
 #include "app/render/map_technique.hpp"
+#include "app/render/paged_map.hpp"
 #include "app/render/mask_technique.hpp"
 #include "app/render/point_samples.hpp"
 #include "app/render/point_splat.hpp"
@@ -43,6 +44,11 @@ struct FrameStats {
   // GPU (timestamps): both passes by stage (polygons, choice, occlusion, splats, shading; the
   // shadow map's as "map …"), in the order each first ran.
   std::vector<std::pair<std::string, double>> stage_ms;
+  // A virtual paged map's pages (--method adaptive): asked for by the frame's pixels, drawn this
+  // frame, held drawn from earlier frames, and given no layer (the pool was full).
+  struct Pages {
+    int requested = 0, drawn = 0, cached = 0, dropped = 0;
+  } pages;
 };
 
 // What the view sampler needs for `camera` with these settings; `views` are the matrices to cull
@@ -120,6 +126,26 @@ class Renderer {
   // The frame's shadow map (setup_), its plants chosen on the CPU; returns how the frame looks it
   // up.
   FramePass::ShadowLookup render_shadow_map(const shadow::Camera& camera, const shadow::Light& light);
+  // The casters the CPU's view sampler chooses for each of `views` (maps of shadow_size texels),
+  // timed as sampling; none with points off.
+  std::vector<pointgen::SampledFrame> choose_map_casters(const shadow::Camera& camera, const std::vector<shadow::ShadowView>& views);
+  // Draws view `layer` of `setup` into that layer of the map: its casters `chosen` (the CPU
+  // sampler's), or with points off the polygons in its view.
+  void draw_map_view(const shadow::ShadowSetup& setup, int layer, const std::vector<pointgen::SampledFrame>& chosen,
+                     const shadow::Light& light);
+  // A virtual paged map (pages_) for the surfaces the frame drew: the pages they ask for, drawn
+  // tile by tile from the CPU sampler's casters, or from the GPU sampler's (the frame's own
+  // plants); returns how the frame looks them up.
+  FramePass::ShadowLookup render_pages_on_cpu(const shadow::Camera& camera, const shadow::Light& light);
+  FramePass::ShadowLookup render_pages_on_gpu(const shadow::Camera& camera, const shadow::Light& light);
+  // The pages this frame's surfaces ask for, given layers (PagedMap::request).
+  void request_pages(const shadow::Camera& camera, const shadow::Light& light);
+  // This frame's pages to draw, in tiles of as many as a map of shadow_size texels holds.
+  std::vector<shadow::PageTile> page_tiles() const;
+  // The setup whose one view draws a tile.
+  shadow::ShadowSetup tile_setup(const shadow::PageTile& tile) const;
+  // The map of setup_ from the GPU sampler's plants, view by view; returns how the frame looks it up.
+  FramePass::ShadowLookup render_map_on_gpu(const shadow::Light& light);
   FramePass::ShadowLookup map_lookup() const;
   MaskFrame mask_frame(const shadow::Camera& camera, const shadow::Light& light) const;
   // A mask in place of a map, made for the frame's surfaces.
@@ -187,6 +213,7 @@ class Renderer {
   std::unique_ptr<DepthPyramid> occluders_;  // over the frame, for gpu_sampler_
   std::unique_ptr<DepthPyramid> receivers_;  // over the first shadow view: the frame's receivers
   std::unique_ptr<MaskTechnique> mask_;             // the method's, where its lookup is a mask
+  std::unique_ptr<PagedMap> pages_;                 // the method's, where its lookup is pages
   std::unique_ptr<ExactVisibility> exact_;          // made when first asked for
   shadow::Camera camera_;                            // of the last frame
   shadow::Camera last_camera_;  // of the frame before this one, whose surfaces auto predicts from

@@ -1,0 +1,127 @@
+#include "app/render/paged_map.hpp"
+
+#include <algorithm>
+
+namespace ecoview {
+namespace {
+
+constexpr int most_views = 6;  // a cube's faces
+constexpr GLuint flags_binding = 27, list_binding = 28;  // shaders/page_requests.comp
+
+bool same_views(const std::vector<shadow::ShadowView>& a, const std::vector<shadow::ShadowView>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i].view != b[i].view || a[i].projection != b[i].projection) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int PagedMap::most_layers() {
+  GLint layers = 0;
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);
+  return layers;
+}
+
+PagedMap::PagedMap(const shadow::VirtualMap& map, int layers, GLenum depth_format) : map_(map), pool_(map, layers) {
+  const GLuint pages = pages_.name();
+  glTextureStorage3D(pages, 1, depth_format, map.layer_texels(), map.layer_texels(), pool_.layers());
+  // As ShadowPass's maps: bilinear comparisons, and lit off the layer (the guard keeps the filter on it).
+  glTextureParameteri(pages, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(pages, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(pages, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTextureParameteri(pages, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glTextureParameteri(pages, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+  glTextureParameteri(pages, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+  const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  glTextureParameterfv(pages, GL_TEXTURE_BORDER_COLOR, border);
+
+  const int side = map.pages_per_side(0);
+  glTextureStorage3D(table_.name(), map.levels, GL_R32UI, side, side, most_views);
+  glTextureParameteri(table_.name(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  glTextureParameteri(table_.name(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+
+  const std::size_t every_page = static_cast<std::size_t>(map.pages_per_view()) * most_views;
+  zeros_.assign(every_page, 0u);
+  gl::store(flags_, zeros_, GL_DYNAMIC_STORAGE_BIT);
+  gl::store(list_, std::vector<GLuint>(every_page + 1, 0u), GL_DYNAMIC_STORAGE_BIT);
+}
+
+void PagedMap::request(const FramePass& frame, const shadow::Camera& camera, const shadow::Light& light,
+                       const shadow::ShadowSetup& setup) {
+  if (!same_views(setup.views, views_)) {
+    pool_.clear();
+    views_ = setup.views;
+  }
+  const int views = std::min(static_cast<int>(setup.views.size()), most_views);
+  const auto pages = static_cast<std::size_t>(map_.pages_per_view()) * static_cast<std::size_t>(views);
+  // Uploaded, not cleared: on llvmpipe a clear could land after the pass behind it.
+  glNamedBufferSubData(flags_.name(), 0, static_cast<GLsizeiptr>(pages * sizeof(GLuint)), zeros_.data());
+  const GLuint none = 0;
+  glNamedBufferSubData(list_.name(), 0, sizeof none, &none);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, flags_binding, flags_.name());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, list_binding, list_.name());
+  FramePass::ShadowLookup asking{pages_.name(), setup, map_.layer_texels()};
+  asking.pages = map_;
+  frame.request_pages(camera, light, asking);
+
+  GLuint count = 0;
+  glGetNamedBufferSubData(list_.name(), 0, sizeof count, &count);
+  std::vector<std::uint32_t> ids(std::min<std::size_t>(count, pages));
+  if (!ids.empty()) {
+    glGetNamedBufferSubData(list_.name(), sizeof count, static_cast<GLsizeiptr>(ids.size() * sizeof(GLuint)), ids.data());
+  }
+  // Every view's coarsest page, one for the whole map: the lookup's last resort.
+  for (int v = 0; v < views; ++v) ids.push_back(map_.id({v, map_.levels - 1, 0, 0}));
+  frame_ = pool_.update(ids);
+}
+
+void PagedMap::invalidate(const std::vector<std::vector<glm::vec4>>& moved) {
+  const float guard = static_cast<float>(map_.guard) / static_cast<float>(map_.page_texels);
+  pool_.invalidate([&](const shadow::Page& p) {
+    if (p.view >= static_cast<int>(moved.size())) return false;
+    const float side = static_cast<float>(map_.pages_per_side(p.level));
+    const glm::vec2 low = glm::vec2(-1.0f) + 2.0f * (glm::vec2(p.x, p.y) - guard) / side;
+    const glm::vec2 high = glm::vec2(-1.0f) + 2.0f * (glm::vec2(p.x, p.y) + 1.0f + guard) / side;
+    for (const glm::vec4& box : moved[static_cast<std::size_t>(p.view)]) {
+      if (box.x <= high.x && box.z >= low.x && box.y <= high.y && box.w >= low.y) return true;
+    }
+    return false;
+  });
+}
+
+void PagedMap::copy_pages(GLuint tile_map, const shadow::PageTile& tile) const {
+  const int side = map_.layer_texels();
+  for (const auto& [page, layer] : frame_.to_draw) {
+    if (!tile.holds(page)) continue;
+    const glm::ivec2 corner = map_.page_corner(tile, page);
+    glCopyImageSubData(tile_map, GL_TEXTURE_2D_ARRAY, 0, corner.x, corner.y, 0, pages_.name(), GL_TEXTURE_2D_ARRAY, 0, 0, 0,
+                       layer, side, side, 1);
+  }
+}
+
+FramePass::ShadowLookup PagedMap::lookup(const shadow::ShadowSetup& setup) {
+  upload_table(std::min(static_cast<int>(setup.views.size()), most_views));
+  FramePass::ShadowLookup lookup{pages_.name(), setup, map_.layer_texels()};
+  lookup.page_table = table_.name();
+  lookup.pages = map_;
+  return lookup;
+}
+
+// Laid out as VirtualMap::id numbers the pages: view by view, level by level, row by row.
+void PagedMap::upload_table(int views) {
+  std::vector<GLuint> table(static_cast<std::size_t>(map_.pages_per_view()) * static_cast<std::size_t>(views), 0xFFFFFFFFu);
+  for (const auto& [id, layer] : pool_.held()) {
+    if (id < table.size()) table[id] = static_cast<GLuint>(layer);
+  }
+  for (int v = 0; v < views; ++v) {
+    for (int level = 0; level < map_.levels; ++level) {
+      const int side = map_.pages_per_side(level);
+      const std::size_t first = static_cast<std::size_t>(v) * map_.pages_per_view() + map_.level_offset(level);
+      glTextureSubImage3D(table_.name(), level, 0, 0, v, side, side, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, &table[first]);
+    }
+  }
+}
+
+}  // namespace ecoview

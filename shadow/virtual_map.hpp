@@ -1,0 +1,62 @@
+#pragma once
+#include "shadow/shadow_setup.hpp"
+
+#include <cstdint>
+#include <vector>
+
+// A virtual shadow map paged by what the frame needs (--method adaptive): the adaptive shadow
+// maps of Fernando et al. 2001 as production engines page them. Each view of a setup is a virtual
+// map of `page_texels` · 2^(levels − 1) texels a side, kept in levels like mipmaps (level l's
+// texels are 2^l of the finest's), each level cut into square pages. Only the pages the frame's
+// pixels ask for are drawn, each into a layer of its own with `guard` texels of its neighbours
+// around it, so that the lookup's filter never leaves the page.
+namespace shadow {
+
+// A page: which view's virtual map, the level, the column and row (from the map's −x, −y corner).
+struct Page {
+  int view = 0, level = 0, x = 0, y = 0;
+  bool operator==(const Page&) const = default;
+};
+
+// Pages of one view and level drawn together: `columns` × `rows` pages from (x, y), with the
+// guard around them, drawn into one map (the tile's own view).
+struct PageTile {
+  int view = 0, level = 0, x = 0, y = 0;
+  int columns = 1, rows = 1;
+  bool holds(const Page& p) const {
+    return p.view == view && p.level == level && p.x >= x && p.y >= y && p.x < x + columns && p.y < y + rows;
+  }
+};
+
+struct VirtualMap {
+  int levels = 9;         // the finest, 0, has 2^(levels − 1) pages a side; the coarsest one
+  int page_texels = 256;  // a page's own texels a side
+  int guard = 4;          // texels of the neighbours around a page, for the filter's taps
+  // A pixel asks for the coarsest level whose texels are this many or more to its width there.
+  int pixel_texels = 2;
+
+  int pages_per_side(int level) const { return 1 << (levels - 1 - level); }
+  // Texels a side of a page's layer: the page and its guard.
+  int layer_texels() const { return page_texels + 2 * guard; }
+  // Pages of one view, every level's.
+  std::uint32_t pages_per_view() const;
+  // The first page of `level` among a view's, level by level from the finest, row by row.
+  std::uint32_t level_offset(int level) const;
+  // A page's number among every view's (view by view), and back.
+  std::uint32_t id(const Page& page) const;
+  Page page(std::uint32_t id) const;
+
+  // The view that draws `tile` into a map of `texels` a side: `base` (a projective view of the
+  // setup) with its image cropped to the tile's pages and their guard, texel for texel.
+  ShadowView tile_view(const ShadowView& base, const PageTile& tile, int texels) const;
+  // Where a page of the tile lies in the tile's map: its layer's lower left texel (guard included).
+  glm::ivec2 page_corner(const PageTile& tile, const Page& page) const;
+  // The most pages a side a tile drawn into a map of `texels` a side holds.
+  int tile_pages(int texels) const { return (texels - 2 * guard) / page_texels; }
+};
+
+// The pages to draw, in tiles of at most `tile_pages` a side, within squares aligned to multiples
+// of it: every page in exactly one, each tile the bounds of its pages.
+std::vector<PageTile> tiles_of(const std::vector<Page>& pages, int tile_pages);
+
+}  // namespace shadow
