@@ -52,6 +52,17 @@ glm::ivec2 VirtualMap::page_corner(const PageTile& tile, const Page& page) const
   return {(page.x - tile.x) * page_texels, (page.y - tile.y) * page_texels};
 }
 
+glm::vec4 image_bounds(const ShadowView& view, const Box& box) {
+  glm::vec2 low(1.0f), high(-1.0f);
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec4 clip = view.clip(box.corner(i));
+    if (clip.w <= 0.0f) return {-1.0f, -1.0f, 1.0f, 1.0f};
+    low = glm::min(low, glm::vec2(clip) / clip.w);
+    high = glm::max(high, glm::vec2(clip) / clip.w);
+  }
+  return {low, high};
+}
+
 std::vector<PageTile> tiles_of(const std::vector<Page>& pages, int tile_pages) {
   // Per view, level and aligned block: the pages' bounds within it.
   std::map<std::tuple<int, int, int, int>, glm::ivec4> blocks;

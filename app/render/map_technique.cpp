@@ -10,7 +10,7 @@ constexpr float shadow_point_bias = 2e-5f;
 
 MapTechnique::MapTechnique(const RenderSettings& settings, bool surface_textures)
     : splat_size_(settings.shadow_splat_size),
-      depths_(settings.shadow_size, settings.shadow_bias, settings.shadow_depth, surface_textures) {}
+      depths_(map_texels(settings), settings.shadow_bias, settings.shadow_depth, surface_textures) {}
 
 void MapTechnique::use(const shadow::Technique& technique, bool point_casters, GpuScene& polygons, const Scene& scene) {
   silhouette_map_ = technique.silhouette_map;

@@ -15,6 +15,10 @@ std::string shadow_depth_name(ShadowDepth depth) {
   return "";
 }
 
+int map_texels(const RenderSettings& settings) {
+  return shadow::technique(settings.method).lookup == shadow::Lookup::pages ? shadow::VirtualMap{}.tile_texels() : settings.shadow_size;
+}
+
 int page_pool_layers(const RenderSettings& settings) {
   const std::int64_t texel_bytes = settings.shadow_depth == ShadowDepth::fixed16 ? 2 : 4;  // 24 bits are stored in 32
   const std::int64_t side = shadow::VirtualMap{}.layer_texels();

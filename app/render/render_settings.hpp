@@ -53,6 +53,10 @@ struct RenderSettings {
   int page_pool_mib = 256;
 };
 
+// Texels a side of the shadow map's layers: shadow_size, or for a virtual paged map the size of
+// the maps its tiles are drawn into.
+int map_texels(const RenderSettings& settings);
+
 // The pages a pool of settings.page_pool_mib holds: layers of shadow::VirtualMap's page and guard,
 // in the settings' depth format.
 int page_pool_layers(const RenderSettings& settings);

@@ -90,6 +90,15 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       frame_pass_(settings.width, settings.height, settings.aliasing, gpu_scene_.has_surface_textures()),
       frame_points_({settings.width, settings.height}) {
   make_method_passes();
+  for (const pointgen::TriangleMesh& mesh : scene.meshes) {
+    shadow::Box box;
+    for (const glm::vec3& p : mesh.positions) box.add(p);
+    mesh_boxes_.push_back(box);
+  }
+  for (const Animation& animation : scene.animations) {
+    const std::size_t parts = animation.set.pose(0.0, animation.first_mesh).size();
+    for (std::size_t i = 0; i < parts; ++i) moving_groups_.push_back(animation.first_group + i);
+  }
   if (settings.point_meshes_only) {
     for (std::size_t g = 0; g < tables_.size(); ++g) {
       if (!scene.point_meshes[tables_[g].mesh]) tables_[g] = {tables_[g].mesh, {}, {}, {}};
@@ -123,7 +132,7 @@ void Renderer::change(shadow::Method method, int shadow_size, float k) {
   wanted.shadow_size = shadow_size;
   wanted.k = k;
   wanted = within_limits(wanted);
-  const bool new_map = wanted.shadow_size != settings_.shadow_size;
+  const bool new_map = map_texels(wanted) != map_texels(settings_);
   const bool new_method = wanted.method != settings_.method;
   if (new_map) map_ = MapTechnique(wanted, gpu_scene_.has_surface_textures());
   // What the last frame left (near plane, surface, receivers) depends on the method and k: the next
@@ -237,7 +246,7 @@ std::vector<pointgen::SampledFrame> Renderer::choose_map_casters(const shadow::C
   const auto start = std::chrono::steady_clock::now();
   for (const shadow::ShadowView& v : views) {
     pointgen::SamplerView view = sampler_view(camera, settings_, culling_frusta(v));
-    view.pixels = glm::ivec2(settings_.shadow_size);
+    view.pixels = glm::ivec2(map_.depths().size());
     view.splat_pixels = settings_.shadow_splat_size;
     view.cap_to_pixels = true;
     // Layer under layer of canopy as the light sees it: counts follow the expected visible share
@@ -266,6 +275,18 @@ void Renderer::draw_map_view(const shadow::ShadowSetup& setup, int layer, const 
 }
 
 void Renderer::request_pages(const shadow::Camera& camera, const shadow::Light& light) {
+  std::vector<shadow::Box> boxes = moving_boxes();
+  if (time_ != paged_time_ && !boxes.empty()) {
+    std::vector<std::vector<glm::vec4>> moved(setup_.views.size());
+    for (std::size_t v = 0; v < setup_.views.size(); ++v) {
+      for (const std::vector<shadow::Box>* posed : {&paged_boxes_, &boxes}) {
+        for (const shadow::Box& box : *posed) moved[v].push_back(shadow::image_bounds(setup_.views[v], box));
+      }
+    }
+    pages_->invalidate(moved);
+  }
+  paged_boxes_ = std::move(boxes);
+  paged_time_ = time_;
   pages_->request(frame_pass_, camera, light, setup_);
   stages_.end("map pages");
   const shadow::PagePool::Frame& asked = pages_->last_request();
@@ -273,15 +294,24 @@ void Renderer::request_pages(const shadow::Camera& camera, const shadow::Light& 
                        std::to_string(asked.to_draw.size()) + " drawn, " + std::to_string(asked.dropped) + " dropped";
 }
 
+std::vector<shadow::Box> Renderer::moving_boxes() const {
+  std::vector<shadow::Box> boxes;
+  for (std::size_t g : moving_groups_) {
+    const pointgen::InstanceTable& table = tables_[g];
+    for (std::size_t i = 0; i < table.size(); ++i) boxes.push_back(shadow::transformed(mesh_boxes_[table.mesh], table.transforms[i]));
+  }
+  return boxes;
+}
+
 std::vector<shadow::PageTile> Renderer::page_tiles() const {
   std::vector<shadow::Page> pages;
   for (const auto& [page, layer] : pages_->last_request().to_draw) pages.push_back(page);
-  return shadow::tiles_of(pages, pages_->map().tile_pages(settings_.shadow_size));
+  return shadow::tiles_of(pages, pages_->map().tile_pages(map_.depths().size()));
 }
 
 shadow::ShadowSetup Renderer::tile_setup(const shadow::PageTile& tile) const {
   const shadow::ShadowView& base = setup_.views[static_cast<std::size_t>(tile.view)];
-  return {{pages_->map().tile_view(base, tile, settings_.shadow_size)}, shadow::ViewSelection::single, "page tile"};
+  return {{pages_->map().tile_view(base, tile, map_.depths().size())}, shadow::ViewSelection::single, "page tile"};
 }
 
 // The pages are asked for and drawn after the frame's surfaces, each tile of them into the map's
@@ -522,6 +552,7 @@ void Renderer::begin_frame(const shadow::Camera& camera, const shadow::Light& li
   pending_ = {};
   stages_.start();
   view_projection_ = camera.projection(aspect()) * camera.view();
+  time_ = t;
   camera_ = camera;
   light_ = light;
 }

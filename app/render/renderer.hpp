@@ -138,8 +138,11 @@ class Renderer {
   // plants); returns how the frame looks them up.
   FramePass::ShadowLookup render_pages_on_cpu(const shadow::Camera& camera, const shadow::Light& light);
   FramePass::ShadowLookup render_pages_on_gpu(const shadow::Camera& camera, const shadow::Light& light);
-  // The pages this frame's surfaces ask for, given layers (PagedMap::request).
+  // The pages this frame's surfaces ask for, given layers (PagedMap::request); first those held
+  // are drawn again where moving casters were or are now.
   void request_pages(const shadow::Camera& camera, const shadow::Light& light);
+  // The boxes of the moving instances as pose() left them.
+  std::vector<shadow::Box> moving_boxes() const;
   // This frame's pages to draw, in tiles of as many as a map of shadow_size texels holds.
   std::vector<shadow::PageTile> page_tiles() const;
   // The setup whose one view draws a tile.
@@ -176,7 +179,7 @@ class Renderer {
   // The triangles of the meshes never drawn as points (ground, buildings), all of them.
   std::size_t fixed_triangles() const;
   // The texels of one shadow-map layer.
-  float shadow_texels() const { return static_cast<float>(settings_.shadow_size) * static_cast<float>(settings_.shadow_size); }
+  float shadow_texels() const { return static_cast<float>(map_.depths().size()) * static_cast<float>(map_.depths().size()); }
   // The GPU sampler's polygon plants that cascade `layer` draws (map_view: its world → clip
   // matrix; earlier: the cascades' before it).
   GpuScene::PlantDraws cascade_casters(int layer, const glm::mat4& map_view, const std::vector<glm::mat4>& earlier);
@@ -214,6 +217,12 @@ class Renderer {
   std::unique_ptr<DepthPyramid> receivers_;  // over the first shadow view: the frame's receivers
   std::unique_ptr<MaskTechnique> mask_;             // the method's, where its lookup is a mask
   std::unique_ptr<PagedMap> pages_;                 // the method's, where its lookup is pages
+  std::vector<std::size_t> moving_groups_;          // the tables the scene's animations pose
+  std::vector<shadow::Box> mesh_boxes_;             // of the scene's meshes, in their own space
+  double time_ = 0.0;                               // of the frame being drawn
+  // The time of the frame that last asked for pages and its moving instances' boxes then.
+  double paged_time_ = -1.0;
+  std::vector<shadow::Box> paged_boxes_;
   std::unique_ptr<ExactVisibility> exact_;          // made when first asked for
   shadow::Camera camera_;                            // of the last frame
   shadow::Camera last_camera_;  // of the frame before this one, whose surfaces auto predicts from
