@@ -38,11 +38,21 @@ std::vector<shadow::Method> map_methods(shadow::LightType light) {
 const std::vector<shadow::Method> directional_methods = map_methods(shadow::LightType::directional);
 const std::vector<shadow::Method> point_methods = map_methods(shadow::LightType::point);
 
-// The exact methods: masks of the frame's lit pixels.
-std::vector<shadow::Method> exact_methods() {
+// The methods with no map size to sweep: the masks of the frame's lit pixels (the exact ones and
+// the hybrid, whose map only finds where its volumes count), and the virtual paged map.
+std::vector<shadow::Method> unsized_methods() {
   std::vector<shadow::Method> methods;
   for (const shadow::Technique& t : shadow::techniques()) {
-    if (t.lookup == shadow::Lookup::mask) methods.push_back(t.method);
+    if (t.lookup == shadow::Lookup::mask || t.lookup == shadow::Lookup::pages) methods.push_back(t.method);
+  }
+  return methods;
+}
+
+// The maps flown along the big scene's path: those for its directional light, and the paged ones.
+std::vector<shadow::Method> flight_methods() {
+  std::vector<shadow::Method> methods = directional_methods;
+  for (const shadow::Technique& t : shadow::techniques()) {
+    if (t.lookup == shadow::Lookup::pages) methods.push_back(t.method);
   }
   return methods;
 }
@@ -110,13 +120,14 @@ class ShadowBench {
       if (method == shadow::Method::uniform) continue;
       for (BenchRun& run : equal_error_runs(results_.runs, scene_name, shadow::technique(method).name)) results_.runs.push_back(std::move(run));
     }
-    // The exact methods are points on the chart too: what exactness costs here, one frame each.
-    for (shadow::Method exact : exact_methods()) {
-      Renderer renderer(view.scene, for_scene(settings(exact, 0), view.scene));
+    // The exact methods and the paged map are points on the chart too: what exactness costs here,
+    // and what the frame's own pages do, one frame each.
+    for (shadow::Method unsized : unsized_methods()) {
+      Renderer renderer(view.scene, for_scene(settings(unsized, 0), view.scene));
       BenchRun run = measure_view(renderer, view, time_frames(renderer, view.camera, view.light, view.t, 0, 1));
-      run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", shadow::technique(exact).name}, {"shadow_size", 0}});
+      run.params.update({{"sweep", "tradeoff"}, {"scene", scene_name}, {"method", shadow::technique(unsized).name}, {"shadow_size", 0}});
       results_.runs.push_back(run);
-      crop(renderer, scene_name, shadow::technique(exact).name);
+      crop(renderer, scene_name, shadow::technique(unsized).name);
     }
     progress.step();
   }
@@ -128,7 +139,7 @@ class ShadowBench {
     ExactVisibility exact(scene.meshes, scene.groups);
     const MeasuredView view{scene, exact, scene.camera, scene.lights[0]};
     std::vector<shadow::Method> methods = view.light.type == shadow::LightType::directional ? directional_methods : point_methods;
-    for (shadow::Method m : exact_methods()) methods.push_back(m);
+    for (shadow::Method m : unsized_methods()) methods.push_back(m);
     std::vector<std::unique_ptr<Renderer>> renderers;
     std::vector<Renderer*> timed;
     for (shadow::Method method : methods) {
@@ -182,7 +193,7 @@ class ShadowBench {
   void flythrough(const Scene& scene, ExactVisibility& exact, const CameraPath& path, const std::string& scene_name,
                   Progress& progress) {
     const shadow::Light& light = scene.lights[0];
-    for (shadow::Method method : directional_methods) {
+    for (shadow::Method method : flight_methods()) {
       Renderer renderer(scene, for_scene(settings(method, crop_size), scene));
       for (int f = 0; f < plan_.flight_frames; ++f) {
         const double t = path.duration() * f / std::max(1, plan_.flight_frames - 1);
@@ -324,11 +335,11 @@ int run_bench(const BenchOptions& o) {
   for (const std::string& name : plan.polygon_scenes) {
     polygon_scenes.push_back(load_scene_option(name, o.run.memory_budget_gib));
     const bool directional = polygon_scenes.back().lights.at(0).type == shadow::LightType::directional;
-    polygon_scene_runs += (directional ? methods : point_light_methods) + exact_methods().size();
+    polygon_scene_runs += (directional ? methods : point_light_methods) + unsized_methods().size();
   }
   Progress progress("bench: run", 2 * (methods * plan.sizes.size() + 1) + polygon_scene_runs + angles * methods +
                                       plan.crossing.size() * point_light_methods +
-                                      methods * static_cast<std::size_t>(plan.flight_frames + 1));
+                                      flight_methods().size() * static_cast<std::size_t>(plan.flight_frames + 1));
   bench.trade_off({field, field_exact, field.camera, field.lights[favourable_light]}, "field", true, progress);
   bench.trade_off({big, big_exact, big.camera, big.lights[0]}, plan.big_scene, false, progress);
   for (std::size_t i = 0; i < polygon_scenes.size(); ++i) bench.polygon_scene(polygon_scenes[i], plan.polygon_scenes[i], progress);

@@ -10,7 +10,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 MARKERS = {"uniform": "o", "psm": "s", "lispsm": "^", "cascades": "v", "dpsm": "D", "ipsm": "P", "silhouette": "<",
-           "psm+silhouette": ">", "volumes": "*", "hybrid": "p", "reference": "h", "auto": "X"}
+           "psm+silhouette": ">", "adaptive": "8", "volumes": "*", "hybrid": "p", "reference": "h", "auto": "X"}
 
 
 def runs(results, sweep, **params):
