@@ -37,6 +37,8 @@ struct VirtualMap {
   int pixel_texels = 2;
 
   int pages_per_side(int level) const { return 1 << (levels - 1 - level); }
+  // Texels a side of the finest level.
+  float texels() const { return static_cast<float>(page_texels * pages_per_side(0)); }
   // Texels a side of a page's layer: the page and its guard.
   int layer_texels() const { return page_texels + 2 * guard; }
   // Pages of one view, every level's.

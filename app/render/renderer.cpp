@@ -468,8 +468,12 @@ void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<sha
     receivers_->build_receivers(*occluders_, view_projection_, map_view);
     stages_.end("occlusion");
     // A hybrid's map keeps the frame's polygon plants polygons: its volumes count them near the
-    // map's edges, which points would not have (street, 1024²: err 1.36 -> 0.99 %).
-    gpu_sampler_->add_casters(map_view, shadow_texels(), *receivers_, !setup_.views.front().paraboloid && !mask_);
+    // map's edges, which points would not have (street, 1024²: err 1.36 -> 0.99 %). A paged map's
+    // casters are counted for its finest level, and each tile takes as many as its level asks
+    // (cap_for_map): counted for the tiles' own size, the plants beside and behind the camera cast
+    // scattered dots (the ecosystem path at t = 6 s, 640 × 360: 19.6 % of pixels wrong against 6.2 %).
+    const float texels = pages_ ? pages_->map().texels() * pages_->map().texels() : shadow_texels();
+    gpu_sampler_->add_casters(map_view, texels, *receivers_, !setup_.views.front().paraboloid && !mask_);
     stages_.end("map choice");
   }
 }
