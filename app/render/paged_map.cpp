@@ -1,5 +1,7 @@
 #include "app/render/paged_map.hpp"
 
+#include "app/render/shadow_pass.hpp"
+
 #include <algorithm>
 
 namespace ecoview {
@@ -27,15 +29,7 @@ int PagedMap::most_layers() {
 PagedMap::PagedMap(const shadow::VirtualMap& map, int layers, GLenum depth_format) : map_(map), pool_(map, layers) {
   const GLuint pages = pages_.name();
   glTextureStorage3D(pages, 1, depth_format, map.layer_texels(), map.layer_texels(), pool_.layers());
-  // As ShadowPass's maps: bilinear comparisons, and lit off the layer (the guard keeps the filter on it).
-  glTextureParameteri(pages, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(pages, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(pages, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-  glTextureParameteri(pages, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  glTextureParameteri(pages, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-  glTextureParameteri(pages, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-  const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-  glTextureParameterfv(pages, GL_TEXTURE_BORDER_COLOR, border);
+  make_comparable(pages);  // the guard keeps the filter on its page's layer
 
   const int side = map.pages_per_side(0);
   glTextureStorage3D(table_.name(), map.levels, GL_R32UI, side, side, most_views);

@@ -19,6 +19,18 @@ GLenum internal_format(ShadowDepth depth) {
 
 }  // namespace
 
+void make_comparable(GLuint t) {
+  glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTextureParameteri(t, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  // Outside the map nothing was rendered: depth 1 there reads as lit.
+  glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+  glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+  const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  glTextureParameterfv(t, GL_TEXTURE_BORDER_COLOR, border);
+}
+
 ShadowPass::ShadowPass(int size, DepthBias bias, ShadowDepth depth, bool surface_textures)
     : size_(size),
       bias_(bias),
@@ -36,15 +48,7 @@ void ShadowPass::allocate(int layers) {
   layers_ = layers;
   const GLuint t = depth_.name();
   glTextureStorage3D(t, 1, format_, size_, size_, layers);
-  glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(t, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-  glTextureParameteri(t, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  // Outside the map nothing was rendered: depth 1 there reads as lit.
-  glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-  glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-  const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-  glTextureParameterfv(t, GL_TEXTURE_BORDER_COLOR, border);
+  make_comparable(t);
   glNamedFramebufferDrawBuffer(framebuffer_.name(), GL_NONE);
   glNamedFramebufferReadBuffer(framebuffer_.name(), GL_NONE);
 }

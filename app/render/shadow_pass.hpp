@@ -7,6 +7,10 @@
 
 namespace ecoview {
 
+// Sets a depth texture up as the frame's lighting samples shadow maps: hardware comparisons
+// (sampler2DArrayShadow), filtered bilinearly, and depth 1 (lit) off its edges.
+void make_comparable(GLuint depth_texture);
+
 // Renders the scene's depth as the light sees it, one layer of a square depth-texture array per
 // view of the shadow setup, set up for hardware depth comparison (sampler2DArrayShadow, bilinear
 // PCF), with slope-scaled polygon offset against acne. Paraboloid views tessellate the scene.
