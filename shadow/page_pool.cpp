@@ -8,16 +8,15 @@ PagePool::PagePool(const VirtualMap& map, int layers) : map_(map), slots_(static
 
 PagePool::Frame PagePool::update(const std::vector<std::uint32_t>& requested) {
   ++frame_;
-  std::vector<std::uint32_t> asked = requested;
-  std::sort(asked.begin(), asked.end());
-  asked.erase(std::unique(asked.begin(), asked.end()), asked.end());
-  // Coarser first: they serve wherever finer ones go without.
-  std::stable_sort(asked.begin(), asked.end(),
-                   [this](std::uint32_t a, std::uint32_t b) { return map_.page(a).level > map_.page(b).level; });
+  // Coarser first, as (−level, page): they serve wherever finer ones go without.
+  std::vector<std::pair<int, std::uint32_t>> by_level;
+  for (std::uint32_t id : requested) by_level.emplace_back(-map_.page(id).level, id);
+  std::sort(by_level.begin(), by_level.end());
+  by_level.erase(std::unique(by_level.begin(), by_level.end()), by_level.end());
   Frame frame;
-  frame.requested = static_cast<int>(asked.size());
+  frame.requested = static_cast<int>(by_level.size());
   std::vector<std::uint32_t> missing;
-  for (std::uint32_t id : asked) {
+  for (const auto& [level, id] : by_level) {
     const auto found = held_.find(id);
     if (found == held_.end()) {
       missing.push_back(id);

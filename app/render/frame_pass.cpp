@@ -226,18 +226,19 @@ void FramePass::set_light(const gl::Program& program, const shadow::Light& light
     gl::set_uniform(program, "shadow_size", static_cast<float>(shadow_map->size));
     glBindTextureUnit(setup.selection == shadow::ViewSelection::screen_mask ? 1 : 0, shadow_map->texture);
     if (shadow_map->silhouettes != 0) glBindTextureUnit(silhouette_points_unit, shadow_map->silhouettes);
-    const shadow::VirtualMap& pages = shadow_map->pages;
-    gl::set_uniform(program, "page_levels", pages.levels);
-    gl::set_uniform(program, "page_texels", static_cast<float>(pages.page_texels));
-    gl::set_uniform(program, "page_guard", static_cast<float>(pages.guard));
-    gl::set_uniform(program, "page_pixel_texels", static_cast<float>(pages.pixel_texels));
-    if (shadow_map->page_table != 0) glBindTextureUnit(page_table_unit, shadow_map->page_table);
+    if (shadow_map->page_table != 0) {
+      const shadow::VirtualMap& pages = shadow_map->pages;
+      gl::set_uniform(program, "page_levels", pages.levels);
+      gl::set_uniform(program, "page_texels", static_cast<float>(pages.page_texels));
+      gl::set_uniform(program, "page_guard", static_cast<float>(pages.guard));
+      gl::set_uniform(program, "page_pixel_texels", static_cast<float>(pages.pixel_texels));
+      glBindTextureUnit(page_table_unit, shadow_map->page_table);
+    }
   }
 }
 
 void FramePass::request_pages(const shadow::Camera& camera, const shadow::Light& light, const ShadowLookup& pages) const {
-  ShadeVariant variant = shade_variant(pages);
-  variant.pages = true;
+  const ShadeVariant variant = shade_variant(pages);
   auto found = request_programs_.find(variant);
   if (found == request_programs_.end()) {
     found = request_programs_.emplace(variant, gl::build_program({"page_requests.comp"}, defines(variant))).first;

@@ -68,7 +68,7 @@ class FramePass {
   std::vector<float> predict_aliasing(const shadow::Camera& surface_camera, const shadow::Camera& camera, const shadow::Light& light,
                                       const std::vector<shadow::ShadowSetup>& setups, int map_size, float fraction) const;
 
-  // The pages of the virtual map `pages` (its page_table unset) that the lighting will look up for
+  // The pages of the virtual map `pages` (its page table not yet filled) that the lighting will look up for
   // the frame's surfaces, appended once each as page numbers (shadow::VirtualMap::id) to the list
   // bound at storage binding 28 (a count, then the numbers), flagged in the array at binding 27,
   // which starts at zero (shaders/page_requests.comp).

@@ -57,6 +57,7 @@ void PagedMap::request(const FramePass& frame, const shadow::Camera& camera, con
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, flags_binding, flags_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, list_binding, list_.name());
   FramePass::ShadowLookup asking{pages_.name(), setup, map_.layer_texels()};
+  asking.page_table = table_.name();  // last frame's: the requests read only the map's shape
   asking.pages = map_;
   frame.request_pages(camera, light, asking);
 

@@ -90,14 +90,16 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       frame_pass_(settings.width, settings.height, settings.aliasing, gpu_scene_.has_surface_textures()),
       frame_points_({settings.width, settings.height}) {
   make_method_passes();
-  for (const pointgen::TriangleMesh& mesh : scene.meshes) {
-    shadow::Box box;
-    for (const glm::vec3& p : mesh.positions) box.add(p);
-    mesh_boxes_.push_back(box);
-  }
+  // A moving set's groups are its bodies' parts, one mesh each (scene_file.cpp).
+  mesh_boxes_.resize(scene.meshes.size());
   for (const Animation& animation : scene.animations) {
-    const std::size_t parts = animation.set.pose(0.0, animation.first_mesh).size();
-    for (std::size_t i = 0; i < parts; ++i) moving_groups_.push_back(animation.first_group + i);
+    std::size_t parts = 0;
+    for (const pointgen::Body& body : animation.set.bodies) parts += body.parts.size();
+    for (std::size_t i = 0; i < parts; ++i) {
+      moving_groups_.push_back(animation.first_group + i);
+      const pointgen::Bounds b = scene.meshes[animation.first_mesh + i].bounds();
+      mesh_boxes_[animation.first_mesh + i] = {b.min, b.max};
+    }
   }
   if (settings.point_meshes_only) {
     for (std::size_t g = 0; g < tables_.size(); ++g) {
@@ -275,8 +277,8 @@ void Renderer::draw_map_view(const shadow::ShadowSetup& setup, int layer, const 
 }
 
 void Renderer::request_pages(const shadow::Camera& camera, const shadow::Light& light) {
-  std::vector<shadow::Box> boxes = moving_boxes();
-  if (time_ != paged_time_ && !boxes.empty()) {
+  if (time_ != paged_time_ && !moving_groups_.empty()) {
+    std::vector<shadow::Box> boxes = moving_boxes();
     std::vector<std::vector<glm::vec4>> moved(setup_.views.size());
     for (std::size_t v = 0; v < setup_.views.size(); ++v) {
       for (const std::vector<shadow::Box>* posed : {&paged_boxes_, &boxes}) {
@@ -284,8 +286,8 @@ void Renderer::request_pages(const shadow::Camera& camera, const shadow::Light& 
       }
     }
     pages_->invalidate(moved);
+    paged_boxes_ = std::move(boxes);
   }
-  paged_boxes_ = std::move(boxes);
   paged_time_ = time_;
   pages_->request(frame_pass_, camera, light, setup_);
   stages_.end("map pages");

@@ -218,7 +218,7 @@ class Renderer {
   std::unique_ptr<MaskTechnique> mask_;             // the method's, where its lookup is a mask
   std::unique_ptr<PagedMap> pages_;                 // the method's, where its lookup is pages
   std::vector<std::size_t> moving_groups_;          // the tables the scene's animations pose
-  std::vector<shadow::Box> mesh_boxes_;             // of the scene's meshes, in their own space
+  std::vector<shadow::Box> mesh_boxes_;             // of the moving groups' meshes, in their own space
   double time_ = 0.0;                               // of the frame being drawn
   // The time of the frame that last asked for pages and its moving instances' boxes then.
   double paged_time_ = -1.0;
