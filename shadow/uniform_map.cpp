@@ -73,13 +73,9 @@ ShadowSetup cube_faces(const glm::vec3& light, const FocusBodies& bodies, int ma
   return setup;
 }
 
-}  // namespace
-
-ShadowSetup focused_uniform_map(const ShadowInputs& in) {
-  const FocusBodies& bodies = in.bodies_or_scene;
-  const Light& light = in.light;
-  const glm::vec3 forward = in.camera.forward();
-
+// Orthographic for a directional light, perspective otherwise, fitted to `bodies`; `forward`
+// orients the map's rows.
+ShadowSetup uniform_map(const FocusBodies& bodies, const Light& light, const glm::vec3& forward, int map_size) {
   switch (light.type) {
     case LightType::directional: {
       const glm::vec3 axis = glm::normalize(light.direction);
@@ -94,13 +90,24 @@ ShadowSetup focused_uniform_map(const ShadowInputs& in) {
     case LightType::point: {
       const Cone cone = cone_around(light.position, bodies.receivers.vertices());
       if (cone.cos_half_angle < std::cos(glm::radians(max_single_map_half_angle_deg))) {
-        return cube_faces(light.position, bodies, in.map_size);
+        return cube_faces(light.position, bodies, map_size);
       }
       const glm::mat4 view = glm::lookAt(light.position, light.position + cone.axis, light_up(cone.axis, forward));
       return {{fit_perspective(view, std::tan(glm::radians(max_single_map_half_angle_deg)), bodies)}};
     }
   }
   return {};
+}
+
+}  // namespace
+
+ShadowSetup focused_uniform_map(const ShadowInputs& in) {
+  return uniform_map(in.bodies_or_scene, in.light, in.camera.forward(), in.map_size);
+}
+
+ShadowSetup lit_scene_map(const ShadowInputs& in) {
+  const glm::vec3 world_forward(0.0f, 0.0f, -1.0f);
+  return uniform_map(or_scene({}, in.light, in.scene), in.light, world_forward, in.map_size);
 }
 
 }  // namespace shadow

@@ -12,4 +12,9 @@ namespace shadow {
 // faces of a cube instead.
 ShadowSetup focused_uniform_map(const ShadowInputs& in);
 
+// The uniform map of all the scene the light reaches, its rows along the world's −z: it depends
+// on the light and the scene alone, not on the camera, so the pages of a virtual map over it
+// (--method adaptive) stay valid while the camera moves.
+ShadowSetup lit_scene_map(const ShadowInputs& in);
+
 }  // namespace shadow

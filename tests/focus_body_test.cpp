@@ -71,6 +71,36 @@ TEST(FocusedMap, SpotReceiversInsideTheConeLandInsideTheMap) {
   EXPECT_GT(checked, 100);
 }
 
+// The map a virtual paged map is cut from depends on the light and the scene alone: two random
+// cameras get the same views, and every corner of the lit scene lands inside its view's clip cube.
+TEST(LitSceneMap, IsTheSameForEveryCameraAndHoldsAllTheLitScene) {
+  pointgen::Random rng(11);
+  int checked = 0;
+  for (int i = 0; i < 300; ++i) {
+    const LightType type = i % 3 == 0 ? LightType::directional : i % 3 == 1 ? LightType::spot : LightType::point;
+    const Light light = random_light(rng, type);
+    const ShadowSetup one = lit_scene_map({random_camera(rng), 1.5f, light, scene_box(), 1024});
+    const ShadowSetup other = lit_scene_map({random_camera(rng), 0.8f, light, scene_box(), 1024});
+    ASSERT_EQ(one.views.size(), other.views.size());
+    for (std::size_t v = 0; v < one.views.size(); ++v) {
+      ASSERT_TRUE(finite(one.views[v].view_projection()));
+      EXPECT_EQ(one.views[v].view_projection(), other.views[v].view_projection()) << "light " << i << ", view " << v;
+    }
+    for (const glm::vec3& p : or_scene({}, light, scene_box()).receivers.vertices()) {
+      if (type != LightType::directional && glm::distance(p, light.position) < 0.01f) continue;  // the apex: no direction
+      if (type == LightType::spot &&
+          glm::dot(glm::normalize(p - light.position), light.direction) < std::cos(glm::radians(light.cone_deg))) {
+        continue;  // in the light's square pyramid, outside its cone: unlit
+      }
+      const glm::vec4 clip = one.views[view_for(one, light, p, 1024)].view_projection() * glm::vec4(p, 1.0f);
+      ASSERT_GT(clip.w, 0.0f) << "light " << i;
+      EXPECT_LE(glm::max(std::abs(clip.x), std::abs(clip.y)) / clip.w, 1.0001f) << "light " << i;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 1000);
+}
+
 constexpr float wide = 16.0f / 9.0f;
 
 // The focused uniform map is fitted to the receivers (with 1% padding), not to the scene: their
