@@ -7,10 +7,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "shadow_views.glsl"
 #include "surface_position.glsl"
 
-layout(std430, binding = 27) buffer PageFlags { uint page_flags[]; };  // 1 once a page is listed
+layout(std430, binding = 27) buffer PageFlags { uint page_flags[]; };  // 1 once a slot is listed
 layout(std430, binding = 28) buffer PageList {
   uint requested_count;
-  uint requested[];  // page numbers (page_id)
+  uint requested[];  // the pages' slots (page_slot)
 };
 
 void request(ivec2 pixel, float depth, vec3 n) {
@@ -25,7 +25,8 @@ void request(ivec2 pixel, float depth, vec3 n) {
   if (clip.w <= 0.0) return;
   vec2 ndc = clip.xy / clip.w;
   if (any(greaterThan(abs(ndc), vec2(1.0)))) return;
-  uint id = page_id(view, level, page_at(ndc, level));
+  level = addressed_level(view, ndc, level);
+  uint id = page_slot(view, level, page_at(ndc, level));
   if (page_flags[id] == 0u && atomicExchange(page_flags[id], 1u) == 0u) requested[atomicAdd(requested_count, 1u)] = id;
 }
 

@@ -2,12 +2,16 @@
 // (lighting.glsl) and its page requests (page_requests.comp) see it: each view of the setup is a
 // virtual map of page_texels · 2^(page_levels − 1) texels a side, in levels like mipmaps, cut
 // into pages; the pages drawn lie each in a layer of the shadow map, with page_guard texels of
-// their neighbours around them. Needs shadow_views.glsl.
+// their neighbours around them. The frame addresses page_window pages a side of each level,
+// around the camera. Needs shadow_views.glsl.
 uniform int page_levels;
 uniform float page_texels;
 uniform float page_guard;
 uniform float page_pixel_texels;
-// Per view (layer) and level (mip level): the layer holding each page, no_page where none does.
+uniform int page_window;
+// Where each level's window starts, view by view, level by level (at most 6 views of 16 levels).
+uniform ivec2 page_window_origins[96];
+// A layer per view's level: the layer holding each page of its window, no_page where none does.
 layout(binding = 17) uniform usampler2DArray page_table;
 const uint no_page = 0xFFFFFFFFu;
 
@@ -37,16 +41,21 @@ ivec2 page_at(vec2 ndc, int level) {
   return clamp(ivec2(floor((ndc * 0.5 + 0.5) * float(side))), ivec2(0), ivec2(side - 1));
 }
 
-// A page's number among every view's, as shadow::VirtualMap::id numbers it: view by view, level by
-// level from the finest, row by row.
-uint page_id(int view, int level, ivec2 page) {
-  uint before = 0u, per_view = 0u;
-  for (int l = 0; l < page_levels; ++l) {
-    uint pages = uint(pages_per_side(l) * pages_per_side(l));
-    if (l < level) before += pages;
-    per_view += pages;
-  }
-  return uint(view) * per_view + before + uint(page.y * pages_per_side(level) + page.x);
+// A page's place in its level's window; outside it where a coordinate is negative or page_window or more.
+ivec2 in_window(int view, int level, ivec2 page) { return page - page_window_origins[view * page_levels + level]; }
+bool window_holds(ivec2 at) { return all(greaterThanEqual(at, ivec2(0))) && all(lessThan(at, ivec2(page_window))); }
+
+// A page's slot, as shadow::VirtualMap::slot numbers them: view by view, level by level, row by row
+// of the level's window.
+uint page_slot(int view, int level, ivec2 page) {
+  ivec2 at = in_window(view, level, page);
+  return uint(((view * page_levels + level) * page_window + at.y) * page_window + at.x);
+}
+
+// The finest level at `level` or coarser whose window holds the page at `ndc`.
+int addressed_level(int view, vec2 ndc, int level) {
+  while (level + 1 < page_levels && !window_holds(in_window(view, level, page_at(ndc, level)))) ++level;
+  return level;
 }
 
 struct ResidentPage {
@@ -59,7 +68,9 @@ struct ResidentPage {
 ResidentPage resident_page(int view, vec2 ndc, int level) {
   for (int l = level; l < page_levels; ++l) {
     ivec2 page = page_at(ndc, l);
-    uint layer = texelFetch(page_table, ivec3(page, view), l).r;
+    ivec2 at = in_window(view, l, page);
+    if (!window_holds(at)) continue;
+    uint layer = texelFetch(page_table, ivec3(at, view * page_levels + l), 0).r;
     if (layer == no_page) continue;
     vec2 in_page = (ndc * 0.5 + 0.5) * float(pages_per_side(l)) - vec2(page);
     return ResidentPage(l, int(layer), (in_page * page_texels + page_guard) / (page_texels + 2.0 * page_guard));

@@ -39,7 +39,8 @@ const std::vector<Technique>& techniques() {
        Lookup::map, every_light, LastFrame::nearest_depth, true, perspective_shadow_map, true},
       {Method::adaptive, "adaptive",
        "adaptive shadow map (Fernando et al. 2001) as a virtual map paged like production engines page theirs: the "
-       "uniform map of the lit scene (the same views whatever the camera) at 65,536 texels a side, in levels; each pixel asks for the page whose texels are "
+       "uniform map of the lit scene (the same views whatever the camera) at 524,288 texels a side in 12 levels, the fine ones "
+       "addressed in windows around the camera as clipmaps; each pixel asks for the page whose texels are "
        "a pixel wide or finer there, and only the pages asked for are drawn, after the frame's surfaces, and kept "
        "across frames in a pool of layers (--page-pool)",
        Lookup::pages, every_light, LastFrame::nothing, false, lit_scene_map},

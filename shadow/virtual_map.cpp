@@ -33,6 +33,39 @@ Page VirtualMap::page(std::uint32_t id) const {
   return p;
 }
 
+std::vector<glm::ivec2> VirtualMap::window_origins(const std::vector<ShadowView>& views, const glm::vec3& eye) const {
+  std::vector<glm::ivec2> origins;
+  for (const ShadowView& view : views) {
+    const glm::vec4 clip = view.clip(eye);
+    const glm::vec2 at = clip.w > 0.0f ? glm::clamp(glm::vec2(clip) / clip.w, -1.0f, 1.0f) * 0.5f + 0.5f : glm::vec2(0.5f);
+    for (int level = 0; level < levels; ++level) {
+      const int side = pages_per_side(level);
+      const glm::ivec2 page = glm::min(glm::ivec2(at * static_cast<float>(side)), side - 1);
+      origins.push_back(glm::clamp(page - window_pages(level) / 2, 0, side - window_pages(level)));
+    }
+  }
+  return origins;
+}
+
+Page VirtualMap::slot_page(std::uint32_t slot, const std::vector<glm::ivec2>& origins) const {
+  const auto side = static_cast<std::uint32_t>(window);
+  const std::uint32_t grid = slot / (side * side);
+  const glm::ivec2 origin = origins[grid];
+  return {static_cast<int>(grid) / levels, static_cast<int>(grid) % levels, origin.x + static_cast<int>(slot % side),
+          origin.y + static_cast<int>(slot / side % side)};
+}
+
+std::optional<std::uint32_t> VirtualMap::slot(const Page& p, const std::vector<glm::ivec2>& origins) const {
+  const std::size_t grid = static_cast<std::size_t>(p.view * levels + p.level);
+  if (grid >= origins.size()) return std::nullopt;
+  const glm::ivec2 at = glm::ivec2(p.x, p.y) - origins[grid];
+  if (glm::any(glm::lessThan(at, glm::ivec2(0))) || glm::any(glm::greaterThanEqual(at, glm::ivec2(window_pages(p.level))))) {
+    return std::nullopt;
+  }
+  return static_cast<std::uint32_t>((grid * static_cast<std::size_t>(window) + static_cast<std::size_t>(at.y)) * static_cast<std::size_t>(window) +
+                                    static_cast<std::size_t>(at.x));
+}
+
 // The tile's map starts `guard` texels before its first page; a level's texel is 2 / its texels
 // a side in the base view's normalized coordinates. The crop is a scale and shift of clip x and y.
 ShadowView VirtualMap::tile_view(const ShadowView& base, const PageTile& tile, int texels) const {

@@ -2,7 +2,9 @@
 #include "shadow/box.hpp"
 #include "shadow/shadow_setup.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 // A virtual shadow map paged by what the frame needs (--method adaptive): the adaptive shadow
@@ -11,6 +13,11 @@
 // texels are 2^l of the finest's), each level cut into square pages. Only the pages the frame's
 // pixels ask for are drawn, each into a layer of its own with `guard` texels of its neighbours
 // around it, so that the lookup's filter never leaves the page.
+//
+// A frame addresses at most `window` pages a side of a level: the window around the page under
+// the camera, as clipmaps keep their levels around the viewer. The coarse levels fit whole; the
+// fine ones reach only as far as pixels near the camera ask for them, so the page table and the
+// requests stay small however fine the finest level is.
 namespace shadow {
 
 // A page: which view's virtual map, the level, the column and row (from the map's −x, −y corner).
@@ -30,15 +37,32 @@ struct PageTile {
 };
 
 struct VirtualMap {
-  int levels = 9;         // the finest, 0, has 2^(levels − 1) pages a side; the coarsest one
+  int levels = 12;        // the finest, 0, has 2^(levels − 1) pages a side; the coarsest one
   int page_texels = 256;  // a page's own texels a side
   int guard = 4;          // texels of the neighbours around a page, for the filter's taps
   // A pixel asks for the coarsest level whose texels are this many or more to its width there.
   int pixel_texels = 2;
+  int window = 128;  // pages a side a frame addresses of each level, around the camera
+  // The casters out of the frame's view get points for this many texels a side over the whole
+  // map, each tile capping them to its own level: the finest level's would give each such plant
+  // its whole sample list.
+  float caster_texels = 65536.0f;
 
   int pages_per_side(int level) const { return 1 << (levels - 1 - level); }
   // Texels a side of the finest level.
   float texels() const { return static_cast<float>(page_texels * pages_per_side(0)); }
+  // Pages a side of a level's window: the whole level where it fits.
+  int window_pages(int level) const { return std::min(pages_per_side(level), window); }
+  // Where each level's window starts, view by view and level by level: around the page under
+  // `eye` in each view's image (the image's centre where the eye is behind a view's centre of
+  // projection), inside the level.
+  std::vector<glm::ivec2> window_origins(const std::vector<ShadowView>& views, const glm::vec3& eye) const;
+  // The frame's slots: a `window` × `window` grid a level, view by view, level by level, row by
+  // row; a page's slot is its place in its level's window (`origins` from window_origins).
+  std::uint32_t slots_per_view() const { return static_cast<std::uint32_t>(levels * window * window); }
+  Page slot_page(std::uint32_t slot, const std::vector<glm::ivec2>& origins) const;
+  // The page's slot, where its level's window holds it.
+  std::optional<std::uint32_t> slot(const Page& page, const std::vector<glm::ivec2>& origins) const;
   // Texels a side of a page's layer: the page and its guard.
   int layer_texels() const { return page_texels + 2 * guard; }
   // Pages of one view, every level's.

@@ -154,6 +154,38 @@ TEST(AdaptiveShadows, MatchTheVolumesAcrossPageBorders) {
   }
 }
 
+// On a plane 2 km wide, a camera at eye height asks for the finest levels near it and for coarse
+// ones at posts far off; a telephoto camera asks for fine levels far off, beyond the windows a frame
+// addresses of them (shadow::VirtualMap::window), and gets the finest level its windows hold. Both
+// see the volumes' shadows wherever a pixel is not on the volumes' shadow edge.
+TEST(AdaptiveShadows, MatchTheVolumesNearTheCameraAndFarFromItOnAWidePlane) {
+  const auto context = create_headless_context("egl");
+  std::string posts;
+  for (const float z : {-4.0f, -7.0f, -12.0f, -60.0f, -150.0f, -400.0f}) {
+    const float half = 0.1f - z * 0.01f;
+    for (const float x : {-3.0f, 0.5f, 4.0f}) {
+      const float cx = x * (1.0f - z * 0.05f);
+      posts += R"(, {"type": "box", "min": [)" + std::to_string(cx - half) + ", 0, " + std::to_string(z - half) + "], \"max\": [" +
+               std::to_string(cx + half) + ", " + std::to_string(8.0f * half) + ", " + std::to_string(z + half) + "]}";
+    }
+  }
+  const shadow::VirtualMap map;
+  ASSERT_GT(map.pages_per_side(0), map.window);  // the finest levels are windowed
+  for (const std::string camera : {R"({"position": [0, 1.7, 0], "target": [0, 0.8, -30], "fov_y_deg": 60, "near": 0.1, "far": 1500})",
+                                   R"({"position": [0, 1.7, 0], "target": [3, 0.5, -150], "fov_y_deg": 4, "near": 1, "far": 1500})"}) {
+    const std::string json = R"({"camera": )" + camera + R"(, "lights": [{"type": "directional", "direction": [0.5, -0.6, -0.4]}],
+      "objects": [{"type": "plane", "center": [0, 0, 0], "size": [2000, 2000]})" + posts + "]}";
+    const Scene scene = load_scene({"wide.json", json, [](const std::string&) { return std::nullopt; }});
+    Renderer adaptive(scene, {640, 480, 512, shadow::Method::adaptive});
+    adaptive.render(scene.camera, scene.lights[0]);
+    const Image8 seen = adaptive.frame().read_visibility(), volumes = rendered_visibility(scene, shadow::Method::volumes, 512);
+    std::cout << "fov " << scene.camera.fov_y_deg << "°: " << adaptive.stats().pages.requested << " pages; pixels that differ from the volumes "
+              << binary_differences(seen, volumes) << ", away from their edges " << differences_away_from_edges(seen, volumes) << "\n";
+    EXPECT_GE(adaptive.stats().pages.requested, 8);
+    EXPECT_EQ(differences_away_from_edges(seen, volumes), 0u);
+  }
+}
+
 // A still camera keeps the pages it drew: the same frame again draws none, and a later one draws
 // again only the pages its moving people and cars were or are over, yet shows what a renderer that
 // draws every page shows.

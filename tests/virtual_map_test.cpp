@@ -101,6 +101,62 @@ std::vector<std::uint32_t> ids_of(const VirtualMap& map, const std::vector<Page>
   return ids;
 }
 
+// Windows of 4 pages a side over levels of 32, 16, 8, 4, 2 and 1: the eye's page is in every
+// level's window, each window lies inside its level, and the coarse levels fit whole.
+TEST(VirtualMap, EachLevelsWindowHoldsThePageUnderTheEyeAndStaysInsideTheLevel) {
+  VirtualMap map{6, 16, 2};
+  map.window = 4;
+  const ShadowView view(glm::lookAt(glm::vec3(0, 10, 0), glm::vec3(0), glm::vec3(0, 0, -1)),
+                        glm::ortho(-50.0f, 50.0f, -50.0f, 50.0f, 1.0f, 30.0f));
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> across(-60.0f, 60.0f);
+  for (int round = 0; round < 200; ++round) {
+    const glm::vec3 eye(across(rng), 2.0f, across(rng));
+    const std::vector<glm::ivec2> origins = map.window_origins({view}, eye);
+    ASSERT_EQ(origins.size(), static_cast<std::size_t>(map.levels));
+    const glm::vec4 clip = view.clip(eye);
+    const glm::vec2 at = glm::clamp(glm::vec2(clip) / clip.w, -0.999f, 0.999f) * 0.5f + 0.5f;
+    for (int level = 0; level < map.levels; ++level) {
+      const int side = map.pages_per_side(level);
+      const glm::ivec2 origin = origins[static_cast<std::size_t>(level)];
+      const glm::ivec2 eye_page(at * static_cast<float>(side));
+      EXPECT_TRUE(map.slot({0, level, eye_page.x, eye_page.y}, origins).has_value()) << "level " << level;
+      EXPECT_GE(glm::min(origin.x, origin.y), 0);
+      EXPECT_LE(glm::max(origin.x, origin.y) + map.window_pages(level), side);
+      if (side <= map.window) EXPECT_EQ(origin, glm::ivec2(0));
+    }
+  }
+}
+
+// Every page a window holds has a slot of its own that gives it back; pages outside have none.
+TEST(VirtualMap, APageInItsWindowHasASlotThatGivesItBack) {
+  VirtualMap map{5, 16, 2};
+  map.window = 4;
+  const std::vector<glm::ivec2> origins = {{3, 9}, {1, 2}, {0, 0}, {0, 0}, {0, 0},   // view 0, levels 0 to 4
+                                           {12, 0}, {4, 4}, {0, 0}, {0, 0}, {0, 0}};  // view 1
+  std::set<std::uint32_t> slots;
+  int held = 0;
+  for (int view = 0; view < 2; ++view) {
+    for (int level = 0; level < map.levels; ++level) {
+      const glm::ivec2 origin = origins[static_cast<std::size_t>(view * map.levels + level)];
+      for (int y = 0; y < map.pages_per_side(level); ++y) {
+        for (int x = 0; x < map.pages_per_side(level); ++x) {
+          const Page page{view, level, x, y};
+          const bool inside = x >= origin.x && y >= origin.y && x < origin.x + map.window && y < origin.y + map.window;
+          const std::optional<std::uint32_t> slot = map.slot(page, origins);
+          ASSERT_EQ(slot.has_value(), inside) << view << " " << level << " " << x << " " << y;
+          if (!slot) continue;
+          EXPECT_LT(*slot, 2u * map.slots_per_view());
+          EXPECT_EQ(map.slot_page(*slot, origins), page);
+          slots.insert(*slot);
+          ++held;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(slots.size(), static_cast<std::size_t>(held));
+}
+
 TEST(PagePool, KeepsDrawnPagesForTheFramesThatAskAgain) {
   const VirtualMap map = small_map();
   PagePool pool(map, 8);

@@ -98,7 +98,7 @@ ShadowDepth parse_shadow_depth(const std::string& name) {
 void add_render_options(CLI::App& command, RenderOptions& o) {
   command.add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
   command.add_option("--shadow-size", o.shadow_size, "Shadow map size in texels (square); --method adaptive keeps virtual "
-                                                       "maps of 65,536 texels a side whatever this")->capture_default_str();
+                                                       "maps of 524,288 texels a side whatever this")->capture_default_str();
   command.add_option("--method", o.method, "Shadow method: " + method_help())->capture_default_str();
   command.add_option("--geometry", o.geometry, "points: far plants, people and animals as view-adaptive point "
                                                "splats; polygons: everything as polygons (plants culled to each view as the points are)")->capture_default_str();

@@ -5,6 +5,8 @@
 #include "app/render/buffer_texture_units.hpp"
 #include "app/scene/scene_fields.hpp"
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -232,6 +234,12 @@ void FramePass::set_light(const gl::Program& program, const shadow::Light& light
       gl::set_uniform(program, "page_texels", static_cast<float>(pages.page_texels));
       gl::set_uniform(program, "page_guard", static_cast<float>(pages.guard));
       gl::set_uniform(program, "page_pixel_texels", static_cast<float>(pages.pixel_texels));
+      gl::set_uniform(program, "page_window", pages.window);
+      const std::vector<glm::ivec2>& windows = shadow_map->page_windows;
+      if (!windows.empty()) {
+        glProgramUniform2iv(program.name(), glGetUniformLocation(program.name(), "page_window_origins"),
+                            static_cast<GLsizei>(windows.size()), glm::value_ptr(windows.front()));
+      }
       glBindTextureUnit(page_table_unit, shadow_map->page_table);
     }
   }

@@ -31,15 +31,14 @@ PagedMap::PagedMap(const shadow::VirtualMap& map, int layers, GLenum depth_forma
   glTextureStorage3D(pages, 1, depth_format, map.layer_texels(), map.layer_texels(), pool_.layers());
   make_comparable(pages);  // the guard keeps the filter on its page's layer
 
-  const int side = map.pages_per_side(0);
-  glTextureStorage3D(table_.name(), map.levels, GL_R32UI, side, side, most_views);
-  glTextureParameteri(table_.name(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  glTextureStorage3D(table_.name(), 1, GL_R32UI, map.window, map.window, most_views * map.levels);
+  glTextureParameteri(table_.name(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(table_.name(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 
-  const std::size_t every_page = static_cast<std::size_t>(map.pages_per_view()) * most_views;
-  zeros_.assign(every_page, 0u);
+  const std::size_t every_slot = static_cast<std::size_t>(map.slots_per_view()) * most_views;
+  zeros_.assign(every_slot, 0u);
   gl::store(flags_, zeros_, GL_DYNAMIC_STORAGE_BIT);
-  gl::store(list_, std::vector<GLuint>(every_page + 1, 0u), GL_DYNAMIC_STORAGE_BIT);
+  gl::store(list_, std::vector<GLuint>(every_slot + 1, 0u), GL_DYNAMIC_STORAGE_BIT);
 }
 
 void PagedMap::request(const FramePass& frame, const shadow::Camera& camera, const shadow::Light& light,
@@ -49,9 +48,10 @@ void PagedMap::request(const FramePass& frame, const shadow::Camera& camera, con
     views_ = setup.views;
   }
   const int views = std::min(static_cast<int>(setup.views.size()), most_views);
-  const auto pages = static_cast<std::size_t>(map_.pages_per_view()) * static_cast<std::size_t>(views);
+  origins_ = map_.window_origins({setup.views.begin(), setup.views.begin() + views}, camera.position);
+  const auto slots = static_cast<std::size_t>(map_.slots_per_view()) * static_cast<std::size_t>(views);
   // Uploaded, not cleared: on llvmpipe a clear could land after the pass behind it.
-  glNamedBufferSubData(flags_.name(), 0, static_cast<GLsizeiptr>(pages * sizeof(GLuint)), zeros_.data());
+  glNamedBufferSubData(flags_.name(), 0, static_cast<GLsizeiptr>(slots * sizeof(GLuint)), zeros_.data());
   const GLuint none = 0;
   glNamedBufferSubData(list_.name(), 0, sizeof none, &none);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, flags_binding, flags_.name());
@@ -59,14 +59,16 @@ void PagedMap::request(const FramePass& frame, const shadow::Camera& camera, con
   FramePass::ShadowLookup asking{pages_.name(), setup, map_.layer_texels()};
   asking.page_table = table_.name();  // last frame's: the requests read only the map's shape
   asking.pages = map_;
+  asking.page_windows = origins_;
   frame.request_pages(camera, light, asking);
 
   GLuint count = 0;
   glGetNamedBufferSubData(list_.name(), 0, sizeof count, &count);
-  std::vector<std::uint32_t> ids(std::min<std::size_t>(count, pages));
+  std::vector<std::uint32_t> ids(std::min<std::size_t>(count, slots));
   if (!ids.empty()) {
     glGetNamedBufferSubData(list_.name(), sizeof count, static_cast<GLsizeiptr>(ids.size() * sizeof(GLuint)), ids.data());
   }
+  for (std::uint32_t& id : ids) id = map_.id(map_.slot_page(id, origins_));
   // Every view's coarsest page, one for the whole map: the lookup's last resort.
   for (int v = 0; v < views; ++v) ids.push_back(map_.id({v, map_.levels - 1, 0, 0}));
   frame_ = pool_.update(ids);
@@ -101,22 +103,19 @@ FramePass::ShadowLookup PagedMap::lookup(const shadow::ShadowSetup& setup) {
   FramePass::ShadowLookup lookup{pages_.name(), setup, map_.layer_texels()};
   lookup.page_table = table_.name();
   lookup.pages = map_;
+  lookup.page_windows = origins_;
   return lookup;
 }
 
-// Laid out as VirtualMap::id numbers the pages: view by view, level by level, row by row.
+// A layer a view's level, as the slots are numbered; the pages held outside this frame's windows
+// stay in the pool, out of the table.
 void PagedMap::upload_table(int views) {
-  std::vector<GLuint> table(static_cast<std::size_t>(map_.pages_per_view()) * static_cast<std::size_t>(views), 0xFFFFFFFFu);
+  std::vector<GLuint> table(static_cast<std::size_t>(map_.slots_per_view()) * static_cast<std::size_t>(views), 0xFFFFFFFFu);
   for (const auto& [id, layer] : pool_.held()) {
-    if (id < table.size()) table[id] = static_cast<GLuint>(layer);
+    if (const auto slot = map_.slot(map_.page(id), origins_); slot && *slot < table.size()) table[*slot] = static_cast<GLuint>(layer);
   }
-  for (int v = 0; v < views; ++v) {
-    for (int level = 0; level < map_.levels; ++level) {
-      const int side = map_.pages_per_side(level);
-      const std::size_t first = static_cast<std::size_t>(v) * map_.pages_per_view() + map_.level_offset(level);
-      glTextureSubImage3D(table_.name(), level, 0, 0, v, side, side, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, &table[first]);
-    }
-  }
+  glTextureSubImage3D(table_.name(), 0, 0, 0, 0, map_.window, map_.window, views * map_.levels, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                      table.data());
 }
 
 }  // namespace ecoview

@@ -21,7 +21,8 @@ class PagedMap {
   // `layers` pages (the pool); `depth_format`: the shadow pass's, whose layers pages are copied from.
   PagedMap(const shadow::VirtualMap& map, int layers, GLenum depth_format);
   // The pages the frame's surfaces ask for, one virtual map a view of `setup`, given layers; where
-  // the views changed since the last frame every page is drawn again.
+  // the views changed since the last frame every page is drawn again. The levels' windows follow
+  // the camera.
   void request(const FramePass& frame, const shadow::Camera& camera, const shadow::Light& light, const shadow::ShadowSetup& setup);
   // Pages whose casters moved are drawn again when next asked for: those of a view over any of
   // the light-space boxes `moved` (per view, in its normalized coordinates, xy min and max).
@@ -44,8 +45,9 @@ class PagedMap {
   shadow::PagePool pool_;
   shadow::PagePool::Frame frame_;
   std::vector<shadow::ShadowView> views_;  // of the last request
+  std::vector<glm::ivec2> origins_;         // its levels' windows (VirtualMap::window_origins)
   gl::Texture pages_{GL_TEXTURE_2D_ARRAY};
-  gl::Texture table_{GL_TEXTURE_2D_ARRAY};  // a layer a view, a mip level a level
+  gl::Texture table_{GL_TEXTURE_2D_ARRAY};  // a layer a view's level: its window's pages
   gl::Buffer flags_, list_;
   std::vector<GLuint> zeros_;  // the flags as each request starts
 };

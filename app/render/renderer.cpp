@@ -474,7 +474,7 @@ void Renderer::sample_on_gpu(const shadow::Camera& camera, const std::vector<sha
     // casters are counted for its finest level, and each tile takes as many as its level asks
     // (cap_for_map): counted for the tiles' own size, the plants beside and behind the camera cast
     // scattered dots (the ecosystem path at t = 6 s, 640 × 360: 19.6 % of pixels wrong against 6.2 %).
-    const float texels = pages_ ? pages_->map().texels() * pages_->map().texels() : shadow_texels();
+    const float texels = pages_ ? pages_->map().caster_texels * pages_->map().caster_texels : shadow_texels();
     gpu_sampler_->add_casters(map_view, texels, *receivers_, !setup_.views.front().paraboloid && !mask_);
     stages_.end("map choice");
   }
