@@ -229,7 +229,7 @@ class ShadowBench {
                    const std::string& scene_name, shadow::Method method) {
     const double start = 0.5 * path.duration();
     Image8 last_frame, last_reference;
-    double changed = 0.0, reference_changed = 0.0;
+    double changed = 0.0, reference_changed = 0.0, unlike_reference = 0.0;
     renderer.render(path.at(start, scene.camera), scene.lights[0], start);  // a last frame for the PSM
     for (int f = 0; f < plan_.flicker_frames; ++f) {
       const double t = start + f / 30.0;
@@ -240,6 +240,7 @@ class ShadowBench {
       if (f > 0) {
         changed += changed_shadow(last_frame, frame, depth);
         reference_changed += changed_shadow(last_reference, exact, depth);
+        unlike_reference += temporal_err(last_frame, frame, last_reference, exact, depth);
       }
       last_frame = std::move(frame);
       last_reference = std::move(exact);
@@ -249,7 +250,7 @@ class ShadowBench {
     run.params = {{"sweep", "flicker"}, {"scene", scene_name}, {"method", shadow::technique(method).name}, {"shadow_size", crop_size},
                   {"frames", plan_.flicker_frames}, {"t", start}};
     run.figures = {{"flicker", (changed - reference_changed) / pairs}, {"changed", changed / pairs},
-                   {"reference_changed", reference_changed / pairs}};
+                   {"reference_changed", reference_changed / pairs}, {"temporal_err", unlike_reference / pairs}};
     return run;
   }
 

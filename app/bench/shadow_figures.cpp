@@ -13,6 +13,20 @@ bool surface(float depth) { return depth > 0.0f; }
 
 double ratio(std::size_t a, std::size_t b) { return b ? static_cast<double>(a) / static_cast<double>(b) : 0.0; }
 
+bool changed(const Image8& before, const Image8& after, std::size_t i) { return shadowed(before.samples[i]) != shadowed(after.samples[i]); }
+
+// The fraction of the surface pixels at which `counts` holds.
+template <typename Counts>
+double surface_share(const Image<float>& depth, Counts counts) {
+  std::size_t pixels = 0, counted = 0;
+  for (std::size_t i = 0; i < depth.samples.size(); ++i) {
+    if (!surface(depth.samples[i])) continue;
+    ++pixels;
+    counted += counts(i);
+  }
+  return ratio(counted, pixels);
+}
+
 }  // namespace
 
 double alias_percentile(const Image<float>& aliasing, const Image8& visibility, float fraction) {
@@ -47,13 +61,12 @@ ShadowErrors shadow_errors(const Image8& visibility, const Image8& reference, co
 }
 
 double changed_shadow(const Image8& before, const Image8& after, const Image<float>& depth) {
-  std::size_t pixels = 0, changed = 0;
-  for (std::size_t i = 0; i < depth.samples.size(); ++i) {
-    if (!surface(depth.samples[i])) continue;
-    ++pixels;
-    changed += shadowed(before.samples[i]) != shadowed(after.samples[i]);
-  }
-  return ratio(changed, pixels);
+  return surface_share(depth, [&](std::size_t i) { return changed(before, after, i); });
+}
+
+double temporal_err(const Image8& before, const Image8& after, const Image8& reference_before, const Image8& reference_after,
+                    const Image<float>& depth) {
+  return surface_share(depth, [&](std::size_t i) { return changed(before, after, i) != changed(reference_before, reference_after, i); });
 }
 
 }  // namespace ecoview

@@ -21,4 +21,11 @@ ShadowErrors shadow_errors(const Image8& visibility, const Image8& reference, co
 // the part of DESIGN.md's `flicker` of one frame pair (flicker subtracts the reference's).
 double changed_shadow(const Image8& before, const Image8& after, const Image<float>& depth);
 
+// `temporal_err`: the fraction of surface pixels whose shadow state changed from one frame to the
+// next where the reference's did not, or stayed where the reference's changed. `flicker` nets the
+// two rates, so a method that changes as often as the reference, in other pixels, scores 0 there;
+// this counts each pixel that changes otherwise than the truth.
+double temporal_err(const Image8& before, const Image8& after, const Image8& reference_before, const Image8& reference_after,
+                    const Image<float>& depth);
+
 }  // namespace ecoview
