@@ -6,7 +6,7 @@ namespace shadow {
 
 PagePool::PagePool(const VirtualMap& map, int layers) : map_(map), slots_(static_cast<std::size_t>(std::max(layers, 1))) {}
 
-PagePool::Frame PagePool::update(const std::vector<std::uint32_t>& requested) {
+PagePool::Frame PagePool::update(const std::vector<std::uint32_t>& requested, const glm::vec3& eye) {
   ++frame_;
   // Coarser first, as (−level, page): they serve wherever finer ones go without.
   std::vector<std::pair<int, std::uint32_t>> by_level;
@@ -29,6 +29,7 @@ PagePool::Frame PagePool::update(const std::vector<std::uint32_t>& requested) {
     } else {
       frame.to_draw.emplace_back(map_.page(id), found->second);
       slot.drawn = true;
+      slot.drawn_from = eye;
     }
   }
   // The layers this frame did not ask for, free ones first, then the least recently asked for.
@@ -51,16 +52,16 @@ PagePool::Frame PagePool::update(const std::vector<std::uint32_t>& requested) {
     const int layer = spare[next++];
     Slot& slot = slots_[static_cast<std::size_t>(layer)];
     if (slot.page) held_.erase(*slot.page);
-    slot = {id, frame_, true};
+    slot = {id, frame_, true, eye};
     held_[id] = layer;
     frame.to_draw.emplace_back(map_.page(id), layer);
   }
   return frame;
 }
 
-void PagePool::invalidate(const std::function<bool(const Page&)>& moved) {
+void PagePool::invalidate(const std::function<bool(const Page&, const glm::vec3&)>& stale) {
   for (Slot& slot : slots_) {
-    if (slot.page && moved(map_.page(*slot.page))) slot.drawn = false;
+    if (slot.page && stale(map_.page(*slot.page), slot.drawn_from)) slot.drawn = false;
   }
 }
 

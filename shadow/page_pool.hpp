@@ -24,10 +24,11 @@ class PagePool {
     int dropped = 0;    // of those, given no layer: the pool was full of this frame's pages
   };
   // Gives each page asked for a layer, coarser levels first; the pages that keep theirs are
-  // drawn again only where invalidate() asked.
-  Frame update(const std::vector<std::uint32_t>& requested);
-  // Pages drawn again when next asked for (their casters moved).
-  void invalidate(const std::function<bool(const Page&)>& moved);
+  // drawn again only where invalidate() asked. The pages to draw are drawn from `eye`.
+  Frame update(const std::vector<std::uint32_t>& requested, const glm::vec3& eye = glm::vec3(0.0f));
+  // Pages drawn again when next asked for: those for which `stale` holds, given the eye they were
+  // drawn from (their casters moved, or their points were chosen for a camera elsewhere).
+  void invalidate(const std::function<bool(const Page&, const glm::vec3& drawn_from)>& stale);
   // Forgets every page (the virtual map's views changed).
   void clear();
   // The layer holding a page, where one does.
@@ -41,6 +42,7 @@ class PagePool {
     std::optional<std::uint32_t> page;
     std::uint64_t last_asked = 0;
     bool drawn = false;
+    glm::vec3 drawn_from{0.0f};
   };
   VirtualMap map_;
   std::vector<Slot> slots_;

@@ -172,7 +172,7 @@ TEST(PagePool, KeepsDrawnPagesForTheFramesThatAskAgain) {
   EXPECT_TRUE(second.to_draw.empty());
   EXPECT_EQ(second.cached, 4);
   // Casters moved over one page: it alone is drawn again, into the layer it holds.
-  pool.invalidate([](const Page& p) { return p.level == 1; });
+  pool.invalidate([](const Page& p, const glm::vec3&) { return p.level == 1; });
   const PagePool::Frame third = pool.update(asked);
   ASSERT_EQ(third.to_draw.size(), 1u);
   EXPECT_EQ(third.to_draw[0].first, (Page{0, 1, 0, 0}));

@@ -42,7 +42,7 @@ PagedMap::PagedMap(const shadow::VirtualMap& map, int layers, GLenum depth_forma
 }
 
 void PagedMap::request(const FramePass& frame, const shadow::Camera& camera, const shadow::Light& light,
-                       const shadow::ShadowSetup& setup) {
+                       const shadow::ShadowSetup& setup, bool points_follow_camera) {
   if (!same_views(setup.views, views_)) {
     pool_.clear();
     views_ = setup.views;
@@ -71,12 +71,25 @@ void PagedMap::request(const FramePass& frame, const shadow::Camera& camera, con
   for (std::uint32_t& id : ids) id = map_.id(map_.slot_page(id, origins_));
   // Every view's coarsest page, one for the whole map: the lookup's last resort.
   for (int v = 0; v < views; ++v) ids.push_back(map_.id({v, map_.levels - 1, 0, 0}));
-  frame_ = pool_.update(ids);
+  if (points_follow_camera) {
+    // A page's points were chosen for the camera it was drawn from: once the camera has moved a
+    // page's width of its level across the view's image (a fifth of the distance at which pixels ask
+    // for that level), the page is drawn again with the points chosen now.
+    pool_.invalidate([&](const shadow::Page& p, const glm::vec3& drawn_from) {
+      if (p.view >= views || drawn_from == camera.position) return false;
+      const shadow::ShadowView& view = setup.views[static_cast<std::size_t>(p.view)];
+      const glm::vec4 then = view.clip(drawn_from), now = view.clip(camera.position);
+      if (then.w <= 0.0f || now.w <= 0.0f) return true;
+      const glm::vec2 moved = glm::abs(glm::vec2(now) / now.w - glm::vec2(then) / then.w);
+      return std::max(moved.x, moved.y) * static_cast<float>(map_.pages_per_side(p.level)) > 2.0f;
+    });
+  }
+  frame_ = pool_.update(ids, camera.position);
 }
 
 void PagedMap::invalidate(const std::vector<std::vector<glm::vec4>>& moved) {
   const float guard = static_cast<float>(map_.guard) / static_cast<float>(map_.page_texels);
-  pool_.invalidate([&](const shadow::Page& p) {
+  pool_.invalidate([&](const shadow::Page& p, const glm::vec3&) {
     if (p.view >= static_cast<int>(moved.size())) return false;
     const float side = static_cast<float>(map_.pages_per_side(p.level));
     const glm::vec2 low = glm::vec2(-1.0f) + 2.0f * (glm::vec2(p.x, p.y) - guard) / side;

@@ -22,8 +22,10 @@ class PagedMap {
   PagedMap(const shadow::VirtualMap& map, int layers, GLenum depth_format);
   // The pages the frame's surfaces ask for, one virtual map a view of `setup`, given layers; where
   // the views changed since the last frame every page is drawn again. The levels' windows follow
-  // the camera.
-  void request(const FramePass& frame, const shadow::Camera& camera, const shadow::Light& light, const shadow::ShadowSetup& setup);
+  // the camera. Where `points_follow_camera` (the casters include point-drawn plants, chosen for
+  // the camera), pages drawn from a camera far enough from this one are drawn again.
+  void request(const FramePass& frame, const shadow::Camera& camera, const shadow::Light& light, const shadow::ShadowSetup& setup,
+               bool points_follow_camera);
   // Pages whose casters moved are drawn again when next asked for: those of a view over any of
   // the light-space boxes `moved` (per view, in its normalized coordinates, xy min and max).
   void invalidate(const std::vector<std::vector<glm::vec4>>& moved);

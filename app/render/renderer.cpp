@@ -289,7 +289,7 @@ void Renderer::request_pages(const shadow::Camera& camera, const shadow::Light& 
     paged_boxes_ = std::move(boxes);
   }
   paged_time_ = time_;
-  pages_->request(frame_pass_, camera, light, setup_);
+  pages_->request(frame_pass_, camera, light, setup_, draws_points());
   stages_.end("map pages");
   const shadow::PagePool::Frame& asked = pages_->last_request();
   setup_.description = "adaptive over " + setup_.description + ": " + std::to_string(asked.requested) + " pages asked for, " +
