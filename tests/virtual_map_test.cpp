@@ -181,6 +181,23 @@ TEST(PagePool, KeepsDrawnPagesForTheFramesThatAskAgain) {
   EXPECT_EQ(pool.update(asked).to_draw.size(), 4u);
 }
 
+// Each page remembers the eye it was last drawn from, which the test of staleness is given.
+TEST(PagePool, RemembersTheEyeEachPageWasDrawnFrom) {
+  const VirtualMap map = small_map();
+  PagePool pool(map, 8);
+  const glm::vec3 here(1, 2, 3), there(7, 2, 3), later(9, 2, 3);
+  const std::vector<std::uint32_t> one = ids_of(map, {{0, 0, 1, 1}});
+  const std::vector<std::uint32_t> both = ids_of(map, {{0, 0, 1, 1}, {0, 2, 1, 0}});
+  pool.update(one, here);
+  EXPECT_EQ(pool.update(both, there).to_draw.size(), 1u);  // the new page, drawn from `there`
+  pool.invalidate([&](const Page&, const glm::vec3& drawn_from) { return drawn_from == here; });
+  const PagePool::Frame again = pool.update(both, later);
+  ASSERT_EQ(again.to_draw.size(), 1u);
+  EXPECT_EQ(again.to_draw[0].first, (Page{0, 0, 1, 1}));
+  pool.invalidate([&](const Page& p, const glm::vec3& drawn_from) { return drawn_from == later && p.level == 0; });
+  EXPECT_EQ(pool.update(both, later).to_draw.size(), 1u);  // drawn again from `later`, so stale again
+}
+
 TEST(PagePool, GivesUpTheLeastRecentlyAskedForPagesFirst) {
   const VirtualMap map = small_map();
   PagePool pool(map, 3);
