@@ -37,7 +37,9 @@ struct PageTile {
 };
 
 struct VirtualMap {
-  int levels = 12;        // the finest, 0, has 2^(levels − 1) pages a side; the coarsest one
+  // The finest, 0, has 2^(levels − 1) pages a side; the coarsest one. At most 14: six views'
+  // page ids fit in 32 bits, and the shaders hold the windows of 16 levels a view.
+  int levels = 12;
   int page_texels = 256;  // a page's own texels a side
   int guard = 4;          // texels of the neighbours around a page, for the filter's taps
   // A pixel asks for the coarsest level whose texels are this many or more to its width there.
@@ -49,8 +51,6 @@ struct VirtualMap {
   float caster_texels = 65536.0f;
 
   int pages_per_side(int level) const { return 1 << (levels - 1 - level); }
-  // Texels a side of the finest level.
-  float texels() const { return static_cast<float>(page_texels * pages_per_side(0)); }
   // Pages a side of a level's window: the whole level where it fits.
   int window_pages(int level) const { return std::min(pages_per_side(level), window); }
   // Where each level's window starts, view by view and level by level: around the page under
