@@ -133,6 +133,22 @@ std::size_t differences_away_from_edges(const Image8& seen, const Image8& exact)
   return n;
 }
 
+// The adaptive map's frame of `scene` against the volumes': the pages it asked for and the pixels
+// that differ away from the volumes' shadow edges (printed under `name` with all that differ).
+struct AgainstVolumes {
+  int pages = 0;
+  std::size_t away_from_edges = 0;
+};
+AgainstVolumes adaptive_against_volumes(const Scene& scene, const std::string& name) {
+  Renderer adaptive(scene, {640, 480, 512, shadow::Method::adaptive});
+  adaptive.render(scene.camera, scene.lights[0]);
+  const Image8 seen = adaptive.frame().read_visibility(), volumes = rendered_visibility(scene, shadow::Method::volumes, 512);
+  const AgainstVolumes result{adaptive.stats().pages.requested, differences_away_from_edges(seen, volumes)};
+  std::cout << name << ": " << result.pages << " pages; pixels that differ from the volumes " << binary_differences(seen, volumes)
+            << ", away from their edges " << result.away_from_edges << "\n";
+  return result;
+}
+
 // The virtual paged map draws each page with a guard of its neighbours' texels, so that its
 // filter does not see the page's border: on floating boxes, whose shadows span many pages, its
 // `shadow` AOV is the volumes' wherever a pixel is not on the volumes' shadow edge. Seams along
@@ -144,13 +160,9 @@ TEST(AdaptiveShadows, MatchTheVolumesAcrossPageBorders) {
   for (shadow::LightType type : {shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot}) {
     const FloatingBox s = random_floating_box(rng, type);
     const Scene scene = s.scene();
-    Renderer adaptive(scene, {640, 480, 512, shadow::Method::adaptive});
-    adaptive.render(scene.camera, scene.lights[0]);
-    const Image8 seen = adaptive.frame().read_visibility(), volumes = rendered_visibility(scene, shadow::Method::volumes, 512);
-    std::cout << light_name(type) << ": " << adaptive.stats().pages.requested << " pages; pixels that differ from the volumes "
-              << binary_differences(seen, volumes) << ", away from their edges " << differences_away_from_edges(seen, volumes) << "\n";
-    EXPECT_GE(adaptive.stats().pages.requested, 8) << light_name(type);
-    EXPECT_EQ(differences_away_from_edges(seen, volumes), 0u) << light_name(type);
+    const AgainstVolumes adaptive = adaptive_against_volumes(scene, light_name(type));
+    EXPECT_GE(adaptive.pages, 8) << light_name(type);
+    EXPECT_EQ(adaptive.away_from_edges, 0u) << light_name(type);
   }
 }
 
@@ -176,13 +188,9 @@ TEST(AdaptiveShadows, MatchTheVolumesNearTheCameraAndFarFromItOnAWidePlane) {
     const std::string json = R"({"camera": )" + camera + R"(, "lights": [{"type": "directional", "direction": [0.5, -0.6, -0.4]}],
       "objects": [{"type": "plane", "center": [0, 0, 0], "size": [2000, 2000]})" + posts + "]}";
     const Scene scene = load_scene({"wide.json", json, [](const std::string&) { return std::nullopt; }});
-    Renderer adaptive(scene, {640, 480, 512, shadow::Method::adaptive});
-    adaptive.render(scene.camera, scene.lights[0]);
-    const Image8 seen = adaptive.frame().read_visibility(), volumes = rendered_visibility(scene, shadow::Method::volumes, 512);
-    std::cout << "fov " << scene.camera.fov_y_deg << "°: " << adaptive.stats().pages.requested << " pages; pixels that differ from the volumes "
-              << binary_differences(seen, volumes) << ", away from their edges " << differences_away_from_edges(seen, volumes) << "\n";
-    EXPECT_GE(adaptive.stats().pages.requested, 8);
-    EXPECT_EQ(differences_away_from_edges(seen, volumes), 0u);
+    const AgainstVolumes adaptive = adaptive_against_volumes(scene, "fov " + std::to_string(scene.camera.fov_y_deg));
+    EXPECT_GE(adaptive.pages, 8);
+    EXPECT_EQ(adaptive.away_from_edges, 0u);
   }
 }
 
