@@ -44,7 +44,7 @@ const std::vector<Technique>& techniques() {
        "a pixel wide or finer there, and only the pages asked for are drawn, after the frame's surfaces, and kept "
        "across frames in a pool of layers (--page-pool)",
        Lookup::pages, every_light, LastFrame::nothing, false, lit_scene_map},
-      {Method::volumes, "volumes", "exact shadows of polygons by stencil shadow volumes from silhouette edges, counted z-pass where the camera stands in no volume and z-fail elsewhere; point splats cast none",
+      {Method::volumes, "volumes", "exact shadows of polygons by stencil shadow volumes from silhouette edges, counted z-pass where the camera stands in no volume and z-fail elsewhere; point splats cast none, and alpha masks do not cut the volumes",
        Lookup::mask, every_light, LastFrame::nothing, false},
       {Method::hybrid, "hybrid",
        "the focused uniform map, and shadow volumes counted only where its test is neither lit nor shadowed, near "

@@ -5,6 +5,7 @@
 #include "app/render/renderer.hpp"
 #include "app/scene/scene_file.hpp"
 #include "floating_box.hpp"
+#include "shadow_methods.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -33,15 +34,6 @@ const char* light_name(shadow::LightType t) {
 }
 
 using Param = std::tuple<std::string, shadow::LightType, shadow::Method>;
-
-// Every method of the table that draws shadows: one added there is tested here with no more lines.
-std::vector<shadow::Method> methods_with_shadows() {
-  std::vector<shadow::Method> methods;
-  for (const shadow::Technique& t : shadow::techniques()) {
-    if (t.lookup != shadow::Lookup::none) methods.push_back(t.method);
-  }
-  return methods;
-}
 
 class FloatingBoxShadow : public testing::TestWithParam<Param> {};
 
@@ -81,9 +73,7 @@ INSTANTIATE_TEST_SUITE_P(
                      testing::Values(shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot),
                      testing::ValuesIn(methods_with_shadows())),
     [](const testing::TestParamInfo<Param>& info) {
-      std::string method = shadow::technique(std::get<2>(info.param)).name;
-      std::replace(method.begin(), method.end(), '+', '_');  // test names are identifiers
-      return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + method;
+      return std::get<0>(info.param) + "_" + light_name(std::get<1>(info.param)) + "_" + test_name(std::get<2>(info.param));
     });
 
 // Pixels whose binary shadow state (visibility < 0.5) differs between two `shadow` AOVs.
