@@ -19,15 +19,16 @@ const float specular_strength = 0.25;
 // Hybrid shadows (MARK_EDGES): below this cosine the map's bias, not its depths, decides the test.
 const float grazing_n_dot_l = 0.4;
 
-// A cell's silhouette point: negative where no edge crosses the cell (or off the map).
-vec2 silhouette_point(ivec2 cell, int layer) {
-  if (any(lessThan(cell, ivec2(0))) || any(greaterThanEqual(cell, ivec2(shadow_size)))) return vec2(-1.0);
+// A cell's silhouette point: negative where no edge crosses the cell (or off the layer's
+// `cells` a side).
+vec2 silhouette_point(ivec2 cell, int layer, int cells) {
+  if (any(lessThan(cell, ivec2(0))) || any(greaterThanEqual(cell, ivec2(cells)))) return vec2(-1.0);
   return texelFetch(silhouette_points, ivec3(cell, layer), 0).rg;
 }
 
 // A neighbour's silhouette point, or its centre, as seen from its neighbour cell `offset` away.
-vec2 neighbour_point(ivec2 cell, ivec2 offset, int layer) {
-  vec2 p = silhouette_point(cell + offset, layer);
+vec2 neighbour_point(ivec2 cell, ivec2 offset, int layer, int cells) {
+  vec2 p = silhouette_point(cell + offset, layer, cells);
   return (p.x < 0.0 ? vec2(0.5) : p) + vec2(offset);
 }
 
@@ -43,23 +44,22 @@ float cross2(vec2 u, vec2 v) { return u.x * v.y - u.y * v.x; }
 // as the filtered lookup moves it against acne (its clip coordinates, w > 0); the cell is
 // `position`'s, which keeps the edge where the silhouette puts it. Negative where the corners
 // disagree and no edge crosses the cell (a point splat's shadow): the filtered lookup answers there.
-float silhouette_test(int layer, vec3 position, vec4 offset_clip) {
-  vec4 clip = shadow_clip(layer, position);
-  if (clip.w <= 0.0) return -1.0;
-  vec3 map = vec3(clip.xy / clip.w, offset_clip.z / offset_clip.w) * 0.5 + 0.5;
-  vec2 in_cells = map.xy * shadow_size - 0.5;
+// `map`: the position's texture coordinates in `layer`, `cells` texels a side, and the offset
+// surface's depth.
+float silhouette_test_at(vec3 map, int layer, int cells) {
+  vec2 in_cells = map.xy * float(cells) - 0.5;
   vec2 cell = floor(in_cells);
   // The corners (0, 1), (1, 1), (1, 0), (0, 0), as textureGather orders them.
-  vec4 lit = textureGather(shadow_map, vec3((cell + 1.0) / shadow_size, layer), map.z);
+  vec4 lit = textureGather(shadow_map, vec3((cell + 1.0) / float(cells), layer), map.z);
   if (lit == vec4(lit.x)) return lit.x;
   ivec2 c = ivec2(cell);
-  vec2 centre = silhouette_point(c, layer);
+  vec2 centre = silhouette_point(c, layer, cells);
   if (centre.x < 0.0) return -1.0;
   vec2 q = in_cells - cell - centre;
-  vec2 right = neighbour_point(c, ivec2(1, 0), layer) - centre;
-  vec2 up = neighbour_point(c, ivec2(0, 1), layer) - centre;
-  vec2 left = neighbour_point(c, ivec2(-1, 0), layer) - centre;
-  vec2 down = neighbour_point(c, ivec2(0, -1), layer) - centre;
+  vec2 right = neighbour_point(c, ivec2(1, 0), layer, cells) - centre;
+  vec2 up = neighbour_point(c, ivec2(0, 1), layer, cells) - centre;
+  vec2 left = neighbour_point(c, ivec2(-1, 0), layer, cells) - centre;
+  vec2 down = neighbour_point(c, ivec2(0, -1), layer, cells) - centre;
   // Counter-clockwise from the first line to the second.
   if (cross2(right, q) >= 0.0 && cross2(q, up) >= 0.0) return lit.y;
   if (cross2(up, q) >= 0.0 && cross2(q, left) >= 0.0) return lit.x;
@@ -68,6 +68,12 @@ float silhouette_test(int layer, vec3 position, vec4 offset_clip) {
   // Sectors wider than a half turn (silhouette points on the cell's sides): the nearest corner.
   vec2 f = in_cells - cell;
   return f.y < 0.5 ? (f.x < 0.5 ? lit.w : lit.z) : (f.x < 0.5 ? lit.x : lit.y);
+}
+
+float silhouette_test(int layer, vec3 position, vec4 offset_clip) {
+  vec4 clip = shadow_clip(layer, position);
+  if (clip.w <= 0.0) return -1.0;
+  return silhouette_test_at(vec3(clip.xy / clip.w, offset_clip.z / offset_clip.w) * 0.5 + 0.5, layer, int(shadow_size));
 }
 
 // The mean of 3x3 filtered taps `step` apart around `map` in `layer`.
@@ -91,6 +97,14 @@ float paged_shadow_test(int view, vec3 position, vec3 n, float n_dot_l) {
   if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 1.0;  // outside the map: not covered
   ResidentPage page = resident_page(view, ndc.xy, level);
   if (page.level < 0) return 1.0;
+  if (SILHOUETTES) {
+    // The cell from the surface itself, in the page found for the offset one (its guard holds
+    // the cells around it).
+    vec4 at = shadow_matrices[view] * vec4(position, 1.0);
+    vec2 moved = (at.xy / at.w - ndc.xy) * 0.5 * float(pages_per_side(page.level)) * page_texels / (page_texels + 2.0 * page_guard);
+    float edge = silhouette_test_at(vec3(page.map + moved, ndc.z * 0.5 + 0.5), page.layer, int(shadow_size));
+    if (edge >= 0.0) return edge;
+  }
   float texels_per_pixel = cell_world_size(view_projection, frame_size, position) / page_texel_world_size(view, page.level, position);
   float step = clamp(0.5 * (texels_per_pixel - 1.0), 0.0, 1.0) / shadow_size;
   return filtered_test(vec3(page.map, ndc.z * 0.5 + 0.5), page.layer, step);

@@ -44,6 +44,10 @@ const std::vector<Technique>& techniques() {
        "a pixel wide or finer there, and only the pages asked for are drawn, after the frame's surfaces, and kept "
        "across frames in a pool of layers (--page-pool)",
        Lookup::pages, every_light, LastFrame::nothing, false, lit_scene_map},
+      {Method::adaptive_silhouette, "adaptive+silhouette",
+       "the adaptive map with a silhouette map in each page, looked up as silhouette's: sharper edges for a "
+       "geometry-shader pass over the polygon casters of every tile of pages drawn (on llvmpipe 1.4-3 times adaptive's frame)",
+       Lookup::pages, every_light, LastFrame::nothing, false, lit_scene_map, true},
       {Method::volumes, "volumes", "exact shadows of polygons by stencil shadow volumes from silhouette edges, counted z-pass where the camera stands in no volume and z-fail elsewhere; point splats cast none, and alpha masks do not cut the volumes",
        Lookup::mask, every_light, LastFrame::nothing, false},
       {Method::hybrid, "hybrid",

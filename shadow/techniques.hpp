@@ -13,7 +13,7 @@
 // app/render/mask_technique.cpp.
 namespace shadow {
 
-enum class Method { none, uniform, psm, lispsm, cascades, dpsm, ipsm, silhouette, psm_silhouette, adaptive, volumes, hybrid, reference, automatic };
+enum class Method { none, uniform, psm, lispsm, cascades, dpsm, ipsm, silhouette, psm_silhouette, adaptive, adaptive_silhouette, volumes, hybrid, reference, automatic };
 
 // What a technique hands the frame's lighting.
 enum class Lookup {

@@ -118,8 +118,9 @@ void add_render_options(CLI::App& command, RenderOptions& o) {
                                                        "steps even over the map's depth range) or 32f (float: as fine "
                                                        "as 24 bits at the far end, finer towards the near plane)")
       ->capture_default_str();
-  command.add_option("--page-pool", o.page_pool, "--method adaptive: MiB of depths for the pages it keeps drawn; where the "
-                                                 "frame asks for more pages, the finest go without and a coarser level serves")
+  command.add_option("--page-pool", o.page_pool, "--method adaptive and adaptive+silhouette: MiB of depths (and silhouette "
+                                                 "points) for the pages it keeps drawn; where the frame asks for more pages, "
+                                                 "the finest go without and a coarser level serves")
       ->capture_default_str();
 }
 

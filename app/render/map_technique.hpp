@@ -33,6 +33,8 @@ class MapTechnique {
                      gl::GpuStages& stages, const GpuScene::PlantDraws* plants = nullptr);
   // The point draws of the map, uploaded or used (PointSplat), made when first asked for.
   PointSplat& points();
+  // The silhouette map's points of the last layer drawn (SilhouettePass::points); 0 without one.
+  GLuint silhouette_points() const { return silhouette_map_ ? silhouettes_->points() : 0u; }
   // The points draw_points drew of a list with map caps (PointSplat::points_drawn_onto).
   std::size_t points_drawn() const { return points_ ? points_->points_drawn_onto() : 0; }
   // Splats them onto layer `layer` of `setup`, or onto its points' own.

@@ -26,10 +26,12 @@ int PagedMap::most_layers() {
   return layers;
 }
 
-PagedMap::PagedMap(const shadow::VirtualMap& map, int layers, GLenum depth_format) : map_(map), pool_(map, layers) {
+PagedMap::PagedMap(const shadow::VirtualMap& map, int layers, GLenum depth_format, bool silhouettes)
+    : map_(map), pool_(map, layers), has_silhouettes_(silhouettes) {
   const GLuint pages = pages_.name();
   glTextureStorage3D(pages, 1, depth_format, map.layer_texels(), map.layer_texels(), pool_.layers());
   make_comparable(pages);  // the guard keeps the filter on its page's layer
+  if (silhouettes) glTextureStorage3D(silhouettes_.name(), 1, GL_RG16F, map.layer_texels(), map.layer_texels(), pool_.layers());
 
   glTextureStorage3D(table_.name(), 1, GL_R32UI, map.window, map.window, most_views * map.levels);
   glTextureParameteri(table_.name(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -101,13 +103,17 @@ void PagedMap::invalidate(const std::vector<std::vector<glm::vec4>>& moved) {
   });
 }
 
-void PagedMap::copy_pages(GLuint tile_map, const shadow::PageTile& tile) const {
+void PagedMap::copy_pages(GLuint tile_map, GLuint tile_silhouettes, const shadow::PageTile& tile) const {
   const int side = map_.layer_texels();
   for (const auto& [page, layer] : frame_.to_draw) {
     if (!tile.holds(page)) continue;
     const glm::ivec2 corner = map_.page_corner(tile, page);
     glCopyImageSubData(tile_map, GL_TEXTURE_2D_ARRAY, 0, corner.x, corner.y, 0, pages_.name(), GL_TEXTURE_2D_ARRAY, 0, 0, 0,
                        layer, side, side, 1);
+    if (has_silhouettes_) {
+      glCopyImageSubData(tile_silhouettes, GL_TEXTURE_2D_ARRAY, 0, corner.x, corner.y, 0, silhouettes_.name(), GL_TEXTURE_2D_ARRAY, 0, 0, 0,
+                         layer, side, side, 1);
+    }
   }
 }
 
@@ -117,6 +123,7 @@ FramePass::ShadowLookup PagedMap::lookup(const shadow::ShadowSetup& setup) {
   lookup.page_table = table_.name();
   lookup.pages = map_;
   lookup.page_windows = origins_;
+  if (has_silhouettes_) lookup.silhouettes = silhouettes_.name();
   return lookup;
 }
 

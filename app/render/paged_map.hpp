@@ -18,8 +18,9 @@ namespace ecoview {
 // of shadow::VirtualMap::tile_view, into a ShadowPass layer) and copies them here.
 class PagedMap {
  public:
-  // `layers` pages (the pool); `depth_format`: the shadow pass's, whose layers pages are copied from.
-  PagedMap(const shadow::VirtualMap& map, int layers, GLenum depth_format);
+  // `layers` pages (the pool); `depth_format`: the shadow pass's, whose layers pages are copied from;
+  // with `silhouettes`, each page's silhouette points beside its depths (SilhouettePass's format).
+  PagedMap(const shadow::VirtualMap& map, int layers, GLenum depth_format, bool silhouettes);
   // The pages the frame's surfaces ask for, one virtual map a view of `setup`, given layers; where
   // the views changed since the last frame every page is drawn again. The levels' windows follow
   // the camera. Where `points_follow_camera` (the casters include point-drawn plants, chosen for
@@ -32,8 +33,9 @@ class PagedMap {
   // What the last request() left to draw, and its figures.
   const shadow::PagePool::Frame& last_request() const { return frame_; }
   // Copies the pages of `tile` that were to be drawn from layer 0 of `tile_map` (a depth-texture
-  // array of this depth format), where the tile's view drew them.
-  void copy_pages(GLuint tile_map, const shadow::PageTile& tile) const;
+  // array of this depth format), where the tile's view drew them, and with silhouettes their points
+  // from layer 0 of `tile_silhouettes`.
+  void copy_pages(GLuint tile_map, GLuint tile_silhouettes, const shadow::PageTile& tile) const;
   // The page table, for the lighting after every tile is drawn.
   FramePass::ShadowLookup lookup(const shadow::ShadowSetup& setup);
   const shadow::VirtualMap& map() const { return map_; }
@@ -49,6 +51,8 @@ class PagedMap {
   std::vector<shadow::ShadowView> views_;  // of the last request
   std::vector<glm::ivec2> origins_;         // its levels' windows (VirtualMap::window_origins)
   gl::Texture pages_{GL_TEXTURE_2D_ARRAY};
+  bool has_silhouettes_;
+  gl::Texture silhouettes_{GL_TEXTURE_2D_ARRAY};  // each page's silhouette points in its layer, if it has them
   gl::Texture table_{GL_TEXTURE_2D_ARRAY};  // a layer a view's level: its window's pages
   gl::Buffer flags_, list_;
   std::vector<GLuint> zeros_;  // the flags as each request starts

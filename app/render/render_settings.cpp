@@ -1,5 +1,6 @@
 #include "app/render/render_settings.hpp"
 
+#include "shadow/techniques.hpp"
 #include "shadow/virtual_map.hpp"
 
 #include <cstdint>
@@ -20,7 +21,8 @@ int map_texels(const RenderSettings& settings) {
 }
 
 int page_pool_layers(const RenderSettings& settings) {
-  const std::int64_t texel_bytes = settings.shadow_depth == ShadowDepth::fixed16 ? 2 : 4;  // 24 bits are stored in 32
+  std::int64_t texel_bytes = settings.shadow_depth == ShadowDepth::fixed16 ? 2 : 4;  // 24 bits are stored in 32
+  if (shadow::technique(settings.method).silhouette_map) texel_bytes += 4;  // a silhouette point, RG16F
   const std::int64_t side = shadow::VirtualMap{}.layer_texels();
   return static_cast<int>((static_cast<std::int64_t>(settings.page_pool_mib) << 20) / (side * side * texel_bytes));
 }

@@ -49,7 +49,8 @@ struct RenderSettings {
   // The frame's points and polygons chosen on the GPU (GpuSampler); off: by the CPU's view sampler,
   // the GPU sampler's test oracle, which the density figures' measures also use.
   bool gpu_sampler = true;
-  // A virtual paged map's pool of pages, in MiB of depths (--page-pool, --method adaptive).
+  // A virtual paged map's pool of pages, in MiB of depths and silhouette points (--page-pool,
+  // --method adaptive and adaptive+silhouette).
   int page_pool_mib = 256;
 };
 
@@ -58,7 +59,7 @@ struct RenderSettings {
 int map_texels(const RenderSettings& settings);
 
 // The pages a pool of settings.page_pool_mib holds: layers of shadow::VirtualMap's page and guard,
-// in the settings' depth format.
+// in the settings' depth format, and their silhouette points where the method has a silhouette map.
 int page_pool_layers(const RenderSettings& settings);
 
 // The settings with points off where the scene has no mesh that may be drawn as points: the same

@@ -124,7 +124,8 @@ void Renderer::make_method_passes() {
   mask_ = make_mask_technique(settings_.method, sources);
   pages_.reset();
   if (shadow::technique(settings_.method).lookup == shadow::Lookup::pages) {
-    pages_ = std::make_unique<PagedMap>(shadow::VirtualMap{}, page_pool_layers(settings_), map_.depths().depth_format());
+    pages_ = std::make_unique<PagedMap>(shadow::VirtualMap{}, page_pool_layers(settings_), map_.depths().depth_format(),
+                                        shadow::technique(settings_.method).silhouette_map);
   }
 }
 
@@ -332,7 +333,7 @@ FramePass::ShadowLookup Renderer::render_pages_on_cpu(const shadow::Camera& came
   for (std::size_t i = 0; i < tiles.size(); ++i) {
     const std::vector<pointgen::SampledFrame> one = settings_.points ? std::vector{chosen[i]} : std::vector<pointgen::SampledFrame>{};
     draw_map_view(setups[i], 0, one, light);
-    pages_->copy_pages(map_.depths().depth_texture(), tiles[i]);
+    pages_->copy_pages(map_.depths().depth_texture(), map_.silhouette_points(), tiles[i]);
     stages_.end("map pages");
   }
   shadow_timer_.stop();
@@ -353,7 +354,7 @@ FramePass::ShadowLookup Renderer::render_pages_on_gpu(const shadow::Camera& came
       stages_.end("map choice");
       map_.draw_points(setup, 0, stages_);
     }
-    pages_->copy_pages(map_.depths().depth_texture(), tile);
+    pages_->copy_pages(map_.depths().depth_texture(), map_.silhouette_points(), tile);
     stages_.end("map pages");
   }
   pending_.shadow_views = tiles.size();
