@@ -35,17 +35,15 @@ vec2 neighbour_point(ivec2 cell, ivec2 offset, int layer, int cells) {
 float cross2(vec2 u, vec2 v) { return u.x * v.y - u.y * v.x; }
 
 // Shadow silhouette maps (Sen, Cammarano and Hanrahan 2003): the map's depths are tested at the
-// four corners of the dual-grid cell that holds `position`. Where they agree, that is the answer;
+// four corners of the dual-grid cell that holds the surface. Where they agree, that is the answer;
 // where they do not and a silhouette edge crosses the cell, the lines from the cell's silhouette
 // point to its four neighbours' (their centres where they have none) cut the cell into four
-// sectors, one around each corner, and the sector that holds `position` takes its corner's test:
+// sectors, one around each corner, and the sector that holds the surface takes its corner's test:
 // the edge between lit and shadowed is the silhouette itself, piecewise linear, not the texels'
-// staircase. The depths are compared with `offset_clip`'s, the surface moved off along its normal
-// as the filtered lookup moves it against acne (its clip coordinates, w > 0); the cell is
-// `position`'s, which keeps the edge where the silhouette puts it. Negative where the corners
-// disagree and no edge crosses the cell (a point splat's shadow): the filtered lookup answers there.
-// `map`: the position's texture coordinates in `layer`, `cells` texels a side, and the offset
-// surface's depth.
+// staircase. `map.xy`: the surface's texture coordinates in `layer` (`cells` texels a side), which
+// keeps the edge where the silhouette puts it; `map.z`: the depth of the surface moved off along
+// its normal as the filtered lookup moves it against acne. Negative where the corners disagree and
+// no edge crosses the cell (a point splat's shadow): the filtered lookup answers there.
 float silhouette_test_at(vec3 map, int layer, int cells) {
   vec2 in_cells = map.xy * float(cells) - 0.5;
   vec2 cell = floor(in_cells);
@@ -70,6 +68,7 @@ float silhouette_test_at(vec3 map, int layer, int cells) {
   return f.y < 0.5 ? (f.x < 0.5 ? lit.w : lit.z) : (f.x < 0.5 ? lit.x : lit.y);
 }
 
+// The test in a map's view `layer`; `offset_clip`: the moved surface's clip coordinates (w > 0).
 float silhouette_test(int layer, vec3 position, vec4 offset_clip) {
   vec4 clip = shadow_clip(layer, position);
   if (clip.w <= 0.0) return -1.0;
@@ -88,7 +87,8 @@ float filtered_test(vec3 map, int layer, float step) {
 }
 
 // --method adaptive: the filtered test below, in the finest page drawn at the level the pixel
-// asked for (page_requests.comp) or coarser, its taps a texel of that page's level apart at most.
+// asked for (page_requests.comp) or coarser, its taps a texel of that page's level apart at most;
+// with the pages' silhouette maps (adaptive+silhouette), the silhouette test first.
 float paged_shadow_test(int view, vec3 position, vec3 n, float n_dot_l) {
   int level = wanted_level(view, position);
   vec4 clip = shadow_matrices[view] * vec4(page_lookup_position(view, level, position, n, n_dot_l), 1.0);
