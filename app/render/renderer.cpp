@@ -293,7 +293,7 @@ void Renderer::request_pages(const shadow::Camera& camera, const shadow::Light& 
   pages_->request(frame_pass_, camera, light, setup_, draws_points());
   stages_.end("map pages");
   const shadow::PagePool::Frame& asked = pages_->last_request();
-  setup_.description = "adaptive over " + setup_.description + ": " + std::to_string(asked.requested) + " pages asked for, " +
+  setup_.description = shadow::technique(settings_.method).name + " over " + setup_.description + ": " + std::to_string(asked.requested) + " pages asked for, " +
                        std::to_string(asked.to_draw.size()) + " drawn, " + std::to_string(asked.dropped) + " dropped";
 }
 
