@@ -1,7 +1,8 @@
 #version 450 core
 // A list of indirect draws (DrawElementsIndirectCommand, 5 uints) with the empty ones left out, the
 // others in their order, and their number, for glMultiDrawElementsIndirectCount, with the
-// triangles they draw (for --stats, read back instead of the lists): one work group,
+// triangles they draw (for --stats, read back instead of the lists; with adds_triangles added to
+// the slot's, where several lists drawn in turn share one copy): one work group,
 // a run of draws a thread. The GPU sampler's lists hold a draw per table and part lane, most of
 // them empty (82 tables × 65 lanes a distance band on the ecosystem), and a driver walks every
 // draw it is given.
@@ -10,8 +11,9 @@ layout(local_size_x = 256) in;
 
 layout(std430, binding = 41) readonly buffer Commands { uint commands[]; };
 layout(std430, binding = 42) writeonly buffer Drawn { uint drawn[]; };
-layout(std430, binding = 43) writeonly buffer DrawnCounts { uvec2 drawn_counts[]; };  // draws, triangles
+layout(std430, binding = 43) buffer DrawnCounts { uvec2 drawn_counts[]; };  // draws, triangles
 uniform uint first_command, command_count;
+uniform bool adds_triangles;
 uniform uint drawn_first;  // the copy's first place in drawn
 uniform uint count_slot;   // its place in drawn_counts
 
@@ -34,5 +36,5 @@ void main() {
     for (uint i = 0u; i < 5u; ++i) drawn[5u * at + i] = commands[5u * c + i];
     ++at;
   }
-  if (gl_LocalInvocationID.x == 0u) drawn_counts[count_slot] = uvec2(total, triangles);
+  if (gl_LocalInvocationID.x == 0u) drawn_counts[count_slot] = uvec2(total, triangles + (adds_triangles ? drawn_counts[count_slot].y : 0u));
 }

@@ -2,7 +2,8 @@
 // Marks, in level 0 of a max pyramid over a shadow view's image (depth_pyramid.glsl), the texels
 // where the frame shows a surface: the farthest of their window depths in that view there (above
 // 0: depth grows along the light's rays in every map, shadow/light_projection.hpp), 0 elsewhere;
-// with CLEAR the zeros alone. The frame's surfaces are its nearest window depths, level 0 of the
+// with CLEAR `mark` everywhere: 0 before the marks, or 1, a receiver at the far end of every texel
+// (DepthPyramid::mark_everywhere). The frame's surfaces are its nearest window depths, level 0 of the
 // frame's own depth pyramid (binding 25).
 // Of a cascade, only the surfaces that look it up: none inside an earlier cascade's square
 // (shadow_views.glsl, FIRST_CONTAINING).
@@ -14,9 +15,10 @@ layout(std430, binding = 17) buffer PyramidBits { uint pyramid_bits[]; };
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #ifdef CLEAR
+uniform float mark;
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  if (all(lessThan(texel, pyramid_size[0]))) pyramid[pyramid_index(0, texel)] = 0.0;
+  if (all(lessThan(texel, pyramid_size[0]))) pyramid[pyramid_index(0, texel)] = mark;
 }
 #else
 layout(std430, binding = 25) readonly buffer FrameDepths { float frame_depths[]; };  // the frame's level 0

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <set>
@@ -404,6 +405,32 @@ TEST_F(GpuSampling, ACascadeDrawsThePlantsWhoseShadowsFallInIt) {
   EXPECT_GT(low.stats.shadow_triangles, 4 * 2 + beech) << "the beech in more cascades than the first";
   EXPECT_GT(uniform.shadowed, 1000u);
   EXPECT_NEAR(static_cast<double>(low.shadowed), static_cast<double>(uniform.shadowed), 0.15 * static_cast<double>(uniform.shadowed));
+}
+
+// A paged map draws each tile of its pages with the polygon plants whose boxes reach the tile: a
+// beech near the camera goes into the tiles over it alone, and its shadow stays the volumes'.
+TEST_F(GpuSampling, APageTileDrawsThePolygonPlantsThatReachIt) {
+  settings.width = 320;
+  settings.height = 180;
+  settings.gpu_sampler = true;
+  const std::string scene = R"({"camera": {"position": [0, 3, 0], "target": [0, 0, -20], "fov_y_deg": 50, "near": 0.5, "far": 300},
+      "lights": [{"type": "directional", "direction": [0.3, -1, -0.2]}],
+      "objects": [{"type": "plane", "center": [0, 0, -100], "size": [300, 300]},
+                  {"type": "plant", "species": "beech", "positions": [[0, 0, -10]]}]})";
+  settings.method = shadow::Method::uniform;
+  const std::size_t beech = render_shadows(scene).stats.shadow_triangles - 2;
+  ASSERT_GT(beech, 1000u) << "the beech is drawn as polygons";
+  settings.method = shadow::Method::adaptive;
+  const Shadowed paged = render_shadows(scene);
+  const auto tiles = static_cast<std::size_t>(paged.stats.pages.tiles);
+  settings.method = shadow::Method::volumes;
+  const Shadowed exact = render_shadows(scene);
+  std::cout << tiles << " tiles, " << paged.stats.shadow_triangles << " triangles (the beech " << beech << "); shadowed "
+            << paged.shadowed << " pixels against the volumes' " << exact.shadowed << "\n";
+  ASSERT_GE(tiles, 4u);
+  EXPECT_LT(paged.stats.shadow_triangles, tiles * (2 + beech) / 2) << "the beech should be in fewer than half the tiles";
+  ASSERT_GT(exact.shadowed, 2000u);
+  EXPECT_NEAR(static_cast<double>(paged.shadowed), static_cast<double>(exact.shadowed), 0.05 * static_cast<double>(exact.shadowed));
 }
 
 TEST_F(GpuSampling, ItsFrameCoversWhatThePolygonsCover) {

@@ -69,7 +69,8 @@ nlohmann::json stage_figures(const FrameStats& s) {
 nlohmann::json page_figures(const RenderOptions& options, const FrameStats& s) {
   const shadow::Technique* t = shadow::find_technique(options.method);
   if (!t || t->lookup != shadow::Lookup::pages) return nullptr;
-  return {{"requested", s.pages.requested}, {"drawn", s.pages.drawn}, {"cached", s.pages.cached}, {"dropped", s.pages.dropped}};
+  return {{"requested", s.pages.requested}, {"drawn", s.pages.drawn}, {"cached", s.pages.cached}, {"dropped", s.pages.dropped},
+          {"tiles", s.pages.tiles}};
 }
 
 // One frame's figures for --stats (names as DESIGN.md defines them).

@@ -106,10 +106,7 @@ void DepthPyramid::build_receivers(const DepthPyramid& frame, const glm::mat4& f
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, pyramid_binding, depths_.name());
   glBindBufferRange(GL_SHADER_STORAGE_BUFFER, frame_depths_binding, frame.depths_.name(), 0,
                     static_cast<GLsizeiptr>(frame.size_.x) * frame.size_.y * static_cast<GLsizeiptr>(sizeof(float)));
-  set_levels(clear_marks_program_);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  glUseProgram(clear_marks_program_.name());
-  glDispatchCompute(groups(size_.x), groups(size_.y), 1);
+  fill_marks(0.0f);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   set_levels(marks_program_);
   gl::set_uniform(marks_program_, "frame_size", frame.size_);
@@ -126,6 +123,20 @@ void DepthPyramid::build_receivers(const DepthPyramid& frame, const glm::mat4& f
   glDispatchCompute(groups((frame.size_.x + receiver_pixel_step - 1) / receiver_pixel_step),
                     groups((frame.size_.y + receiver_pixel_step - 1) / receiver_pixel_step), 1);
   reduce(whole_, 1);
+}
+
+void DepthPyramid::mark_everywhere() const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, pyramid_binding, depths_.name());
+  fill_marks(1.0f);
+  reduce(whole_, 1);
+}
+
+void DepthPyramid::fill_marks(float mark) const {
+  set_levels(clear_marks_program_);
+  gl::set_uniform(clear_marks_program_, "mark", mark);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glUseProgram(clear_marks_program_.name());
+  glDispatchCompute(groups(size_.x), groups(size_.y), 1);
 }
 
 void DepthPyramid::reduce(const gl::Buffer& passes, std::size_t first_level) const {

@@ -32,6 +32,10 @@ class DepthPyramid {
   // maps `map_texels` wide: it marks no surface that looks one of them up.
   void build_receivers(const DepthPyramid& frame, const glm::mat4& frame_view_projection, const glm::mat4& map_view_projection,
                        const std::vector<glm::mat4>& earlier = {}, float map_texels = 1.0f) const;
+  // Or as a receiver mask with a receiver at the far end of every texel: a caster is then
+  // selected by whether its rectangle reaches the view's image at all (a paged map's tiles, whose
+  // pages are kept for later frames that may show other receivers).
+  void mark_everywhere() const;
   // Binds it for a program that includes depth_pyramid.glsl, and its changed tiles for one that
   // marks them.
   void bind_for(const gl::Program& program) const;
@@ -44,6 +48,7 @@ class DepthPyramid {
 
  private:
   void set_levels(const gl::Program& program) const;
+  void fill_marks(float mark) const;  // level 0 of a receiver mask, all `mark`
   // The base over every tile (`whole_image`) or the changed ones, the levels above, and the
   // changed tiles' marks cleared.
   void build_tiles(bool whole_image, GLuint polygon_depth, GLuint point_depths) const;

@@ -21,7 +21,7 @@ DrawnCommands::DrawnCommands(std::size_t lists, std::size_t commands_per_list)
   gl::store(counts_, std::vector<glm::uvec2>(std::max<std::size_t>(lists, 1), glm::uvec2(0)));
 }
 
-void DrawnCommands::keep_drawn(GLuint commands, std::size_t first, std::size_t count, std::size_t list) const {
+void DrawnCommands::keep_drawn(GLuint commands, std::size_t first, std::size_t count, std::size_t list, bool adds_triangles) const {
   if (list >= lists_ || count > commands_per_list_) throw RuntimeFailure("a list of draws outgrew its room");
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, commands_binding, commands);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, drawn_binding, commands_.name());
@@ -30,6 +30,7 @@ void DrawnCommands::keep_drawn(GLuint commands, std::size_t first, std::size_t c
   gl::set_uniform(program_, "command_count", static_cast<unsigned>(count));
   gl::set_uniform(program_, "drawn_first", static_cast<unsigned>(list * commands_per_list_));
   gl::set_uniform(program_, "count_slot", static_cast<unsigned>(list));
+  gl::set_uniform(program_, "adds_triangles", adds_triangles ? 1 : 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
   glUseProgram(program_.name());
   glDispatchCompute(1, 1, 1);

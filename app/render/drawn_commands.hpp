@@ -17,11 +17,12 @@ class DrawnCommands {
   // Room for `lists` copies of up to `commands_per_list` draws each.
   DrawnCommands(std::size_t lists, std::size_t commands_per_list);
   // Copies `count` commands of buffer `commands` from `first`, less the empty ones, into copy
-  // `list` (below `lists`), on the GPU.
-  void keep_drawn(GLuint commands, std::size_t first, std::size_t count, std::size_t list) const;
+  // `list` (below `lists`), on the GPU; with `adds_triangles` its triangles are added to those
+  // the copy counted before (lists drawn in turn from one copy).
+  void keep_drawn(GLuint commands, std::size_t first, std::size_t count, std::size_t list, bool adds_triangles = false) const;
   // `draws`, the list that keep_drawn copied as `list`, drawn from that copy.
   GpuScene::PlantDraws from_copy(GpuScene::PlantDraws draws, std::size_t list) const;
-  // The triangles each copy draws, read back.
+  // The triangles each copy draws (or drew, added up), read back.
   std::vector<std::size_t> read_triangles() const;
 
  private:

@@ -429,6 +429,7 @@ GpuSampler::Totals GpuSampler::read_totals() const {
   out.triangles = every_band_drawn_->read_triangles().front();
   out.frame_triangles = part_lists_->frame_triangles(casters_band_.value_or(bands_used_));
   out.layer_triangles = part_lists_->layer_triangles();
+  out.selections = static_cast<std::size_t>(part_lists_->selections());
   return out;
 }
 

@@ -103,8 +103,8 @@ class GpuSampler {
   // Read back, for tests and figures: per plant its points, whether drawn as polygons and its band
   // this frame (none: not in view), the draws (first point, count, first sample, plant), and the
   // totals: the polygon plants' triangles of every band (as polygon_draws last listed them), the points and triangles of the bands the
-  // frame shows (all but the casters'), and the triangles of the plants selected for each shadow
-  // view this frame (select_casters; none where its views drew them all).
+  // frame shows (all but the casters'), and the triangles of the plants selected for each layer
+  // this frame (select_casters; none where its views drew them all), in that many selections.
   struct Count {
     std::uint32_t points = 0;
     bool polygons = false;
@@ -115,6 +115,7 @@ class GpuSampler {
   struct Totals {
     std::size_t triangles = 0, frame_points = 0, frame_triangles = 0;
     std::vector<std::size_t> layer_triangles;
+    std::size_t selections = 0;
   };
   Totals read_totals() const;
 

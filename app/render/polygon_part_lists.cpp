@@ -62,6 +62,8 @@ void PolygonPartLists::bind() const {
 
 void PolygonPartLists::begin(const glm::mat4& view_projection, glm::vec2 pixels) {
   layers_selected_ = 0;
+  selections_ = 0;
+  selected_layers_ = 0;
   gl::set_uniform(part_masks_program_, "view_projection", view_projection);
   gl::set_uniform(part_masks_program_, "pixels", pixels);
 }
@@ -97,6 +99,9 @@ GpuScene::PlantDraws PolygonPartLists::select(int layer, const glm::mat4& map_vi
                                               GLuint plants) {
   if (layer < 0 || layer >= max_layers) throw RuntimeFailure("the GPU sampler selects casters for at most 8 shadow views");
   layers_selected_ = std::max(layers_selected_, layer + 1);
+  ++selections_;
+  const bool again = (selected_layers_ >> layer) & 1u;
+  selected_layers_ |= 1u << layer;
   const std::size_t commands = table_count_ * part_lanes;
   gl::set_uniform(layer_place_program_, "first_command", static_cast<unsigned>(static_cast<std::size_t>(layer) * commands));
   gl::set_uniform(layer_plants_program_, "pixels", glm::vec2(static_cast<float>(map_size)));
@@ -121,7 +126,7 @@ GpuScene::PlantDraws PolygonPartLists::select(int layer, const glm::mat4& map_vi
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
   const auto list = static_cast<std::size_t>(layer);
-  layer_drawn_.keep_drawn(layer_commands_.name(), list * commands, commands, list);
+  layer_drawn_.keep_drawn(layer_commands_.name(), list * commands, commands, list, again);
   return layer_drawn_.from_copy({plants, layer_plants_.name(), layer_commands_.name(), list * commands, commands}, list);
 }
 

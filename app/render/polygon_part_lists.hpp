@@ -4,6 +4,7 @@
 #include "app/render/drawn_commands.hpp"
 #include "app/render/gpu_scene.hpp"
 
+#include <cstdint>
 #include <vector>
 
 namespace ecoview {
@@ -29,17 +30,22 @@ class PolygonPartLists {
   GpuScene::PlantDraws frame_draws(int band, GLuint plants) const;
   // The lists of the polygon plants of every band this frame that shadow what shadow view
   // `layer` (below max_layers) serves, through `map_view` (its world → clip matrix) onto
-  // `map_size`² texels, by the receivers in `receivers`.
+  // `map_size`² texels, by the receivers in `receivers`. Views drawn in turn may share a layer:
+  // its triangles are then their sum.
   GpuScene::PlantDraws select(int layer, const glm::mat4& map_view, int map_size, const DepthPyramid& receivers, GLuint plants);
 
-  // Read back: the triangles of the frame's first `bands` bands, and of each view selected for.
+  // Read back: the triangles of the frame's first `bands` bands, and of each layer selected for.
   std::size_t frame_triangles(int bands) const;
   std::vector<std::size_t> layer_triangles() const;
+  // The selections this frame, over all layers.
+  int selections() const { return selections_; }
 
  private:
   std::size_t table_count_ = 0;
   std::size_t capacity_ = 0;  // places in each list of plants by part
   int layers_selected_ = 0;   // this frame: layers 0 to this - 1
+  int selections_ = 0;
+  std::uint32_t selected_layers_ = 0;  // this frame, a bit a layer
   gl::Buffer part_masks_, part_plants_, part_commands_;
   gl::Program part_masks_program_, part_lists_program_;
   gl::Buffer layer_counts_, layer_plants_, layer_commands_;

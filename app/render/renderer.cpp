@@ -343,11 +343,17 @@ FramePass::ShadowLookup Renderer::render_pages_on_cpu(const shadow::Camera& came
 
 FramePass::ShadowLookup Renderer::render_pages_on_gpu(const shadow::Camera& camera, const shadow::Light& light) {
   request_pages(camera, light);
-  std::optional<GpuScene::PlantDraws> plants;
-  if (draws_points()) plants = gpu_sampler_->polygon_draws(0, gpu_sampler_->band_count());
+  // A tile draws the polygon plants whose boxes reach its image, whatever receivers this frame
+  // shows: its pages are kept for later frames.
+  if (draws_points()) receivers_->mark_everywhere();
   const std::vector<shadow::PageTile> tiles = page_tiles();
   for (const shadow::PageTile& tile : tiles) {
     const shadow::ShadowSetup setup = tile_setup(tile);
+    std::optional<GpuScene::PlantDraws> plants;
+    if (draws_points()) {
+      plants = gpu_sampler_->select_casters(0, setup.views.front().view_projection(), map_.depths().size(), *receivers_);
+      stages_.end("map choice");
+    }
     map_.draw_polygons(gpu_scene_, setup, 0, light, stages_, plants ? &*plants : nullptr);
     if (draws_points()) {
       gpu_sampler_->cap_for_map(setup.views.front().view_projection(), shadow_texels(), settings_.k);
@@ -724,15 +730,15 @@ const FrameStats& Renderer::stats() const {
     stats_.triangles = fixed_triangles() + chosen.frame_triangles;
     if (pending_.shadow_views > 0) {
       stats_.shadow_points = map_.points_drawn();
-      stats_.shadow_triangles = pending_.shadow_views * fixed_triangles();
-      for (std::size_t layer = 0; layer < pending_.shadow_views; ++layer) {
-        stats_.shadow_triangles += layer < chosen.layer_triangles.size() ? chosen.layer_triangles[layer] : chosen.triangles;
-      }
+      // The views that drew every band's polygon plants, and those that drew a selection.
+      const std::size_t unselected = pending_.shadow_views - std::min(chosen.selections, pending_.shadow_views);
+      stats_.shadow_triangles = pending_.shadow_views * fixed_triangles() + unselected * chosen.triangles;
+      for (const std::size_t triangles : chosen.layer_triangles) stats_.shadow_triangles += triangles;
     }
   }
   if (pages_) {
     const shadow::PagePool::Frame& asked = pages_->last_request();
-    stats_.pages = {asked.requested, static_cast<int>(asked.to_draw.size()), asked.cached, asked.dropped};
+    stats_.pages = {asked.requested, static_cast<int>(asked.to_draw.size()), asked.cached, asked.dropped, static_cast<int>(page_tiles().size())};
   }
   pending_ = {};
   return stats_;

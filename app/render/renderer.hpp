@@ -45,9 +45,10 @@ struct FrameStats {
   // shadow map's as "map …"), in the order each first ran.
   std::vector<std::pair<std::string, double>> stage_ms;
   // A virtual paged map's pages (--method adaptive): asked for by the frame's pixels, drawn this
-  // frame, held drawn from earlier frames, and given no layer (the pool was full).
+  // frame, held drawn from earlier frames, and given no layer (the pool was full); and the tiles
+  // (views of up to 4 × 4 pages) that the drawn ones were drawn in.
   struct Pages {
-    int requested = 0, drawn = 0, cached = 0, dropped = 0;
+    int requested = 0, drawn = 0, cached = 0, dropped = 0, tiles = 0;
   } pages;
 };
 
