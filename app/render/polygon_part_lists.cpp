@@ -4,6 +4,7 @@
 #include "app/gl/shader_program.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <numeric>
 
 namespace ecoview {
@@ -61,9 +62,8 @@ void PolygonPartLists::bind() const {
 }
 
 void PolygonPartLists::begin(const glm::mat4& view_projection, glm::vec2 pixels) {
-  layers_selected_ = 0;
-  selections_ = 0;
   selected_layers_ = 0;
+  selections_ = 0;
   gl::set_uniform(part_masks_program_, "view_projection", view_projection);
   gl::set_uniform(part_masks_program_, "pixels", pixels);
 }
@@ -98,7 +98,6 @@ GpuScene::PlantDraws PolygonPartLists::frame_draws(int band, GLuint plants) cons
 GpuScene::PlantDraws PolygonPartLists::select(int layer, const glm::mat4& map_view, int map_size, const DepthPyramid& receivers,
                                               GLuint plants) {
   if (layer < 0 || layer >= max_layers) throw RuntimeFailure("the GPU sampler selects casters for at most 8 shadow views");
-  layers_selected_ = std::max(layers_selected_, layer + 1);
   ++selections_;
   const bool again = (selected_layers_ >> layer) & 1u;
   selected_layers_ |= 1u << layer;
@@ -138,7 +137,7 @@ std::size_t PolygonPartLists::frame_triangles(int bands) const {
 
 std::vector<std::size_t> PolygonPartLists::layer_triangles() const {
   std::vector<std::size_t> triangles = layer_drawn_.read_triangles();
-  triangles.resize(static_cast<std::size_t>(layers_selected_));
+  triangles.resize(static_cast<std::size_t>(std::bit_width(selected_layers_)));  // layers 0 to the last selected
   return triangles;
 }
 

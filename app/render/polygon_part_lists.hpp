@@ -43,9 +43,8 @@ class PolygonPartLists {
  private:
   std::size_t table_count_ = 0;
   std::size_t capacity_ = 0;  // places in each list of plants by part
-  int layers_selected_ = 0;   // this frame: layers 0 to this - 1
-  int selections_ = 0;
   std::uint32_t selected_layers_ = 0;  // this frame, a bit a layer
+  int selections_ = 0;                 // this frame, over all layers
   gl::Buffer part_masks_, part_plants_, part_commands_;
   gl::Program part_masks_program_, part_lists_program_;
   gl::Buffer layer_counts_, layer_plants_, layer_commands_;

@@ -343,10 +343,10 @@ FramePass::ShadowLookup Renderer::render_pages_on_cpu(const shadow::Camera& came
 
 FramePass::ShadowLookup Renderer::render_pages_on_gpu(const shadow::Camera& camera, const shadow::Light& light) {
   request_pages(camera, light);
+  const std::vector<shadow::PageTile> tiles = page_tiles();
   // A tile draws the polygon plants whose boxes reach its image, whatever receivers this frame
   // shows: its pages are kept for later frames.
-  if (draws_points()) receivers_->mark_everywhere();
-  const std::vector<shadow::PageTile> tiles = page_tiles();
+  if (draws_points() && !tiles.empty()) receivers_->mark_everywhere();
   for (const shadow::PageTile& tile : tiles) {
     const shadow::ShadowSetup setup = tile_setup(tile);
     std::optional<GpuScene::PlantDraws> plants;
