@@ -56,7 +56,7 @@ class FramePass {
     // pages, one a layer, each `size` texels a side with its guard; 0 for none.
     GLuint page_table = 0;
     shadow::VirtualMap pages{};
-    std::vector<glm::ivec2> page_windows;  // where each view's level's window starts
+    std::vector<glm::ivec2> page_windows{};  // where each view's level's window starts
   };
   // Lights the surfaces drawn.
   void shade(const shadow::Camera& camera, const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;
