@@ -46,7 +46,7 @@ const std::vector<Technique>& techniques() {
        Lookup::pages, every_light, LastFrame::nothing, false, lit_scene_map},
       {Method::adaptive_silhouette, "adaptive+silhouette",
        "the adaptive map with a silhouette map in each page, looked up as silhouette's: sharper edges for a "
-       "geometry-shader pass over the polygon casters of every tile of pages drawn (on llvmpipe 1.4-3 times adaptive's frame)",
+       "geometry-shader pass over the polygon casters that reach each tile of pages drawn (on llvmpipe 1.1-2 times adaptive's frame)",
        Lookup::pages, every_light, LastFrame::nothing, false, lit_scene_map, true},
       {Method::volumes, "volumes", "exact shadows of polygons by stencil shadow volumes from silhouette edges, counted z-pass where the camera stands in no volume and z-fail elsewhere; point splats cast none, and alpha masks do not cut the volumes",
        Lookup::mask, every_light, LastFrame::nothing, false},
