@@ -7,6 +7,7 @@
 #include "app/render/drawn_commands.hpp"
 #include "app/render/gpu_sampler.hpp"
 #include "app/render/renderer.hpp"
+#include "app/render/silhouette_pass.hpp"
 #include "app/scene/scene_file.hpp"
 #include "pointgen/random.hpp"
 #include "pointgen/sampling/screen_rect.hpp"
@@ -405,6 +406,93 @@ TEST_F(GpuSampling, ACascadeDrawsThePlantsWhoseShadowsFallInIt) {
   EXPECT_GT(low.stats.shadow_triangles, 4 * 2 + beech) << "the beech in more cascades than the first";
   EXPECT_GT(uniform.shadowed, 1000u);
   EXPECT_NEAR(static_cast<double>(low.shadowed), static_cast<double>(uniform.shadowed), 0.15 * static_cast<double>(uniform.shadowed));
+}
+
+// A plant drawn by some of its polygon parts with each triangle's neighbours (the adjacency lists
+// the silhouette and volume passes draw) draws those parts: seen from the side, the silhouette
+// edges of a beech's upper parts lie within those parts' boxes, none down the trunk.
+TEST_F(GpuSampling, APlantDrawnByPartsWithItsNeighboursDrawsThoseParts) {
+  const Scene beech = load_scene({"beech.json", R"({"camera": {"position": [0, 5, 30], "target": [0, 5, 0]},
+      "lights": [{"type": "directional", "direction": [0, 0, -1]}],
+      "objects": [{"type": "plant", "species": "beech", "positions": [[0, 0, 0]]}]})",
+                                  [](const std::string&) { return std::nullopt; }});
+  const PointSamples beech_samples(beech, settings.points_per_triangle, true);
+  GpuScene polygons(beech);
+  polygons.gather_point_meshes();
+  polygons.add_adjacency(beech);
+  GpuSampler gpu(beech.groups, beech_samples, polygons.point_mesh_places());
+  const std::size_t mesh = beech.groups.front().mesh;
+  const std::vector<pointgen::PolygonPart>& parts = beech_samples.meshes()[mesh].polygon_parts;
+  ASSERT_GE(parts.size(), 8u);
+  shadow::Box tree;
+  for (const pointgen::PolygonPart& part : parts) {
+    tree.add(part.center - part.half_size);
+    tree.add(part.center + part.half_size);
+  }
+  // The parts above the tree's middle, one indirect draw each, of plant 0.
+  const float middle = tree.center().y;
+  const GpuScene::DrawPlace place = polygons.point_mesh_places()[mesh];
+  std::vector<GLuint> commands;
+  std::vector<shadow::Box> drawn;
+  for (const pointgen::PolygonPart& part : parts) {
+    if (part.center.y - part.half_size.y < middle) continue;
+    for (GLuint word : {part.index_count, 1u, place.first_index + part.first_index, static_cast<GLuint>(place.base_vertex), 0u}) commands.push_back(word);
+    drawn.emplace_back().add(part.center - part.half_size);
+    drawn.back().add(part.center + part.half_size);
+  }
+  ASSERT_GE(drawn.size(), 2u);
+  ASSERT_LT(drawn.size(), parts.size());
+  gl::Buffer command_list, plant_list, counts;
+  gl::store(command_list, commands);
+  gl::store(plant_list, std::vector<GLuint>{0});
+  gl::store(counts, std::vector<GLuint>{static_cast<GLuint>(drawn.size())});
+  GpuScene::PlantDraws draws = gpu.polygon_draws(0, 1);  // for its resident plants
+  draws.plant_indices = plant_list.name();
+  draws.commands = command_list.name();
+  draws.first_command = 0;
+  draws.command_count = drawn.size();
+  draws.draw_counts = counts.name();
+  draws.count_slot = 0;
+
+  // An orthographic view along the light, the tree filling it.
+  constexpr int size = 256;
+  const glm::vec3 half = 0.55f * (tree.max - tree.min);
+  const float side = std::max(half.x, half.y);
+  const shadow::ShadowView view(glm::lookAt(tree.center() + glm::vec3(0, 0, 2 * half.z + 1), tree.center(), glm::vec3(0, 1, 0)),
+                                glm::ortho(-side, side, -side, side, 0.5f, 4 * half.z + 2));
+  const shadow::ShadowSetup setup{{view}, shadow::ViewSelection::single, "side"};
+  SilhouettePass silhouettes(size);
+  silhouettes.render(polygons, &draws, setup, 0, beech.lights[0]);
+  std::vector<glm::vec2> points(static_cast<std::size_t>(size) * size);
+  glGetTextureSubImage(silhouettes.points(), 0, 0, 0, 0, size, size, 1, GL_RG, GL_FLOAT,
+                       static_cast<GLsizei>(points.size() * sizeof(glm::vec2)), points.data());
+
+  // The cells of the drawn parts' boxes in the map, a cell wider each way.
+  std::vector<bool> inside(points.size(), false);
+  for (const shadow::Box& box : drawn) {
+    glm::vec2 low(size), high(0.0f);
+    for (int c = 0; c < 8; ++c) {
+      const glm::vec4 clip = view.view_projection() * glm::vec4(box.corner(c), 1.0f);
+      const glm::vec2 texel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * static_cast<float>(size);
+      low = glm::min(low, texel);
+      high = glm::max(high, texel);
+    }
+    for (int y = std::max(0, static_cast<int>(low.y) - 2); y < std::min(size, static_cast<int>(high.y) + 2); ++y) {
+      for (int x = std::max(0, static_cast<int>(low.x) - 2); x < std::min(size, static_cast<int>(high.x) + 2); ++x) {
+        inside[static_cast<std::size_t>(y * size + x)] = true;
+      }
+    }
+  }
+  std::size_t edges = 0, outside = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (points[i].x < 0.0f) continue;
+    ++edges;
+    outside += !inside[i];
+  }
+  std::cout << drawn.size() << " of " << parts.size() << " parts drawn: " << edges << " cells with an edge, " << outside
+            << " outside the parts' boxes\n";
+  EXPECT_GT(edges, 200u);
+  EXPECT_EQ(outside, 0u);
 }
 
 // A paged map draws each tile of its pages with the polygon plants whose boxes reach the tile: a

@@ -180,7 +180,11 @@ void GpuScene::multi_draw_chosen(const PlantDraws& draws, GLenum mode) const {
 
 void GpuScene::add_adjacency(const Scene& scene) {
   for (std::size_t m = 0; m < meshes_.size(); ++m) {
-    if (!meshes_[m].adjacency) gl::store(meshes_[m].adjacency.emplace(), pointgen::adjacency_indices(scene.meshes[m]));
+    if (meshes_[m].adjacency) continue;
+    // In the order of the index list drawn, so that a part's range of it, doubled, is that part's.
+    pointgen::TriangleMesh drawn = scene.meshes[m];
+    if (meshes_[m].point_mesh) drawn.indices = pointgen::split_triangles(drawn).indices;
+    gl::store(meshes_[m].adjacency.emplace(), pointgen::adjacency_indices(drawn));
   }
   if (chosen_ && !chosen_->adjacency) gather_adjacency();
 }
