@@ -31,4 +31,18 @@ inline Box transformed(const Box& box, const glm::mat4x3& transform) {
   return out;
 }
 
+// Whether `box` lies wholly beyond one side of the clip volume of `view_projection` (world to
+// clip): nothing of it can be drawn in that view.
+inline bool outside_view(const Box& box, const glm::mat4& view_projection) {
+  if (box.empty()) return true;
+  glm::bvec3 below(true), above(true);
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec4 clip = view_projection * glm::vec4(box.corner(i), 1.0f);
+    const glm::vec3 p(clip);
+    below = below && glm::lessThan(p, glm::vec3(-clip.w));
+    above = above && glm::greaterThan(p, glm::vec3(clip.w));
+  }
+  return glm::any(below) || glm::any(above);
+}
+
 }  // namespace shadow

@@ -32,6 +32,11 @@ struct ShadowView {
   ShadowView(const glm::mat4& view, const Paraboloid& paraboloid) : view(view), paraboloid(paraboloid) {}
 
   glm::mat4 view_projection() const { return projection * view; }
+  // view_projection() of a projective view; none for a paraboloid view, which no matrix projects.
+  std::optional<glm::mat4> clip_matrix() const {
+    if (paraboloid) return std::nullopt;
+    return view_projection();
+  }
   // (zoom, range) as the shaders take them; zoom 0 for a projective view.
   glm::vec2 paraboloid_parameters() const {
     return paraboloid ? glm::vec2(paraboloid->zoom, paraboloid->range) : glm::vec2(0.0f);

@@ -521,6 +521,38 @@ TEST_F(GpuSampling, APageTileDrawsThePolygonPlantsThatReachIt) {
   EXPECT_NEAR(static_cast<double>(paged.shadowed), static_cast<double>(exact.shadowed), 0.05 * static_cast<double>(exact.shadowed));
 }
 
+// A large mesh drawn once, the terrain, goes into each view by its chunks that reach it: into the
+// tiles of a paged map, of which none takes it whole, and into the frame, which sees part of it;
+// the shadow of a box on it stays the volumes'.
+TEST_F(GpuSampling, APageTileAndTheFrameDrawTheTerrainChunksThatReachThem) {
+  settings.width = 320;
+  settings.height = 180;
+  settings.gpu_sampler = true;
+  const std::string scene = R"({"camera": {"position": [0, 3, 0], "target": [0, 0, -20], "fov_y_deg": 50, "near": 0.5, "far": 300},
+      "lights": [{"type": "directional", "direction": [0.6, -0.6, 0.3]}],
+      "objects": [{"type": "ecosystem", "seed": 3, "size": [200, 200], "terrain": {"relief": 0, "resolution": 128},
+                   "plants": [{"species": "fern", "count": 1}]},
+                  {"type": "box", "min": [-4, 0, -16], "max": [2, 4, -12]}]})";
+  std::size_t terrain = 0;
+  const Scene loaded = load_scene({"scene.json", scene, [](const std::string&) { return std::nullopt; }});
+  for (std::size_t m = 0; m < loaded.meshes.size(); ++m) {
+    if (!loaded.point_meshes[m]) terrain = std::max(terrain, loaded.meshes[m].triangle_count());
+  }
+  ASSERT_GT(terrain, 20000u) << "the terrain is large enough to be drawn by chunks";
+  settings.method = shadow::Method::adaptive;
+  const Shadowed paged = render_shadows(scene);
+  const auto tiles = static_cast<std::size_t>(paged.stats.pages.tiles);
+  settings.method = shadow::Method::volumes;
+  const Shadowed exact = render_shadows(scene);
+  std::cout << tiles << " tiles, " << paged.stats.shadow_triangles << " triangles (the terrain " << terrain << "); the frame "
+            << paged.stats.triangles << "; shadowed " << paged.shadowed << " pixels against the volumes' " << exact.shadowed << "\n";
+  ASSERT_GE(tiles, 4u);
+  EXPECT_LT(paged.stats.shadow_triangles, tiles * (terrain + 12) / 2) << "each tile should draw less than half the terrain";
+  EXPECT_LT(paged.stats.triangles, (terrain + 12) * 3 / 4) << "the frame sees less than half the terrain";
+  ASSERT_GT(exact.shadowed, 1000u);
+  EXPECT_NEAR(static_cast<double>(paged.shadowed), static_cast<double>(exact.shadowed), 0.03 * static_cast<double>(exact.shadowed));
+}
+
 TEST_F(GpuSampling, ItsFrameCoversWhatThePolygonsCover) {
   settings.method = shadow::Method::none;
   settings.points = false;

@@ -123,7 +123,9 @@ TEST(VirtualMap, EachLevelsWindowHoldsThePageUnderTheEyeAndStaysInsideTheLevel) 
       EXPECT_TRUE(map.slot({0, level, eye_page.x, eye_page.y}, origins).has_value()) << "level " << level;
       EXPECT_GE(glm::min(origin.x, origin.y), 0);
       EXPECT_LE(glm::max(origin.x, origin.y) + map.window_pages(level), side);
-      if (side <= map.window) EXPECT_EQ(origin, glm::ivec2(0));
+      if (side <= map.window) {
+        EXPECT_EQ(origin, glm::ivec2(0));
+      }
     }
   }
 }

@@ -13,10 +13,10 @@ AdjacencyDraw::AdjacencyDraw(std::vector<std::string> stages)
     : stages_(std::move(stages)), tables_program_(gl::build_program(stages_)) {}
 
 void AdjacencyDraw::draw(const GpuScene& scene, const GpuScene::PlantDraws* plants,
-                         const std::function<void(const gl::Program&)>& set_uniforms) {
+                         const std::function<void(const gl::Program&)>& set_uniforms, const std::optional<glm::mat4>& view) {
   glUseProgram(tables_program_.name());
   set_uniforms(tables_program_);
-  scene.draw_with_adjacency();
+  scene.draw_with_adjacency(view);
   if (plants == nullptr || plants->command_count == 0) return;
   const GpuScene::PlantDraws draws = adjacency_draws(*plants);
   if (!plants_program_) plants_program_ = gl::build_program(stages_, "#define PLANT_INDEX\n");

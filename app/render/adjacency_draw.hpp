@@ -17,11 +17,11 @@ namespace ecoview {
 class AdjacencyDraw {
  public:
   explicit AdjacencyDraw(std::vector<std::string> stages);
-  // `scene` with its neighbours found (GpuScene::add_adjacency); `plants`, if any, its plants
-  // drawn as polygons (GpuScene::draw_chosen). Each program is bound and handed to `set_uniforms`
-  // before it draws.
+  // `scene` with its neighbours found (GpuScene::add_adjacency), the chunks of its large meshes
+  // that reach `view` if one is given; `plants`, if any, its plants drawn as polygons
+  // (GpuScene::draw_chosen). Each program is bound and handed to `set_uniforms` before it draws.
   void draw(const GpuScene& scene, const GpuScene::PlantDraws* plants,
-            const std::function<void(const gl::Program&)>& set_uniforms);
+            const std::function<void(const gl::Program&)>& set_uniforms, const std::optional<glm::mat4>& view = std::nullopt);
 
  private:
   GpuScene::PlantDraws adjacency_draws(const GpuScene::PlantDraws& plants);

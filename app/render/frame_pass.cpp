@@ -79,10 +79,13 @@ FramePass::FramePass(int width, int height, bool aliasing, bool surface_textures
   attach(lit_, {&color_, &visibility_, &aliasing_});
 }
 
+glm::mat4 FramePass::view_projection(const shadow::Camera& camera) const {
+  return camera.projection(static_cast<float>(width_) / static_cast<float>(height_)) * camera.view();
+}
+
 void FramePass::set_camera(const gl::Program& program, const shadow::Camera& camera) const {
-  const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
   gl::set_uniform(program, "view", camera.view());
-  gl::set_uniform(program, "view_projection", camera.projection(aspect) * camera.view());
+  gl::set_uniform(program, "view_projection", view_projection(camera));
   gl::set_uniform(program, "camera_position", camera.position);
 }
 
@@ -96,7 +99,7 @@ void FramePass::draw_surfaces(const GpuScene& scene, const shadow::Camera& camer
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
   points_added_ = false;
   start_surfaces(surface_program_, camera);
-  scene.draw();
+  scene.draw(GL_TRIANGLES, view_projection(camera));
 }
 
 void FramePass::add_chosen_surfaces(const GpuScene& scene, const GpuSampler& sampler, int band, const shadow::Camera& camera) const {

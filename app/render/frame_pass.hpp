@@ -119,6 +119,7 @@ class FramePass {
   // surfaces' positions, `camera` is the one they are seen and shaded for.
   void set_lighting(const gl::Program& program, const shadow::Camera& surface_camera, const shadow::Camera& camera,
                     const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;
+  glm::mat4 view_projection(const shadow::Camera& camera) const;  // world to clip
   void set_camera(const gl::Program& program, const shadow::Camera& camera) const;
   // Binds the surfaces' targets and a program for polygons.
   void start_surfaces(const gl::Program& program, const shadow::Camera& camera) const;

@@ -32,6 +32,26 @@ std::vector<Instance> instances_of(const pointgen::InstanceTable& table) {
   return instances;
 }
 
+// A mesh of more triangles than this, other than a point mesh, is drawn by chunks: a cell each of
+// a grid of chunk_cells³ over its bounds (the ecosystem's terrain: 131,072 triangles in chunks of
+// about 31 m a side), so that a view draws those that reach it alone: a tile of a paged map
+// covers a few metres, and its silhouette pass shades every triangle drawn.
+constexpr std::size_t chunked_triangles = 16384;
+constexpr int chunk_cells = 8;
+
+// A mesh's triangles in the order they are drawn: a point mesh's by the polygon parts the sampler
+// chooses (PointSamples makes the same split), a large other mesh's by chunks; none for the rest.
+std::optional<pointgen::TriangleSplit> drawn_split(const pointgen::TriangleMesh& mesh, bool point_mesh) {
+  if (point_mesh) return pointgen::split_triangles(mesh);
+  if (mesh.triangle_count() > chunked_triangles) return pointgen::split_triangles(mesh, chunk_cells);
+  return std::nullopt;
+}
+
+std::optional<glm::mat4x3> only_transform(const pointgen::InstanceTable& table) {
+  if (table.size() != 1) return std::nullopt;
+  return table.transforms.front();
+}
+
 void attribute(GLuint vao, GLuint location, GLuint binding, GLint size, GLuint offset) {
   glEnableVertexArrayAttrib(vao, location);
   glVertexArrayAttribFormat(vao, location, size, GL_FLOAT, GL_FALSE, offset);
@@ -53,18 +73,21 @@ GpuScene::GpuScene(const Scene& scene) : textures_(scene.meshes) {
     m.vertex_count = static_cast<GLsizei>(vertices.size());
     m.index_count = static_cast<GLsizei>(mesh.indices.size());
     places_.emplace_back();
-    if (!scene.point_meshes[i]) {
-      gl::store(m.indices, mesh.indices);
-      continue;
+    m.point_mesh = scene.point_meshes[i];
+    if (m.point_mesh) {
+      places_.back() = {static_cast<GLuint>(point_mesh_indices_), point_mesh_vertices_};
+      point_mesh_indices_ += m.index_count;
+      point_mesh_vertices_ += m.vertex_count;
     }
-    m.point_mesh = true;
-    places_.back() = {static_cast<GLuint>(point_mesh_indices_), point_mesh_vertices_};
-    point_mesh_indices_ += m.index_count;
-    point_mesh_vertices_ += m.vertex_count;
-    // In the order of the parts the sampler chooses from (PointSamples makes the same split).
-    const pointgen::TriangleSplit split = pointgen::split_triangles(mesh);
-    gl::store(m.indices, split.indices);
-    for (const pointgen::PolygonPart& part : split.parts) m.parts.push_back({part.first_index, static_cast<GLsizei>(part.index_count)});
+    const std::optional<pointgen::TriangleSplit> split = drawn_split(mesh, m.point_mesh);
+    gl::store(m.indices, split ? split->indices : mesh.indices);
+    if (!split) continue;
+    for (const pointgen::PolygonPart& part : split->parts) {
+      m.parts.push_back({part.first_index, static_cast<GLsizei>(part.index_count)});
+      if (m.point_mesh) continue;
+      m.chunk_boxes.emplace_back().add(part.center - part.half_size);
+      m.chunk_boxes.back().add(part.center + part.half_size);
+    }
   }
   for (const pointgen::InstanceTable& group : scene.groups) {
     const Mesh& mesh = meshes_[group.mesh];
@@ -77,6 +100,7 @@ GpuScene::GpuScene(const Scene& scene) : textures_(scene.meshes) {
     g.instance_count = static_cast<GLsizei>(instances.size());
     g.whole = {0, g.instance_count};
     g.capacity = instances.size();
+    g.only_transform = only_transform(group);
 
     set_attributes(g.vertex_array.name(), mesh, g.instances.name());
   }
@@ -183,13 +207,13 @@ void GpuScene::add_adjacency(const Scene& scene) {
     if (meshes_[m].adjacency) continue;
     // In the order of the index list drawn, so that a part's range of it, doubled, is that part's.
     pointgen::TriangleMesh drawn = scene.meshes[m];
-    if (meshes_[m].point_mesh) drawn.indices = pointgen::split_triangles(drawn).indices;
+    if (std::optional<pointgen::TriangleSplit> split = drawn_split(drawn, meshes_[m].point_mesh)) drawn.indices = std::move(split->indices);
     gl::store(meshes_[m].adjacency.emplace(), pointgen::adjacency_indices(drawn));
   }
   if (chosen_ && !chosen_->adjacency) gather_adjacency();
 }
 
-void GpuScene::draw_with_adjacency() const {
+void GpuScene::draw_with_adjacency(const std::optional<glm::mat4>& view) const {
   if (meshes_.empty() || !meshes_.front().adjacency) throw RuntimeFailure("draw_with_adjacency before add_adjacency");
   textures_.bind();
   for (const Group& group : groups_) {
@@ -200,10 +224,38 @@ void GpuScene::draw_with_adjacency() const {
     const GLuint vao = group.vertex_array.name();
     glVertexArrayElementBuffer(vao, mesh.adjacency->name());
     glBindVertexArray(vao);
-    glDrawElementsInstanced(GL_TRIANGLES_ADJACENCY, 2 * mesh.index_count, GL_UNSIGNED_INT, nullptr, group.instance_count);
+    for (const Range& range : ranges_in_view(group, view)) {
+      glDrawElementsInstanced(GL_TRIANGLES_ADJACENCY, 2 * range.count, GL_UNSIGNED_INT,
+                              reinterpret_cast<const void*>(2 * static_cast<std::uintptr_t>(range.first) * sizeof(GLuint)), group.instance_count);
+    }
     glBindVertexArray(0);
     glVertexArrayElementBuffer(vao, mesh.indices.name());
   }
+}
+
+std::vector<GpuScene::Range> GpuScene::ranges_in_view(const Group& group, const std::optional<glm::mat4>& view) const {
+  const Mesh& mesh = meshes_[group.mesh];
+  if (!view || !group.only_transform || mesh.chunk_boxes.empty()) return {{0, mesh.index_count}};
+  std::vector<Range> ranges;
+  for (std::size_t c = 0; c < mesh.chunk_boxes.size(); ++c) {
+    if (shadow::outside_view(shadow::transformed(mesh.chunk_boxes[c], *group.only_transform), *view)) continue;
+    const Range chunk = mesh.parts[c];
+    if (!ranges.empty() && ranges.back().first + static_cast<GLuint>(ranges.back().count) == chunk.first) {
+      ranges.back().count += chunk.count;
+    } else {
+      ranges.push_back(chunk);
+    }
+  }
+  return ranges;
+}
+
+std::size_t GpuScene::fixed_triangles(const std::optional<glm::mat4>& view) const {
+  std::size_t triangles = 0;
+  for (const Group& group : groups_) {
+    if (meshes_[group.mesh].point_mesh) continue;
+    for (const Range& range : ranges_in_view(group, view)) triangles += static_cast<std::size_t>(range.count / 3) * static_cast<std::size_t>(group.instance_count);
+  }
+  return triangles;
 }
 
 void GpuScene::reserve(Group& group, std::size_t instances) {
@@ -221,6 +273,7 @@ void GpuScene::update(std::size_t group, const pointgen::InstanceTable& table, c
   g.instance_count = static_cast<GLsizei>(n);
   g.whole = {0, g.instance_count};
   g.part_instances.clear();
+  g.only_transform = only_transform(table);
   const std::vector<Range>& mesh_parts = meshes_[g.mesh].parts;
   if (parts.size() == n && n > 0 && !mesh_parts.empty()) {
     // After the table: the instances with every part drawn whole, then each part's.
@@ -243,7 +296,7 @@ void GpuScene::update(std::size_t group, const pointgen::InstanceTable& table, c
   glNamedBufferSubData(g.instances.name(), 0, static_cast<GLsizeiptr>(instances.size() * sizeof(Instance)), instances.data());
 }
 
-void GpuScene::draw(GLenum mode, Parts parts) const {
+void GpuScene::draw(GLenum mode, const std::optional<glm::mat4>& view) const {
   textures_.bind();
   for (const Group& group : groups_) {
     const Mesh& mesh = meshes_[group.mesh];
@@ -254,12 +307,7 @@ void GpuScene::draw(GLenum mode, Parts parts) const {
                                           reinterpret_cast<const void*>(static_cast<std::uintptr_t>(indices.first) * sizeof(GLuint)),
                                           instances.count, instances.first);
     };
-    const Range all_indices{0, mesh.index_count};
-    if (parts == Parts::all) {
-      draw_range(all_indices, {0, group.instance_count});
-      continue;
-    }
-    draw_range(all_indices, group.whole);
+    for (const Range& range : ranges_in_view(group, view)) draw_range(range, group.whole);
     for (std::size_t p = 0; p < group.part_instances.size(); ++p) draw_range(mesh.parts[p], group.part_instances[p]);
   }
   glBindVertexArray(0);

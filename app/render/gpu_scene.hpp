@@ -2,6 +2,7 @@
 #include "app/gl/gl_objects.hpp"
 #include "app/render/surface_textures.hpp"
 #include "app/scene/scene.hpp"
+#include "shadow/box.hpp"
 
 #include <memory>
 #include <optional>
@@ -32,17 +33,18 @@ class GpuScene {
   explicit GpuScene(const Scene& scene);
   // Whether programs that draw the scene need their SURFACE_TEXTURES variant (textures, masks).
   bool has_surface_textures() const { return textures_.any(); }
-  enum class Parts { chosen, all };
-  // `mode` GL_PATCHES (of 3 vertices) for programs that tessellate. `all`: every instance whole,
-  // whatever parts were chosen (shadow volumes need the casters the camera does not see).
-  void draw(GLenum mode = GL_TRIANGLES, Parts parts = Parts::chosen) const;
+  // `mode` GL_PATCHES (of 3 vertices) for programs that tessellate. With `view` (world to clip), a
+  // large mesh drawn once (the terrain) is drawn by its chunks whose boxes reach the view alone.
+  void draw(GLenum mode = GL_TRIANGLES, const std::optional<glm::mat4>& view = std::nullopt) const;
+  // The triangles of the meshes other than point meshes that draw(mode, view) draws.
+  std::size_t fixed_triangles(const std::optional<glm::mat4>& view) const;
   // Finds each triangle's neighbours across its edges (pointgen::adjacency_indices) for
   // draw_with_adjacency and draw_chosen_with_adjacency; `scene` is the one this was made from.
   // Once, before the first draw.
   void add_adjacency(const Scene& scene);
   // Every instance whole, each triangle with its neighbours (GL_TRIANGLES_ADJACENCY), for shadow
-  // volumes from silhouette edges.
-  void draw_with_adjacency() const;
+  // volumes and silhouette maps; `view` as for draw.
+  void draw_with_adjacency(const std::optional<glm::mat4>& view = std::nullopt) const;
   // Replaces the instances of a group with `table`, which has at most as many as the scene's
   // group: posed moving objects, or the subset a pass draws as polygons. `parts`, for a point
   // mesh's group, has for each instance the polygon parts to draw, a bit each; none: all.
@@ -77,7 +79,9 @@ class GpuScene {
     std::optional<gl::Buffer> adjacency;  // six indices a triangle (draw_with_adjacency)
     GLsizei vertex_count = 0, index_count = 0;
     bool point_mesh = false;
-    std::vector<Range> parts;  // index ranges of its polygon parts (point meshes)
+    // Index ranges of its polygon parts (a point mesh), or of its chunks (a large other mesh).
+    std::vector<Range> parts;
+    std::vector<shadow::Box> chunk_boxes;  // a chunk's bounds, in the mesh's frame
   };
   struct Group {
     gl::VertexArray vertex_array;
@@ -89,7 +93,11 @@ class GpuScene {
     Range whole;
     std::vector<Range> part_instances;
     std::size_t capacity = 0;
+    std::optional<glm::mat4x3> only_transform;  // of the group's one instance
   };
+  // The index ranges of a group's instances that `view` needs: its mesh's chunks whose boxes reach
+  // it (neighbouring ranges joined), or the whole list.
+  std::vector<Range> ranges_in_view(const Group& group, const std::optional<glm::mat4>& view) const;
   static void set_vertex_attributes(GLuint vertex_array, GLuint vertices, GLuint indices, GLuint surfaces);
   void multi_draw_chosen(const PlantDraws& draws, GLenum mode) const;
   void gather_adjacency();  // the point meshes' neighbours, laid out as their indices in Chosen

@@ -270,7 +270,7 @@ void Renderer::draw_map_view(const shadow::ShadowSetup& setup, int layer, const 
   const pointgen::SampledFrame polygons = settings_.points ? pointgen::SampledFrame{} : polygons_in(pointgen::ViewFrusta(culling_frusta(v)));
   const pointgen::SampledFrame& drawn = settings_.points ? chosen[static_cast<std::size_t>(layer)] : polygons;
   upload_polygons(drawn);
-  stats_.shadow_triangles += fixed_triangles() + drawn.triangle_count;
+  stats_.shadow_triangles += gpu_scene_.fixed_triangles(v.clip_matrix()) + drawn.triangle_count;
   map_.draw_polygons(gpu_scene_, setup, layer, light, stages_);
   if (!settings_.points) return;
   map_.points().upload(drawn.points, tables_, samples_);
@@ -355,6 +355,7 @@ FramePass::ShadowLookup Renderer::render_pages_on_gpu(const shadow::Camera& came
       stages_.end("map choice");
     }
     map_.draw_polygons(gpu_scene_, setup, 0, light, stages_, plants ? &*plants : nullptr);
+    pending_.shadow_fixed_triangles += gpu_scene_.fixed_triangles(setup.views.front().clip_matrix());
     if (draws_points()) {
       gpu_sampler_->cap_for_map(setup.views.front().view_projection(), shadow_texels(), settings_.k);
       stages_.end("map choice");
@@ -555,7 +556,7 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
   const pointgen::SampledFrame selection = gpu_sampler_ && map ? draw_sampled_on_gpu(camera, light, casters)
                                                : draw_sampled_on_cpu(camera, light, shadows);
   stats_.points = selection.point_count;
-  stats_.triangles = fixed_triangles() + selection.triangle_count;
+  stats_.triangles = gpu_scene_.fixed_triangles(view_projection_) + selection.triangle_count;
   throw_on_gl_error();
 }
 
@@ -583,14 +584,6 @@ void Renderer::throw_on_gl_error() {
     throw RuntimeFailure(std::string("OpenGL error ") + code + " while rendering; try a smaller --size or --shadow-size, "
                          "or another --backend");
   }
-}
-
-std::size_t Renderer::fixed_triangles() const {
-  std::size_t triangles = 0;
-  for (const pointgen::InstanceTable& table : tables_) {
-    if (!scene_.point_meshes[table.mesh]) triangles += scene_.meshes[table.mesh].triangle_count() * table.size();
-  }
-  return triangles;
 }
 
 pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camera, const shadow::Light& light, bool shadows) {
@@ -701,6 +694,7 @@ FramePass::ShadowLookup Renderer::render_map_on_gpu(const shadow::Light& light) 
     earlier.push_back(v.view_projection());
     stages_.end("map choice");
     map_.draw_polygons(gpu_scene_, setup_, static_cast<int>(layer), light, stages_, &plants);
+    pending_.shadow_fixed_triangles += gpu_scene_.fixed_triangles(v.clip_matrix());
     if (!draws_points()) continue;
     gpu_sampler_->cap_for_map(v.view_projection(), shadow_texels(), v.paraboloid ? 0.0f : settings_.k);
     stages_.end("map choice");
@@ -727,12 +721,12 @@ const FrameStats& Renderer::stats() const {
   if (pending_.gpu_choice) {
     const GpuSampler::Totals chosen = gpu_sampler_->read_totals();
     stats_.points = chosen.frame_points;
-    stats_.triangles = fixed_triangles() + chosen.frame_triangles;
+    stats_.triangles = gpu_scene_.fixed_triangles(view_projection_) + chosen.frame_triangles;
     if (pending_.shadow_views > 0) {
       stats_.shadow_points = map_.points_drawn();
       // The views that drew every band's polygon plants, and those that drew a selection.
       const std::size_t unselected = pending_.shadow_views - std::min(chosen.selections, pending_.shadow_views);
-      stats_.shadow_triangles = pending_.shadow_views * fixed_triangles() + unselected * chosen.triangles;
+      stats_.shadow_triangles = pending_.shadow_fixed_triangles + unselected * chosen.triangles;
       for (const std::size_t triangles : chosen.layer_triangles) stats_.shadow_triangles += triangles;
     }
   }

@@ -177,8 +177,6 @@ class Renderer {
   // `casters`: the focus body of the casters (planes, normals out).
   pointgen::SampledFrame draw_sampled_on_gpu(const shadow::Camera& camera, const shadow::Light& light,
                                              const std::vector<shadow::Plane>& casters);
-  // The triangles of the meshes never drawn as points (ground, buildings), all of them.
-  std::size_t fixed_triangles() const;
   // The texels of one shadow-map layer.
   float shadow_texels() const { return static_cast<float>(map_.depths().size()) * static_cast<float>(map_.depths().size()); }
   // The GPU sampler's polygon plants that cascade `layer` draws (map_view: its world → clip
@@ -246,6 +244,7 @@ class Renderer {
     bool shadow_timer = false;
     bool gpu_choice = false;         // the GPU sampler's totals
     std::size_t shadow_views = 0;    // of its shadow map, in those totals
+    std::size_t shadow_fixed_triangles = 0;  // of the scene's own meshes, in those views
   };
   mutable PendingStats pending_;
 };

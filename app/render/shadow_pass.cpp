@@ -87,7 +87,7 @@ void ShadowPass::render(const GpuScene& scene, const shadow::ShadowSetup& setup,
     glEnable(GL_CLIP_DISTANCE0);
   }
   glUseProgram(scene_program.name());
-  scene.draw(mode);
+  scene.draw(mode, view.clip_matrix());
   if (plants) {
     glUseProgram(plant_program.name());
     scene.draw_chosen(*plants, mode);

@@ -35,7 +35,7 @@ void SilhouettePass::render(const GpuScene& scene, const GpuScene::PlantDraws* p
     gl::set_uniform(program, "map_size", static_cast<float>(size_));
     gl::set_uniform(program, "light", shadow::homogeneous(light));
     gl::set_uniform(program, "light_view_projection", view.view_projection());
-  });
+  }, view.view_projection());
 }
 
 }  // namespace ecoview

@@ -45,7 +45,8 @@ struct PolygonPart {
 };
 
 // The mesh's triangles grouped by the cell of a grid of `cells`³ over its bounds that holds
-// each one's centroid: the index list in that order, and a part per non-empty cell (at most 64).
+// each one's centroid: the index list in that order, and a part per non-empty cell (at most 64 with
+// the 4³ cells of a point mesh's parts).
 struct TriangleSplit {
   std::vector<std::uint32_t> indices;
   std::vector<PolygonPart> parts;
