@@ -224,12 +224,31 @@ void GpuScene::draw_with_adjacency(const std::optional<glm::mat4>& view) const {
     const GLuint vao = group.vertex_array.name();
     glVertexArrayElementBuffer(vao, mesh.adjacency->name());
     glBindVertexArray(vao);
-    for (const Range& range : ranges_in_view(group, view)) {
-      glDrawElementsInstanced(GL_TRIANGLES_ADJACENCY, 2 * range.count, GL_UNSIGNED_INT,
-                              reinterpret_cast<const void*>(2 * static_cast<std::uintptr_t>(range.first) * sizeof(GLuint)), group.instance_count);
-    }
+    draw_ranges(GL_TRIANGLES_ADJACENCY, ranges_in_view(group, view), 2, {0, group.instance_count});
     glBindVertexArray(0);
     glVertexArrayElementBuffer(vao, mesh.indices.name());
+  }
+}
+
+void GpuScene::draw_ranges(GLenum mode, const std::vector<Range>& ranges, GLuint per_index, Range instances) {
+  if (instances.count == 0) return;
+  const auto offset = [&](const Range& range) {
+    return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(per_index * range.first) * sizeof(GLuint));
+  };
+  if (ranges.size() > 1 && instances.first == 0 && instances.count == 1) {
+    // A mesh drawn once by its chunks: one call, as llvmpipe spends some microseconds on each.
+    std::vector<GLsizei> counts;
+    std::vector<const void*> offsets;
+    for (const Range& range : ranges) {
+      counts.push_back(static_cast<GLsizei>(per_index) * range.count);
+      offsets.push_back(offset(range));
+    }
+    glMultiDrawElements(mode, counts.data(), GL_UNSIGNED_INT, offsets.data(), static_cast<GLsizei>(ranges.size()));
+    return;
+  }
+  for (const Range& range : ranges) {
+    if (range.count == 0) continue;
+    glDrawElementsInstancedBaseInstance(mode, static_cast<GLsizei>(per_index) * range.count, GL_UNSIGNED_INT, offset(range), instances.count, instances.first);
   }
 }
 
@@ -301,14 +320,8 @@ void GpuScene::draw(GLenum mode, const std::optional<glm::mat4>& view) const {
   for (const Group& group : groups_) {
     const Mesh& mesh = meshes_[group.mesh];
     glBindVertexArray(group.vertex_array.name());
-    const auto draw_range = [&](Range indices, Range instances) {
-      if (instances.count == 0 || indices.count == 0) return;
-      glDrawElementsInstancedBaseInstance(mode, indices.count, GL_UNSIGNED_INT,
-                                          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(indices.first) * sizeof(GLuint)),
-                                          instances.count, instances.first);
-    };
-    for (const Range& range : ranges_in_view(group, view)) draw_range(range, group.whole);
-    for (std::size_t p = 0; p < group.part_instances.size(); ++p) draw_range(mesh.parts[p], group.part_instances[p]);
+    draw_ranges(mode, ranges_in_view(group, view), 1, group.whole);
+    for (std::size_t p = 0; p < group.part_instances.size(); ++p) draw_ranges(mode, {mesh.parts[p]}, 1, group.part_instances[p]);
   }
   glBindVertexArray(0);
 }
