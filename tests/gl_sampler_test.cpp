@@ -83,6 +83,20 @@ class GpuSampling : public testing::Test {
             renderer.stats()};
   }
 
+  // A frame of `json` with the paged map, the pages' tiles it drew, and the same frame with the
+  // volumes, whose exact shadows it is held to.
+  struct PagedAndExact {
+    Shadowed paged;
+    std::size_t tiles = 0;
+    Shadowed exact;
+  };
+  PagedAndExact render_paged_and_exact(const std::string& json) {
+    settings.method = shadow::Method::adaptive;
+    const Shadowed paged = render_shadows(json);
+    settings.method = shadow::Method::volumes;
+    return {paged, static_cast<std::size_t>(paged.stats.pages.tiles), render_shadows(json)};
+  }
+
   pointgen::SamplerView view() const {
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
     pointgen::SamplerView v = sampler_view(scene.camera, settings, {scene.camera.projection(aspect) * scene.camera.view()});
@@ -508,11 +522,7 @@ TEST_F(GpuSampling, APageTileDrawsThePolygonPlantsThatReachIt) {
   settings.method = shadow::Method::uniform;
   const std::size_t beech = render_shadows(scene).stats.shadow_triangles - 2;
   ASSERT_GT(beech, 1000u) << "the beech is drawn as polygons";
-  settings.method = shadow::Method::adaptive;
-  const Shadowed paged = render_shadows(scene);
-  const auto tiles = static_cast<std::size_t>(paged.stats.pages.tiles);
-  settings.method = shadow::Method::volumes;
-  const Shadowed exact = render_shadows(scene);
+  const auto [paged, tiles, exact] = render_paged_and_exact(scene);
   std::cout << tiles << " tiles, " << paged.stats.shadow_triangles << " triangles (the beech " << beech << "); shadowed "
             << paged.shadowed << " pixels against the volumes' " << exact.shadowed << "\n";
   ASSERT_GE(tiles, 4u);
@@ -539,11 +549,7 @@ TEST_F(GpuSampling, APageTileAndTheFrameDrawTheTerrainChunksThatReachThem) {
     if (!loaded.point_meshes[m]) terrain = std::max(terrain, loaded.meshes[m].triangle_count());
   }
   ASSERT_GT(terrain, 20000u) << "the terrain is large enough to be drawn by chunks";
-  settings.method = shadow::Method::adaptive;
-  const Shadowed paged = render_shadows(scene);
-  const auto tiles = static_cast<std::size_t>(paged.stats.pages.tiles);
-  settings.method = shadow::Method::volumes;
-  const Shadowed exact = render_shadows(scene);
+  const auto [paged, tiles, exact] = render_paged_and_exact(scene);
   std::cout << tiles << " tiles, " << paged.stats.shadow_triangles << " triangles (the terrain " << terrain << "); the frame "
             << paged.stats.triangles << "; shadowed " << paged.shadowed << " pixels against the volumes' " << exact.shadowed << "\n";
   ASSERT_GE(tiles, 4u);
