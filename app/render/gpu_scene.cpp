@@ -230,7 +230,7 @@ void GpuScene::draw_with_adjacency(const std::optional<glm::mat4>& view) const {
   }
 }
 
-void GpuScene::draw_ranges(GLenum mode, const std::vector<Range>& ranges, GLuint per_index, Range instances) {
+void GpuScene::draw_ranges(GLenum mode, std::span<const Range> ranges, GLuint per_index, Range instances) {
   if (instances.count == 0) return;
   const auto offset = [&](const Range& range) {
     return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(per_index * range.first) * sizeof(GLuint));
@@ -321,7 +321,7 @@ void GpuScene::draw(GLenum mode, const std::optional<glm::mat4>& view) const {
     const Mesh& mesh = meshes_[group.mesh];
     glBindVertexArray(group.vertex_array.name());
     draw_ranges(mode, ranges_in_view(group, view), 1, group.whole);
-    for (std::size_t p = 0; p < group.part_instances.size(); ++p) draw_ranges(mode, {mesh.parts[p]}, 1, group.part_instances[p]);
+    for (std::size_t p = 0; p < group.part_instances.size(); ++p) draw_ranges(mode, {&mesh.parts[p], 1}, 1, group.part_instances[p]);
   }
   glBindVertexArray(0);
 }

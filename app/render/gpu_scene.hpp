@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace ecoview {
@@ -100,7 +101,7 @@ class GpuScene {
   std::vector<Range> ranges_in_view(const Group& group, const std::optional<glm::mat4>& view) const;
   // Draws `ranges` of the bound vertex array's index list, which holds `per_index` indices for
   // each of a triangle list's (2: neighbours' lists), of `instances` of it.
-  static void draw_ranges(GLenum mode, const std::vector<Range>& ranges, GLuint per_index, Range instances);
+  static void draw_ranges(GLenum mode, std::span<const Range> ranges, GLuint per_index, Range instances);
   static void set_vertex_attributes(GLuint vertex_array, GLuint vertices, GLuint indices, GLuint surfaces);
   void multi_draw_chosen(const PlantDraws& draws, GLenum mode) const;
   void gather_adjacency();  // the point meshes' neighbours, laid out as their indices in Chosen

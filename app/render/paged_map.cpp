@@ -27,11 +27,13 @@ int PagedMap::most_layers() {
 }
 
 PagedMap::PagedMap(const shadow::VirtualMap& map, int layers, GLenum depth_format, bool silhouettes)
-    : map_(map), pool_(map, layers), has_silhouettes_(silhouettes) {
+    : map_(map), pool_(map, layers) {
   const GLuint pages = pages_.name();
   glTextureStorage3D(pages, 1, depth_format, map.layer_texels(), map.layer_texels(), pool_.layers());
   make_comparable(pages);  // the guard keeps the filter on its page's layer
-  if (silhouettes) glTextureStorage3D(silhouettes_.name(), 1, GL_RG16F, map.layer_texels(), map.layer_texels(), pool_.layers());
+  if (silhouettes) {
+    glTextureStorage3D(silhouettes_.emplace(GL_TEXTURE_2D_ARRAY).name(), 1, GL_RG16F, map.layer_texels(), map.layer_texels(), pool_.layers());
+  }
 
   glTextureStorage3D(table_.name(), 1, GL_R32UI, map.window, map.window, most_views * map.levels);
   glTextureParameteri(table_.name(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -110,8 +112,8 @@ void PagedMap::copy_pages(GLuint tile_map, GLuint tile_silhouettes, const shadow
     const glm::ivec2 corner = map_.page_corner(tile, page);
     glCopyImageSubData(tile_map, GL_TEXTURE_2D_ARRAY, 0, corner.x, corner.y, 0, pages_.name(), GL_TEXTURE_2D_ARRAY, 0, 0, 0,
                        layer, side, side, 1);
-    if (has_silhouettes_) {
-      glCopyImageSubData(tile_silhouettes, GL_TEXTURE_2D_ARRAY, 0, corner.x, corner.y, 0, silhouettes_.name(), GL_TEXTURE_2D_ARRAY, 0, 0, 0,
+    if (silhouettes_) {
+      glCopyImageSubData(tile_silhouettes, GL_TEXTURE_2D_ARRAY, 0, corner.x, corner.y, 0, silhouettes_->name(), GL_TEXTURE_2D_ARRAY, 0, 0, 0,
                          layer, side, side, 1);
     }
   }
@@ -123,7 +125,7 @@ FramePass::ShadowLookup PagedMap::lookup(const shadow::ShadowSetup& setup) {
   lookup.page_table = table_.name();
   lookup.pages = map_;
   lookup.page_windows = origins_;
-  if (has_silhouettes_) lookup.silhouettes = silhouettes_.name();
+  if (silhouettes_) lookup.silhouettes = silhouettes_->name();
   return lookup;
 }
 

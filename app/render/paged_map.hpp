@@ -7,6 +7,7 @@
 #include "shadow/shadow_setup.hpp"
 #include "shadow/virtual_map.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace ecoview {
@@ -51,8 +52,7 @@ class PagedMap {
   std::vector<shadow::ShadowView> views_;  // of the last request
   std::vector<glm::ivec2> origins_;         // its levels' windows (VirtualMap::window_origins)
   gl::Texture pages_{GL_TEXTURE_2D_ARRAY};
-  bool has_silhouettes_;
-  gl::Texture silhouettes_{GL_TEXTURE_2D_ARRAY};  // each page's silhouette points in its layer, if it has them
+  std::optional<gl::Texture> silhouettes_;  // each page's silhouette points in its layer, where the method has them
   gl::Texture table_{GL_TEXTURE_2D_ARRAY};  // a layer a view's level: its window's pages
   gl::Buffer flags_, list_;
   std::vector<GLuint> zeros_;  // the flags as each request starts
