@@ -8,6 +8,7 @@ layout(binding = 1) uniform sampler2D light_mask;  // SCREEN_MASK (shadow volume
 // SILHOUETTES: per cell of the map's dual grid, a point of the silhouette edge crossing it, as
 // silhouette_point.frag writes it; negative where none does.
 layout(binding = 16) uniform sampler2DArray silhouette_points;
+layout(binding = 18) uniform sampler2DArray silhouette_depths;  // the window depth of each cell's edge
 
 // Low enough that a shadowed surface facing the light keeps about a quarter of its lit colour
 // ((0.08 + 0.2) against 1.08), so shadows read in the colour frames as in the PSM paper's figures;
@@ -75,6 +76,20 @@ float silhouette_test(int layer, vec3 position, vec4 offset_clip) {
   return silhouette_test_at(vec3(clip.xy / clip.w, offset_clip.z / offset_clip.w) * 0.5 + 0.5, layer, int(shadow_size));
 }
 
+// Hybrid shadows: whether a polygon caster's silhouette edge crosses the surface's cell of the
+// map's dual grid, nearer the light than the surface and seen by the light (not behind the map's
+// depths at all four of the cell's corners). A caster thinner than a texel shadows the surface
+// there though no depth sample holds it; the edges of its silhouette, drawn into every cell they
+// cross (SilhouettePass), still do.
+bool casting_edge_in_cell(vec3 map, int layer, int cells) {
+  ivec2 cell = ivec2(floor(map.xy * float(cells) - 0.5));
+  if (silhouette_point(cell, layer, cells).x < 0.0) return false;
+  float edge = texelFetch(silhouette_depths, ivec3(cell, layer), 0).r;  // the nearest edge's
+  if (edge >= map.z) return false;
+  vec4 seen = textureGather(shadow_map, vec3((vec2(cell) + 1.0) / float(cells), layer), edge);
+  return any(greaterThan(seen, vec4(0.0)));
+}
+
 // The mean of 3x3 filtered taps `step` apart around `map` in `layer`.
 float filtered_test(vec3 map, int layer, float step) {
   float sum = 0.0;
@@ -126,7 +141,7 @@ float shadow_test(ivec2 pixel, vec3 position, vec3 n, float n_dot_l) {
   vec3 p = position + n * (1.5 * texel_world_size(layer, position) * sin_light);
   vec4 clip = shadow_clip(layer, p);
   if (clip.w <= 0.0) return 1.0;  // behind the map's projection centre: not covered
-  if (SILHOUETTES) {
+  if (SILHOUETTES && !MARK_EDGES) {
     float edge = silhouette_test(layer, position, clip);
     if (edge >= 0.0) return edge;
   }
@@ -136,11 +151,17 @@ float shadow_test(ivec2 pixel, vec3 position, vec3 n, float n_dot_l) {
   float step = clamp(0.5 * (texels_per_pixel - 1.0), 0.0, 1.0) / shadow_size;
   if (MARK_EDGES) {
     // Hybrid shadows. The point splats, in layers of their own after the views' (POINT_LAYERS),
-    // cast no volumes: their shadows are the map's, lit or not. Then the polygons': where the light grazes the
-    // surface, or taps a texel apart disagree (so that an edge the normal offset moved, up to 1.5
-    // texels, still falls among them), neither lit nor shadowed, for the volumes to decide.
+    // cast no volumes: their shadows are the map's, lit or not. Then the polygons': neither lit
+    // nor shadowed, for the volumes to decide, where the light grazes the surface, where a casting
+    // silhouette edge crosses its cell, or where taps a texel apart disagree (so that an edge
+    // the normal offset moved, up to 1.5 texels, still falls among them).
     if (POINT_LAYERS && filtered_test(map, shadow_view_count + layer, step) < 0.5) return 0.0;
     if (n_dot_l < grazing_n_dot_l) return 0.5;
+    if (SILHOUETTES) {
+      // At the surface's own point: the offset one may step past the thin shadows only the edges show.
+      vec4 own = shadow_clip(layer, position);
+      if (own.w > 0.0 && casting_edge_in_cell(own.xyz / own.w * 0.5 + 0.5, layer, int(shadow_size))) return 0.5;
+    }
     step = 1.0 / shadow_size;
   }
   return filtered_test(map, layer, step);

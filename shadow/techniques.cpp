@@ -52,8 +52,9 @@ const std::vector<Technique>& techniques() {
        Lookup::mask, every_light, LastFrame::nothing, false},
       {Method::hybrid, "hybrid",
        "the focused uniform map, and shadow volumes counted only where its test is neither lit nor shadowed, near "
-       "the edges of its shadows (Chan and Durand 2004): the volumes' edges at a fraction of their fill; point splats cast through the map",
-       Lookup::mask, every_light, LastFrame::nothing, false, focused_uniform_map},
+       "the edges of its shadows (Chan and Durand 2004), or where a caster's silhouette edge crosses the surface's texel "
+       "(shadows thinner than a texel): the volumes' edges at a fraction of their fill; point splats cast through the map",
+       Lookup::mask, every_light, LastFrame::nothing, false, focused_uniform_map, true},
       {Method::reference, "reference", "exact: rays to the light against every triangle, plants as meshes, with Embree",
        Lookup::mask, every_light, LastFrame::nothing, false},
       {Method::automatic, "auto",

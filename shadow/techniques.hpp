@@ -57,7 +57,8 @@ struct Technique {
   // last frame's surface, on the GPU).
   ShadowSetup (*setup)(const ShadowInputs&) = nullptr;
   // Whether a silhouette map goes with the map (Sen, Cammarano and Hanrahan 2003): the lookup
-  // rebuilds the polygon casters' shadow edges from it, instead of filtering the depths.
+  // rebuilds the polygon casters' shadow edges from it, instead of filtering the depths; a mask's
+  // map (`hybrid`) finds from it where a shadow thinner than a texel may fall.
   bool silhouette_map = false;
 
   // Whether a shadow map is drawn for the frame: looked up, or helping to make the mask.

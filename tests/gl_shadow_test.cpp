@@ -105,6 +105,35 @@ TEST(HybridShadows, MatchTheVolumesAlongShadowEdgesWhereTheMapDoesNot) {
   }
 }
 
+// A caster thinner than a texel shadows the plane where no depth sample of the map holds it: the
+// uniform map alone misses most of that shadow, and the hybrid must still find it, from the
+// caster's silhouette edges, and leave it to the volumes.
+TEST(HybridShadows, FindTheShadowOfACasterThinnerThanATexel) {
+  const auto context = create_headless_context("egl");
+  FloatingBox s;
+  s.box_min = {-0.005f, 1.0f, -2.0f};  // a plank 1 cm thick, on edge, a metre over the plane
+  s.box_max = {0.005f, 1.3f, 2.0f};
+  s.light.type = shadow::LightType::directional;
+  s.light.direction = glm::normalize(glm::vec3(0.0f, -1.0f, -0.3f));  // along the plank: its shadow as thin as it is
+  s.camera.position = {0.6f, 0.8f, 0.5f};
+  s.camera.target = {0.0f, 0.0f, -0.5f};
+  s.camera.fov_y_deg = 50.0f;
+  s.camera.near = 0.1f;
+  s.camera.far = 100.0f;
+  const Scene scene = s.scene();
+  const int map_size = 64;
+  auto against_truth = [&](shadow::Method method) {
+    return compare_with_truth(s, rendered_visibility(scene, method, map_size), 1);
+  };
+  const TruthComparison uniform = against_truth(shadow::Method::uniform), hybrid = against_truth(shadow::Method::hybrid);
+  std::cout << "shadowed pixels found: uniform " << uniform.shadowed_agreeing << ", hybrid " << hybrid.shadowed_agreeing
+            << " of " << hybrid.shadowed << "; lit found by the hybrid " << hybrid.lit_agreeing << " of " << hybrid.lit << "\n";
+  EXPECT_GE(hybrid.shadowed, 300u) << "too little shadow in view to test";
+  EXPECT_LE(uniform.shadowed_agreement(), 0.5);
+  EXPECT_GE(hybrid.shadowed_agreement(), 0.99);
+  EXPECT_GE(hybrid.lit_agreement(), 0.995);
+}
+
 // Pixels whose binary shadow state differs between two `shadow` AOVs, counted only where every
 // neighbour of the pixel in `exact` has the pixel's own state there (away from its shadow edges).
 std::size_t differences_away_from_edges(const Image8& seen, const Image8& exact) {

@@ -231,6 +231,7 @@ void FramePass::set_light(const gl::Program& program, const shadow::Light& light
     gl::set_uniform(program, "shadow_size", static_cast<float>(shadow_map->size));
     glBindTextureUnit(setup.selection == shadow::ViewSelection::screen_mask ? 1 : 0, shadow_map->texture);
     if (shadow_map->silhouettes != 0) glBindTextureUnit(silhouette_points_unit, shadow_map->silhouettes);
+    if (shadow_map->silhouette_depths != 0) glBindTextureUnit(silhouette_depths_unit, shadow_map->silhouette_depths);
     if (shadow_map->page_table != 0) {
       const shadow::VirtualMap& pages = shadow_map->pages;
       gl::set_uniform(program, "page_levels", pages.levels);

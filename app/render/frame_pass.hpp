@@ -52,6 +52,7 @@ class FramePass {
     // For shadow silhouette maps, the map's silhouette points (SilhouettePass), one layer a view;
     // 0 for none.
     GLuint silhouettes = 0;
+    GLuint silhouette_depths = 0;  // and the depths of their edges (SilhouettePass::edge_depths)
     // For a virtual paged map (--method adaptive), its page table (PagedMap): `texture` holds the
     // pages, one a layer, each `size` texels a side with its guard; 0 for none.
     GLuint page_table = 0;

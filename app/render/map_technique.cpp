@@ -50,7 +50,7 @@ void MapTechnique::draw_points(const shadow::ShadowSetup& setup, int layer, gl::
 
 FramePass::ShadowLookup MapTechnique::lookup(const shadow::ShadowSetup& setup, bool marks_edges) const {
   return {depths_.depth_texture(), setup, depths_.size(), marks_edges, points_apart_,
-          silhouette_map_ ? silhouettes_->points() : 0u};
+          silhouette_map_ ? silhouettes_->points() : 0u, silhouette_map_ ? silhouettes_->edge_depths() : 0u};
 }
 
 }  // namespace ecoview

@@ -7,16 +7,16 @@ namespace ecoview {
 
 SilhouettePass::SilhouettePass(int size)
     : size_(size), edges_({"world_position.vert", "silhouette_edges.geom", "silhouette_point.frag"}) {
-  glTextureStorage2D(depth_.name(), 1, GL_DEPTH_COMPONENT32F, size, size);
-  glNamedFramebufferTexture(framebuffer_.name(), GL_DEPTH_ATTACHMENT, depth_.name(), 0);
   allocate(1);
 }
 
 // Texture storage is immutable: a setup with more views than allocated gets a new texture.
 void SilhouettePass::allocate(int layers) {
   points_ = gl::Texture(GL_TEXTURE_2D_ARRAY);
+  depths_ = gl::Texture(GL_TEXTURE_2D_ARRAY);
   layers_ = layers;
   glTextureStorage3D(points_.name(), 1, GL_RG16F, size_, size_, layers);
+  glTextureStorage3D(depths_.name(), 1, GL_DEPTH_COMPONENT32F, size_, size_, layers);
 }
 
 void SilhouettePass::render(const GpuScene& scene, const GpuScene::PlantDraws* plants, const shadow::ShadowSetup& setup,
@@ -25,6 +25,7 @@ void SilhouettePass::render(const GpuScene& scene, const GpuScene::PlantDraws* p
   const GLuint fb = framebuffer_.name();
   gl::draw_depth_tested(framebuffer_, size_, size_);
   glNamedFramebufferTextureLayer(fb, GL_COLOR_ATTACHMENT0, points_.name(), 0, layer);
+  glNamedFramebufferTextureLayer(fb, GL_DEPTH_ATTACHMENT, depths_.name(), 0, layer);
   const float no_edge[4] = {-1.0f, -1.0f, 0.0f, 0.0f};
   const float far_depth = 1.0f;
   glClearNamedFramebufferfv(fb, GL_COLOR, 0, no_edge);
