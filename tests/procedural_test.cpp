@@ -1,5 +1,6 @@
 // Procedural content: plants, terrain, Poisson placement, ecosystems, crowds. Each property is
 // checked against facts the test computes itself.
+#include "pointgen/instance_table.hpp"
 #include "pointgen/movers/moving_set.hpp"
 #include "pointgen/placement/ecosystem.hpp"
 #include "pointgen/placement/poisson_disk.hpp"
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <set>
 
@@ -52,6 +54,28 @@ EcosystemSpec small_ecosystem(std::uint64_t seed) {
   }
   spec.clearings.emplace_back(0.0f, 0.0f, 15.0f);
   return spec;
+}
+
+// sRGB's transfer (IEC 61966-2-1) in 8-bit steps, written here to check the tints against.
+float srgb_steps(float linear) {
+  const float encoded = linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+  return 255.0f * encoded;
+}
+
+TEST(InstanceTable, KeepsATintWithinAQuarterOfAnSRGBStepUpTo1And0Point2PercentTo2) {
+  for (int i = 0; i <= 100000; ++i) {
+    const float t = static_cast<float>(i) / 100000.0f;
+    const glm::vec3 kept = unpack_tint(pack_tint(glm::vec3(t, 1.0f - t, 0.5f * t)));
+    EXPECT_NEAR(srgb_steps(kept.r), srgb_steps(t), 0.25f) << t;
+    EXPECT_NEAR(srgb_steps(kept.g), srgb_steps(1.0f - t), 0.25f) << 1.0f - t;
+    EXPECT_NEAR(srgb_steps(kept.b), srgb_steps(0.5f * t), 0.25f) << 0.5f * t;
+    const float above = 1.0f + t;
+    EXPECT_NEAR(unpack_tint(pack_tint(glm::vec3(above))).g, above, 0.002f * above) << above;
+  }
+  const glm::vec3 clamped = unpack_tint(pack_tint(glm::vec3(-1.0f, 3.0f, 2.0f)));
+  EXPECT_EQ(clamped.r, 0.0f);
+  EXPECT_EQ(clamped.g, 2.0f);
+  EXPECT_EQ(clamped.b, 2.0f);
 }
 
 TEST(PlantCatalogue, ShipsThirtyDistinctSpeciesOfSensibleSize) {

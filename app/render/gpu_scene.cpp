@@ -27,7 +27,7 @@ std::vector<Instance> instances_of(const pointgen::InstanceTable& table) {
   for (std::size_t i = 0; i < table.size(); ++i) {
     const glm::mat3 n = glm::transpose(glm::inverse(glm::mat3(table.transforms[i])));
     instances.push_back({table.transform(i), {glm::vec4(n[0], 0), glm::vec4(n[1], 0), glm::vec4(n[2], 0)},
-                         glm::vec4(table.tints[i], 1)});
+                         glm::vec4(table.tint(i), 1)});
   }
   return instances;
 }

@@ -17,7 +17,7 @@ inline PlantPose plant_pose(const pointgen::InstanceTable& table, std::size_t i)
   const glm::mat4x3& m = table.transforms[i];
   PlantPose pose{};
   for (int r = 0; r < 3; ++r) pose.rows[r] = glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]);
-  pose.tint = glm::vec4(table.tints[i], 1.0f);
+  pose.tint = glm::vec4(table.tint(i), 1.0f);
   return pose;
 }
 
