@@ -49,6 +49,12 @@ struct InstanceTable {
     tints.push_back(pack_tint(tint));
     seeds.push_back(static_cast<std::uint32_t>(seed));
   }
+  // Adds instance `i` of `from` as it is kept there (no unpacking and packing again).
+  void add_from(const InstanceTable& from, std::size_t i) {
+    transforms.push_back(from.transforms[i]);
+    tints.push_back(from.tints[i]);
+    seeds.push_back(from.seeds[i]);
+  }
   // Gives back the room that growing by add() left unfilled (up to half of a table).
   void shrink_to_fit() {
     transforms.shrink_to_fit();

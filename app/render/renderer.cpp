@@ -165,7 +165,7 @@ void Renderer::upload_polygons(const pointgen::SampledFrame& selection) {
     if (!scene_.point_meshes[tables_[g].mesh]) continue;
     const pointgen::InstanceTable& all = tables_[g];
     pointgen::InstanceTable drawn{all.mesh, {}, {}, {}};
-    for (std::uint32_t i : selection.polygons[g]) drawn.add(all.transform(i), all.tint(i), all.seeds[i]);
+    for (std::uint32_t i : selection.polygons[g]) drawn.add_from(all, i);
     gpu_scene_.update(g, drawn, selection.polygon_parts.empty() ? std::vector<std::uint64_t>{} : selection.polygon_parts[g]);
   }
 }
