@@ -53,16 +53,26 @@ constexpr int most_distance_bands = 24;
 // points; on a dense stand of 10^5 plants they added 0.8 M map triangles (docs/benchmarks.md).
 constexpr float hidden_casters_reach = 41.0f;
 
-std::vector<PlantPose> instances_of(const pointgen::InstanceTable& table) {
-  std::vector<PlantPose> instances;
-  instances.reserve(table.size());
-  for (std::size_t i = 0; i < table.size(); ++i) instances.push_back(plant_pose(table, i));
-  return instances;
-}
-
 // The same threshold pointgen::sample_view rounds a whole plant's count at.
 float rounding(const pointgen::InstanceTable& table, std::size_t i) {
   return pointgen::Random(table.seeds.size() > i ? table.seeds[i] : i).uniform();
+}
+
+// Plants cross to the GL buffers this many at a time: a host copy of 10^7 poses would take 640
+// MB and, on llvmpipe, seconds of page faults besides the buffer's own.
+constexpr std::size_t plants_per_upload = 1 << 16;
+
+// Writes `count` entries from `first` on, `entry(i)` giving entry i, in chunks.
+template <class T, class Entry>
+void upload(const gl::Buffer& buffer, std::size_t first, std::size_t count, Entry entry) {
+  std::vector<T> chunk;
+  chunk.reserve(std::min(count, plants_per_upload));
+  for (std::size_t start = 0; start < count; start += plants_per_upload) {
+    chunk.clear();
+    for (std::size_t i = start; i < std::min(count, start + plants_per_upload); ++i) chunk.push_back(entry(i));
+    glNamedBufferSubData(buffer.name(), static_cast<GLintptr>((first + start) * sizeof(T)),
+                         static_cast<GLsizeiptr>(chunk.size() * sizeof(T)), chunk.data());
+  }
 }
 
 template <class T>
@@ -108,25 +118,18 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
       commands_program_(gl::build_program({"sample_commands.comp"})),
       map_caps_program_(gl::build_program({"map_caps.comp"})) {
   const std::vector<pointgen::SampledMesh>& meshes = samples.meshes();
-  std::vector<PlantPose> instances;
-  std::vector<glm::uvec2> plant_meshes;
   std::vector<glm::uvec4> table_ranges;  // per table of plants: first plant, end, then (sample_commands.comp)
   std::size_t most_points = 0;  // the draw list's points if every plant took its whole list
   for (const pointgen::InstanceTable& table : tables) {
-    first_plant_.push_back(static_cast<std::uint32_t>(instances.size()));
+    first_plant_.push_back(static_cast<std::uint32_t>(plant_count_));
     const pointgen::SampledMesh& mesh = meshes[table.mesh];
     holds_plants_.push_back(mesh.samples > 0 && table.size() > 0);
     if (!holds_plants_.back()) continue;
     ++table_count_;
-    const auto first = static_cast<std::uint32_t>(instances.size());
-    const std::vector<PlantPose> own = instances_of(table);
-    instances.insert(instances.end(), own.begin(), own.end());
-    for (std::size_t i = 0; i < table.size(); ++i) {
-      plant_meshes.emplace_back(static_cast<std::uint32_t>(table.mesh), glm::floatBitsToUint(rounding(table, i)));
-    }
-    table_ranges.emplace_back(first, static_cast<std::uint32_t>(instances.size()), 0u, 0u);
+    table_ranges.emplace_back(first_plant_.back(), static_cast<std::uint32_t>(plant_count_ + table.size()), 0u, 0u);
     table_ranges.emplace_back(static_cast<std::uint32_t>(3 * mesh.triangles), places[table.mesh].first_index,
                               static_cast<std::uint32_t>(places[table.mesh].base_vertex), 0u);
+    plant_count_ += table.size();
     most_points += table.size() * mesh.samples;
   }
   std::vector<GpuMesh> gpu_meshes;
@@ -142,7 +145,6 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
       polygon_parts.push_back({glm::vec4(part.center, 0.0f), glm::vec4(part.half_size, 0.0f), glm::uvec4(part.first_index, part.index_count, 0u, 0u)});
     }
   }
-  plant_count_ = instances.size();
   group_count_ = (plant_count_ + plants_per_group - 1) / plants_per_group;
   // Room for as many points as every plant's whole list, or as a splat's buffers address (one
   // uvec2 per point where the frame's splat puts it).
@@ -155,9 +157,17 @@ GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const
                          std::to_string(gl::max_storage_block_bytes() >> 20) + " MiB a buffer, " +
                          std::to_string(gl::max_texel_buffer_texels()) + " texels a buffer texture); use fewer plants");
   }
-  gl::store(instances_, instances, GL_DYNAMIC_STORAGE_BIT);  // moving plants are posed each frame
+  storage<PlantPose>(instances_, plant_count_, GL_DYNAMIC_STORAGE_BIT);  // moving plants are posed each frame
+  storage<glm::uvec2>(plant_meshes_, plant_count_, GL_DYNAMIC_STORAGE_BIT);
+  for (std::size_t t = 0; t < tables.size(); ++t) {
+    if (!holds_plants_[t]) continue;
+    const pointgen::InstanceTable& table = tables[t];
+    update(t, table);
+    upload<glm::uvec2>(plant_meshes_, first_plant_[t], table.size(), [&](std::size_t i) {
+      return glm::uvec2(static_cast<std::uint32_t>(table.mesh), glm::floatBitsToUint(rounding(table, i)));
+    });
+  }
   instance_texels_ = gl::buffer_texels(instances_);
-  gl::store(plant_meshes_, plant_meshes);
   plant_mesh_texels_ = gl::buffer_texels(plant_meshes_, GL_RG32UI);
   gl::store(meshes_, gpu_meshes);
   mesh_texels_ = gl::buffer_texels(meshes_, GL_RGBA32UI);
@@ -187,9 +197,7 @@ void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed)
   if (!holds_plants_[table]) return;
   const std::size_t end = table + 1 < first_plant_.size() ? first_plant_[table + 1] : plant_count_;
   if (posed.size() != end - first_plant_[table]) throw RuntimeFailure("a posed table changed its number of instances");
-  const std::vector<PlantPose> instances = instances_of(posed);
-  glNamedBufferSubData(instances_.name(), static_cast<GLintptr>(first_plant_[table] * sizeof(PlantPose)),
-                       static_cast<GLsizeiptr>(instances.size() * sizeof(PlantPose)), instances.data());
+  upload<PlantPose>(instances_, first_plant_[table], posed.size(), [&](std::size_t i) { return plant_pose(posed, i); });
 }
 
 void GpuSampler::bind() const {
