@@ -5,6 +5,7 @@
 #include "app/view/view_command.hpp"
 #include "app/errors.hpp"
 #include "app/file_io.hpp"
+#include "app/huge_pages.hpp"
 #include "git_commit.hpp"
 
 #include <CLI/CLI.hpp>
@@ -49,6 +50,7 @@ std::string command_names(CLI::App& app) {
 
 int main(int argc, char** argv) {
   using namespace ecoview;
+  run_with_huge_pages(argv);
   CLI::App app("ecoview: view, capture and benchmark large outdoor scenes with shadows.\n"
                "Exit codes: 0 done, 1 runtime failure (e.g. no GL context), 2 bad input.");
   // At most one command; none is reported after parsing, so that an unknown word is named first.
