@@ -85,7 +85,6 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       tables_(scene.groups),
       gpu_scene_(scene),
       samples_(scene, settings_.points_per_triangle, settings_.points),
-      cells_(tables_, samples_.meshes()),
       map_(settings, gpu_scene_.has_surface_textures()),
       frame_pass_(settings.width, settings.height, settings.aliasing, gpu_scene_.has_surface_textures()),
       frame_points_({settings.width, settings.height}) {
@@ -105,7 +104,6 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
     for (std::size_t g = 0; g < tables_.size(); ++g) {
       if (!scene.point_meshes[tables_[g].mesh]) tables_[g] = {tables_[g].mesh, {}, {}, {}};
       gpu_scene_.update(g, tables_[g]);
-      cells_.update(g, tables_[g], samples_.meshes()[tables_[g].mesh]);
     }
   }
   if (settings_.points && settings_.gpu_sampler && settings_.measure == RenderSettings::Measure::off) {
@@ -178,7 +176,7 @@ pointgen::SampledFrame Renderer::polygons_in(const std::optional<pointgen::ViewF
     const pointgen::SampledMesh& mesh = samples_.meshes()[tables_[g].mesh];
     std::vector<std::uint32_t>& drawn = frame.polygons[g];
     if (frusta) {
-      drawn = pointgen::instances_in_view(*frusta, cells_.by_table()[g], tables_[g], mesh);
+      drawn = pointgen::instances_in_view(*frusta, cells().by_table()[g], tables_[g], mesh);
     } else {
       drawn.resize(tables_[g].size());
       std::iota(drawn.begin(), drawn.end(), 0u);
@@ -257,7 +255,7 @@ std::vector<pointgen::SampledFrame> Renderer::choose_map_casters(const shadow::C
     view.full_count_transmittance = 1.0f;
     std::optional<pointgen::ReceiverMask> receivers;
     if (culls_casters() && !v.paraboloid) view.receivers = &receivers.emplace(v.view_projection(), last_receivers_);
-    chosen.push_back(pointgen::sample_view(view, tables_, samples_.meshes(), cells_));
+    chosen.push_back(pointgen::sample_view(view, tables_, samples_.meshes(), cells()));
     stats_.shadow_points += chosen.back().point_count;
   }
   stats_.sample_ms += ms_since(start);
@@ -379,7 +377,7 @@ MaskFrame Renderer::mask_frame(const shadow::Camera& camera, const shadow::Light
   if (gpu_sampler_ && draws_points() && mask_->casts_from_frame_polygons()) {
     plants = gpu_sampler_->polygon_draws(0, gpu_sampler_->band_count());
   }
-  return {camera, aspect(), light, view_projection_, gpu_scene_, plants, tables_, cells_, frame_pass_};
+  return {camera, aspect(), light, view_projection_, gpu_scene_, plants, tables_, cells(), frame_pass_};
 }
 
 // Timed as the shadow pass, by the wall clock where the mask is CPU work.
@@ -412,6 +410,11 @@ void Renderer::shade_with_mask_near_edges(const shadow::Camera& camera, const sh
 FramePass::ShadowLookup Renderer::mask_lookup(GLuint mask) {
   static const shadow::ShadowSetup screen_mask{{}, shadow::ViewSelection::screen_mask, "mask"};
   return {mask, screen_mask, 0};
+}
+
+const pointgen::InstanceCells& Renderer::cells() const {
+  if (!cells_) cells_.emplace(tables_, samples_.meshes());
+  return *cells_;
 }
 
 ExactVisibility& Renderer::exact() {
@@ -495,7 +498,7 @@ void Renderer::pose(double t) {
       const std::size_t group = animation.first_group + i;
       if (settings_.point_meshes_only && !scene_.point_meshes[posed[i].mesh]) continue;
       tables_[group] = std::move(posed[i]);
-      cells_.update(group, tables_[group], samples_.meshes()[tables_[group].mesh]);
+      if (cells_) cells_->update(group, tables_[group], samples_.meshes()[tables_[group].mesh]);
       // Point meshes get their drawn subset per pass (upload_polygons), or live on the GPU sampler.
       if (!scene_.point_meshes[tables_[group].mesh]) gpu_scene_.update(group, tables_[group]);
       if (gpu_sampler_ && scene_.point_meshes[tables_[group].mesh]) gpu_sampler_->update(group, tables_[group]);
@@ -614,11 +617,12 @@ pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camer
 // cores. The sampler only reads what pose() left.
 std::future<Renderer::TimedSelection> Renderer::choose_frame_points(const shadow::Camera& camera) const {
   if (!settings_.points || gpu_sampler_) return {};
-  return std::async(std::launch::async, [this, camera] {
+  const pointgen::InstanceCells& cells = this->cells();  // made on first use: here, not on both threads
+  return std::async(std::launch::async, [this, camera, &cells] {
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = thread_cpu_ms();
     TimedSelection chosen;
-    chosen.selection = pointgen::sample_view(sampler_view(camera, settings_, {view_projection_}), tables_, samples_.meshes(), cells_);
+    chosen.selection = pointgen::sample_view(sampler_view(camera, settings_, {view_projection_}), tables_, samples_.meshes(), cells);
     chosen.ms = ms_since(start);
     chosen.cpu_ms = thread_cpu_ms() - cpu_start;
     return chosen;
