@@ -25,7 +25,7 @@ TEST(InstanceCells, HoldEveryInstanceOnceInBoxesAroundTheirSpheres) {
     const glm::mat4 at = glm::translate(glm::mat4(1.0f), {rng.uniform(-50.0f, 50.0f), rng.uniform(0.0f, 5.0f), rng.uniform(-50.0f, 50.0f)});
     table.add(glm::scale(at, glm::vec3(rng.uniform(0.5f, 2.0f))), glm::vec3(1.0f), derive_seed(21, i));
   }
-  InstanceCells cells({table}, {mesh});
+  InstanceCells cells(std::vector<InstanceTable>{table}, {mesh});
   ASSERT_EQ(cells.by_table().size(), 1u);
   std::vector<std::uint32_t> members;
   for (const InstanceCell& cell : cells.by_table()[0]) {
@@ -72,7 +72,7 @@ TEST(InstancesInView, AreTheSpheresThatReachIntoTheFrustum) {
     table.add(glm::translate(glm::mat4(1.0f), {rng.uniform(-100.0f, 100.0f), rng.uniform(-3.0f, 3.0f), rng.uniform(-100.0f, 100.0f)}),
               glm::vec3(1.0f), derive_seed(22, i));
   }
-  const InstanceCells cells({table}, {mesh});
+  const InstanceCells cells(std::vector<InstanceTable>{table}, {mesh});
   const glm::mat4 view = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f);
   const std::vector<std::uint32_t> seen = instances_in_view(ViewFrusta({view}), cells.by_table()[0], table, mesh);
   std::vector<std::uint32_t> expected;

@@ -117,7 +117,7 @@ TEST(ViewSampler, ALargeNearInstanceCountedByPartsHidesItsBackBehindItsFront) {
   InstanceTable table;
   table.add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -20.0f}), glm::vec3(1.0f), 7);
   SampledMesh mesh = two_plates();
-  const SampledFrame parts = sample_view(view, {table}, {mesh});
+  const SampledFrame parts = sample_view(view, std::vector<InstanceTable>{table}, {mesh});
   std::size_t front = 0, back = 0;
   for (const PointDraw& d : parts.points) {
     ASSERT_GE(d.first, mesh.samples) << "drawn from the parts' lists";
@@ -130,7 +130,7 @@ TEST(ViewSampler, ALargeNearInstanceCountedByPartsHidesItsBackBehindItsFront) {
   // it, 2 * 256^2 * 16 / 19^2 = 5,809 (a little less: each part's rectangle shares its edges with
   // neighbours counted before it, whose splats already cover some of them), and hides the back.
   mesh.parts.clear();
-  const SampledFrame whole = sample_view(view, {table}, {mesh});
+  const SampledFrame whole = sample_view(view, std::vector<InstanceTable>{table}, {mesh});
   ASSERT_EQ(whole.points.size(), 1u);
   EXPECT_NEAR(static_cast<double>(whole.point_count), 10486.0, 2.0);
   EXPECT_NEAR(static_cast<double>(front), 5809.0, 0.1 * 5809.0);
@@ -237,7 +237,7 @@ TEST(ViewSampler, AnInstanceWhoseSphereReachesIntoTheViewButNotItsBoxGetsNothing
   pole.radius = glm::length(pole.half_size);
   InstanceTable table;
   table.add(glm::translate(glm::mat4(1.0f), {21.0f, 0.0f, -20.0f}), glm::vec3(1.0f), 3);
-  const SampledFrame f = sample_view(view, {table}, {pole});
+  const SampledFrame f = sample_view(view, std::vector<InstanceTable>{table}, {pole});
   EXPECT_TRUE(f.points.empty());
   EXPECT_TRUE(f.polygons[0].empty());
 }

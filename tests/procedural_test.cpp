@@ -5,6 +5,7 @@
 #include "pointgen/placement/ecosystem.hpp"
 #include "pointgen/placement/poisson_disk.hpp"
 #include "pointgen/primitives.hpp"
+#include "pointgen/table_list.hpp"
 
 #include <gtest/gtest.h>
 
@@ -76,6 +77,28 @@ TEST(InstanceTable, KeepsATintWithinAQuarterOfAnSRGBStepUpTo1And0Point2PercentTo
   EXPECT_EQ(clamped.r, 0.0f);
   EXPECT_EQ(clamped.g, 2.0f);
   EXPECT_EQ(clamped.b, 2.0f);
+}
+
+TEST(TableList, ReadsTheTablesInPlaceAndAReplacedOneInItsPlace) {
+  std::vector<InstanceTable> tables(3);
+  for (std::size_t t = 0; t < tables.size(); ++t) {
+    tables[t].mesh = t;
+    tables[t].add(glm::mat4(1.0f), glm::vec3(1.0f), t);
+  }
+  TableList list(tables);
+  InstanceTable posed{1, {}, {}, {}};
+  posed.add(glm::mat4(2.0f), glm::vec3(0.5f), 7);
+  posed.add(glm::mat4(3.0f), glm::vec3(0.5f), 8);
+  list.replace(1, posed);
+  ASSERT_EQ(list.size(), 3u);
+  EXPECT_EQ(&list[0], &tables[0]) << "a table not replaced is the vector's own, not a copy";
+  EXPECT_EQ(&list[2], &tables[2]);
+  EXPECT_EQ(list[1].size(), 2u);
+  EXPECT_EQ(list[1].seeds[1], 8u);
+  EXPECT_EQ(tables[1].size(), 1u) << "the vector's table stays as it was";
+  std::vector<const InstanceTable*> visited;
+  for (const InstanceTable& table : list) visited.push_back(&table);
+  EXPECT_EQ(visited, (std::vector<const InstanceTable*>{&tables[0], &list[1], &tables[2]}));
 }
 
 TEST(PlantCatalogue, ShipsThirtyDistinctSpeciesOfSensibleSize) {

@@ -174,7 +174,7 @@ InstanceTable table_at(const std::vector<glm::vec3>& positions) {
 
 TEST(ViewSampler, CullsWhatIsOutOfViewAndCountsTheRest) {
   const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}, glm::mat3(0.0f), {}};  // 2 m² in 1,000 triangles: break-even at 4,000 points
-  const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, 40}, {0, 0, -40}, {100, 0, -40}})}, {mesh});
+  const SampledFrame f = sample_view(test_view(), std::vector<InstanceTable>{table_at({{0, 0, 40}, {0, 0, -40}, {100, 0, -40}})}, {mesh});
   ASSERT_EQ(f.points.size(), 1u) << "the instances behind and beside the view are culled";
   EXPECT_EQ(f.points[0].instance, 1u);
   // n = k rho^2 A d / (2 z^3) with z = d = 40 m at the instance's centre, rounded either way.
@@ -187,7 +187,7 @@ TEST(ViewSampler, CullsWhatIsOutOfViewAndCountsTheRest) {
 TEST(ViewSampler, NearInstancesArePolygonsAndTheBandBetweenDrawsBoth) {
   const SampledMesh mesh{2.0f, glm::vec3(0.0f), 0.5f, 1000, 5000, glm::vec3(0.5f), {}, {}, glm::mat3(0.0f), {}};
   // Points needed = 131072 / z^2: 4,000 (break-even) at z = 5.7 m; the band is 5.1 to 6.4 m.
-  const SampledFrame f = sample_view(test_view(), {table_at({{0, 0, -3.5f}, {0, 0, -5.8f}, {0, 0, -9.5f}})}, {mesh});
+  const SampledFrame f = sample_view(test_view(), std::vector<InstanceTable>{table_at({{0, 0, -3.5f}, {0, 0, -5.8f}, {0, 0, -9.5f}})}, {mesh});
   ASSERT_EQ(f.polygons[0], (std::vector<std::uint32_t>{0, 1}));
   ASSERT_EQ(f.points.size(), 2u);
   EXPECT_EQ(f.points[0].instance, 1u) << "in the band the instance is drawn both ways";
@@ -206,7 +206,7 @@ TEST(ViewSampler, CountsOfSmallInstancesAreRoundedWithoutBias) {
   for (int i = 0; i < 4000; ++i) table.add(glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -200.0f}), glm::vec3(1.0f), derive_seed(5, i));
   SamplerView view = test_view();
   view.density.k = 0.3f * 2.0f * 200.0f * 200.0f / (256.0f * 256.0f * 2.0f);
-  const SampledFrame f = sample_view(view, {table}, {mesh});
+  const SampledFrame f = sample_view(view, std::vector<InstanceTable>{table}, {mesh});
   EXPECT_NEAR(static_cast<double>(f.point_count), 1200.0, 4.0 * std::sqrt(4000 * 0.3 * 0.7));
 }
 
@@ -226,7 +226,7 @@ TEST(ViewSampler, AFarCellIsCountedWholeWithOnePointForEachOfAsManyInstancesAsIt
     const glm::vec3 p(m[3]);
     expected += points_needed(view.density, mesh.area, -p.z, glm::length(p));
   }
-  const SampledFrame f = sample_view(view, {table}, {mesh});
+  const SampledFrame f = sample_view(view, std::vector<InstanceTable>{table}, {mesh});
   EXPECT_NEAR(static_cast<double>(f.point_count), expected, 0.02 * expected + 4.0 * std::sqrt(expected)) << "about 5,000";
   std::vector<std::uint32_t> drawn;
   std::size_t offset = 0;
@@ -240,7 +240,7 @@ TEST(ViewSampler, AFarCellIsCountedWholeWithOnePointForEachOfAsManyInstancesAsIt
   EXPECT_GT(offset, f.points.size() * 9 / 10);
   std::sort(drawn.begin(), drawn.end());
   EXPECT_EQ(std::adjacent_find(drawn.begin(), drawn.end()), drawn.end()) << "one point per chosen instance";
-  const SampledFrame again = sample_view(view, {table}, {mesh});
+  const SampledFrame again = sample_view(view, std::vector<InstanceTable>{table}, {mesh});
   ASSERT_EQ(again.points.size(), f.points.size());
   for (std::size_t i = 0; i < f.points.size(); ++i) {
     EXPECT_TRUE(again.points[i].instance == f.points[i].instance && again.points[i].first == f.points[i].first);

@@ -35,7 +35,7 @@ PointRaster::PointRaster(glm::ivec2 size) : size_(size), program_(gl::build_prog
   glVertexArrayBindingDivisor(vertex_array_.name(), 0, 1);
 }
 
-void PointRaster::upload(const std::vector<pointgen::PointDraw>& draws, const std::vector<pointgen::InstanceTable>& tables,
+void PointRaster::upload(const std::vector<pointgen::PointDraw>& draws, const pointgen::TableList& tables,
                          const PointSamples& samples) {
   std::vector<glm::uvec4> gpu_draws;
   std::vector<PlantPose> instances;

@@ -2,6 +2,7 @@
 #include "app/gl/gl_objects.hpp"
 #include "app/render/image.hpp"
 #include "app/render/point_samples.hpp"
+#include "pointgen/table_list.hpp"
 
 #include <glm/glm.hpp>
 
@@ -16,7 +17,7 @@ class PointRaster {
  public:
   explicit PointRaster(glm::ivec2 size);
 
-  void upload(const std::vector<pointgen::PointDraw>& draws, const std::vector<pointgen::InstanceTable>& tables,
+  void upload(const std::vector<pointgen::PointDraw>& draws, const pointgen::TableList& tables,
               const PointSamples& samples);
   // Clears the target, then draws every point with one glDrawArrays (each vertex finds its draw).
   void draw_all(const glm::mat4& view_projection);

@@ -66,7 +66,7 @@ void set_transform(RTCScene scene, unsigned id, const glm::mat4x3& transform) {
 }  // namespace
 
 ExactVisibility::ExactVisibility(const std::vector<pointgen::TriangleMesh>& meshes,
-                                 const std::vector<pointgen::InstanceTable>& tables)
+                                 const pointgen::TableList& tables)
     : device_(rtcNewDevice(nullptr)), meshes_(meshes) {
   if (device_ == nullptr) throw RuntimeFailure("Embree could not start a device for the exact reference");
   for (const pointgen::TriangleMesh& mesh : meshes) mesh_scenes_.push_back(mesh_scene(device_, mesh));
@@ -109,7 +109,7 @@ ExactVisibility::~ExactVisibility() {
   rtcReleaseDevice(device_);
 }
 
-void ExactVisibility::pose(const std::vector<pointgen::InstanceTable>& tables) {
+void ExactVisibility::pose(const pointgen::TableList& tables) {
   bool moved = false;
   for (std::size_t t = 0; t < tables.size(); ++t) {
     for (std::size_t i = 0; i < tables[t].size(); ++i) {

@@ -1,6 +1,6 @@
 #pragma once
 #include "app/render/image.hpp"
-#include "pointgen/instance_table.hpp"
+#include "pointgen/table_list.hpp"
 #include "pointgen/triangle_mesh.hpp"
 #include "shadow/camera.hpp"
 #include "shadow/light.hpp"
@@ -18,14 +18,14 @@ namespace ecoview {
 class ExactVisibility {
  public:
   // The meshes and the instance tables as a renderer draws them (one geometry per instance).
-  ExactVisibility(const std::vector<pointgen::TriangleMesh>& meshes, const std::vector<pointgen::InstanceTable>& tables);
+  ExactVisibility(const std::vector<pointgen::TriangleMesh>& meshes, const pointgen::TableList& tables);
   ~ExactVisibility();
   ExactVisibility(const ExactVisibility&) = delete;
   ExactVisibility& operator=(const ExactVisibility&) = delete;
 
   // Moves the instances whose transforms changed (the tables must have the sizes given at
   // construction): moving objects posed for a frame.
-  void pose(const std::vector<pointgen::InstanceTable>& tables);
+  void pose(const pointgen::TableList& tables);
 
   // 255 where the light reaches the surface point seen in a pixel, else 0, and 255 where no
   // surface is seen (the `shadow` AOV's encoding). `depth` is the frame's linear view depth

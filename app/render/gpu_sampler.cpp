@@ -103,7 +103,7 @@ std::vector<glm::vec2> GpuSampler::bands(float far) {
   return bands;
 }
 
-GpuSampler::GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const PointSamples& samples,
+GpuSampler::GpuSampler(const pointgen::TableList& tables, const PointSamples& samples,
                        const std::vector<GpuScene::DrawPlace>& places)
     : histogram_program_(gl::build_program({"sample_bins.comp"}, "#define HISTOGRAM\n")),
       band_ends_program_(gl::build_program({"band_ends.comp"})),

@@ -6,6 +6,7 @@
 #include "app/render/point_splat.hpp"
 #include "app/render/polygon_part_lists.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
+#include "pointgen/table_list.hpp"
 #include "shadow/plane.hpp"
 
 #include <memory>
@@ -31,7 +32,7 @@ class GpuSampler {
  public:
   // `tables` are the scene's groups; those of point meshes (`samples` has lists for them) become
   // plants, in table order. `places`: where each mesh's triangles lie for the polygon draws.
-  GpuSampler(const std::vector<pointgen::InstanceTable>& tables, const PointSamples& samples,
+  GpuSampler(const pointgen::TableList& tables, const PointSamples& samples,
              const std::vector<GpuScene::DrawPlace>& places);
 
   // The distance bands for a view whose far plane is `far` metres away: the first to

@@ -81,7 +81,7 @@ PointSplat::PointSplat(glm::ivec2 size)
   clear(points_drawn_onto_, 0u);
 }
 
-void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const std::vector<pointgen::InstanceTable>& tables,
+void PointSplat::upload(const std::vector<pointgen::PointDraw>& draws, const pointgen::TableList& tables,
                         const PointSamples& samples) {
   std::vector<glm::uvec2> draw_points, draw_samples;
   std::vector<PlantPose> instances;

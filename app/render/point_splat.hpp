@@ -2,6 +2,7 @@
 #include "app/gl/gl_objects.hpp"
 #include "app/render/image.hpp"
 #include "app/render/point_samples.hpp"
+#include "pointgen/table_list.hpp"
 
 #include <memory>
 #include <vector>
@@ -31,7 +32,7 @@ class PointSplat {
   explicit PointSplat(glm::ivec2 size);
 
   // The points to draw: the first `count` samples of each drawn instance.
-  void upload(const std::vector<pointgen::PointDraw>& draws, const std::vector<pointgen::InstanceTable>& tables,
+  void upload(const std::vector<pointgen::PointDraw>& draws, const pointgen::TableList& tables,
               const PointSamples& samples);
   // Or a list already in GL buffers, which must outlive its use here.
   void use(const PointDrawList& list, const PointSamples& samples);

@@ -102,7 +102,7 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
   }
   if (settings.point_meshes_only) {
     for (std::size_t g = 0; g < tables_.size(); ++g) {
-      if (!scene.point_meshes[tables_[g].mesh]) tables_[g] = {tables_[g].mesh, {}, {}, {}};
+      if (!scene.point_meshes[tables_[g].mesh]) tables_.replace(g, {tables_[g].mesh, {}, {}, {}});
       gpu_scene_.update(g, tables_[g]);
     }
   }
@@ -497,7 +497,7 @@ void Renderer::pose(double t) {
     for (std::size_t i = 0; i < posed.size(); ++i) {
       const std::size_t group = animation.first_group + i;
       if (settings_.point_meshes_only && !scene_.point_meshes[posed[i].mesh]) continue;
-      tables_[group] = std::move(posed[i]);
+      tables_.replace(group, std::move(posed[i]));
       if (cells_) cells_->update(group, tables_[group], samples_.meshes()[tables_[group].mesh]);
       // Point meshes get their drawn subset per pass (upload_polygons), or live on the GPU sampler.
       if (!scene_.point_meshes[tables_[group].mesh]) gpu_scene_.update(group, tables_[group]);

@@ -79,7 +79,7 @@ class Renderer {
   // The last frame's figures; those the GPU measures or counts are read back when first asked.
   const FrameStats& stats() const;
   // The instance tables as the last frame posed them.
-  const std::vector<pointgen::InstanceTable>& tables() const { return tables_; }
+  const pointgen::TableList& tables() const { return tables_; }
   // Fill the aliasing target (RenderSettings::aliasing) from the next frame on, or stop.
   void set_aliasing(bool wanted) { frame_pass_.set_aliasing(wanted); }
   // Per pixel, the last frame's points on the surface `surface_depth` shows there (linear view depth, of
@@ -205,7 +205,7 @@ class Renderer {
   const Scene& scene_;
   RenderSettings settings_;
   shadow::Box scene_bounds_;
-  std::vector<pointgen::InstanceTable> tables_;  // the scene's groups, moving ones posed for this frame
+  pointgen::TableList tables_;  // the scene's groups, read in place but for moving ones posed for this frame
   GpuScene gpu_scene_;
   PointSamples samples_;
   // The cells over tables_, for the CPU sampler, the culled polygon plants and the volumes: made

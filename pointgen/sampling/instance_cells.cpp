@@ -57,7 +57,7 @@ void split(std::span<Placed> placed, std::uint32_t table, const InstanceTable& i
 
 }  // namespace
 
-InstanceCells::InstanceCells(const std::vector<InstanceTable>& tables, const std::vector<SampledMesh>& meshes)
+InstanceCells::InstanceCells(const TableList& tables, const std::vector<SampledMesh>& meshes)
     : by_table_(tables.size()) {
   for (std::size_t t = 0; t < tables.size(); ++t) update(t, tables[t], meshes[tables[t].mesh]);
 }

@@ -1,5 +1,5 @@
 #pragma once
-#include "pointgen/instance_table.hpp"
+#include "pointgen/table_list.hpp"
 
 #include <glm/glm.hpp>
 
@@ -27,7 +27,7 @@ class InstanceCells {
  public:
   static constexpr std::size_t max_members = 64;
 
-  InstanceCells(const std::vector<InstanceTable>& tables, const std::vector<SampledMesh>& meshes);
+  InstanceCells(const TableList& tables, const std::vector<SampledMesh>& meshes);
   // Makes the cells of one table again, after its instances moved.
   void update(std::size_t table, const InstanceTable& instances, const SampledMesh& mesh);
   // Per table, its cells.

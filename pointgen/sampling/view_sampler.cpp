@@ -138,7 +138,7 @@ std::optional<CoverageGrid::Rect> rect_of(const CoverageGrid& grid, const Instan
 // order, each counted, drawn and added to the coverage grid.
 class ViewSampling {
  public:
-  ViewSampling(const SamplerView& view, const std::vector<InstanceTable>& tables, const std::vector<SampledMesh>& meshes)
+  ViewSampling(const SamplerView& view, const TableList& tables, const std::vector<SampledMesh>& meshes)
       : view_(view), tables_(tables), meshes_(meshes), frusta_(view.views) {
     frame_.polygons.resize(tables.size());
     frame_.polygon_parts.resize(tables.size());
@@ -415,7 +415,7 @@ class ViewSampling {
   }
 
   const SamplerView& view_;
-  const std::vector<InstanceTable>& tables_;
+  const TableList& tables_;
   const std::vector<SampledMesh>& meshes_;
   ViewFrusta frusta_;
   std::optional<CoverageGrid> coverage_;
@@ -426,12 +426,12 @@ class ViewSampling {
 
 }  // namespace
 
-SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTable>& tables, const std::vector<SampledMesh>& meshes,
+SampledFrame sample_view(const SamplerView& view, const TableList& tables, const std::vector<SampledMesh>& meshes,
                          const InstanceCells& cells) {
   return ViewSampling(view, tables, meshes).run(cells);
 }
 
-SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTable>& tables, const std::vector<SampledMesh>& meshes) {
+SampledFrame sample_view(const SamplerView& view, const TableList& tables, const std::vector<SampledMesh>& meshes) {
   return sample_view(view, tables, meshes, InstanceCells(tables, meshes));
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "pointgen/instance_table.hpp"
+#include "pointgen/table_list.hpp"
 #include "pointgen/sampling/instance_cells.hpp"
 #include "pointgen/sampling/mesh_parts.hpp"
 #include "pointgen/sampling/point_count.hpp"
@@ -81,10 +81,10 @@ struct SampledFrame {
 // In a band around the break-even an instance is drawn both ways, its points thinning out over its
 // polygons, so the switch shows no pop while every frame stays a function of its own view alone.
 // Instances outside the view are culled, cell by cell first; `cells` are those of `tables`.
-SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTable>& tables,
+SampledFrame sample_view(const SamplerView& view, const TableList& tables,
                          const std::vector<SampledMesh>& meshes, const InstanceCells& cells);
 // The same, with the tables' cells made for this one view.
-SampledFrame sample_view(const SamplerView& view, const std::vector<InstanceTable>& tables,
+SampledFrame sample_view(const SamplerView& view, const TableList& tables,
                          const std::vector<SampledMesh>& meshes);
 
 }  // namespace pointgen
