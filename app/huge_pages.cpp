@@ -20,6 +20,9 @@ void run_with_huge_pages(char** argv) {
   if (mode.find("[madvise]") == std::string::npos) return;  // always, never, or no such kernel
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   if (tunables && std::strstr(tunables, "glibc.malloc.hugetlb")) return;  // set already, by us or the user
+  // Started through the dynamic loader (ld-linux ... ecoview), this process's file is the loader.
+  char self[4096] = {};
+  if (readlink("/proc/self/exe", self, sizeof self - 1) <= 0 || std::strstr(self, "/ld-")) return;
   const std::string wanted = tunables && *tunables ? std::string(tunables) + ":" + tunable : tunable;
   if (setenv("GLIBC_TUNABLES", wanted.c_str(), 1) != 0) return;
   execv("/proc/self/exe", argv);  // returns only where it failed
