@@ -29,7 +29,7 @@ struct MaskFrame {
   // With the GPU sampler, the plants it chose as polygons for the frame (GpuScene::draw_chosen):
   // casters too, which `polygons` does not hold.
   std::optional<GpuScene::PlantDraws> plants;
-  const pointgen::TableList& tables;  // as posed for the frame
+  const pointgen::TableList& tables;                   // as posed for the frame
   const pointgen::InstanceCells& cells;                 // of tables
   const FramePass& frame;
 };
