@@ -1,9 +1,9 @@
 #pragma once
-#include "pointgen/table_list.hpp"
 #include "pointgen/sampling/instance_cells.hpp"
 #include "pointgen/sampling/mesh_parts.hpp"
 #include "pointgen/sampling/point_count.hpp"
 #include "pointgen/sampling/receiver_mask.hpp"
+#include "pointgen/table_list.hpp"
 
 #include <vector>
 
