@@ -21,7 +21,6 @@ class TableList {
   TableList& operator=(const TableList&) = delete;
 
   std::size_t size() const { return at_.size(); }
-  bool empty() const { return at_.empty(); }
   const InstanceTable& operator[](std::size_t i) const { return *at_[i]; }
   // Table `i` is `table` from now on.
   void replace(std::size_t i, InstanceTable table) { at_[i] = &replaced_[i].emplace(std::move(table)); }

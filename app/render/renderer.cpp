@@ -413,7 +413,7 @@ FramePass::ShadowLookup Renderer::mask_lookup(GLuint mask) {
 }
 
 const pointgen::InstanceCells& Renderer::cells() const {
-  if (!cells_) cells_.emplace(tables_, samples_.meshes());
+  std::call_once(cells_made_, [this] { cells_.emplace(tables_, samples_.meshes()); });
   return *cells_;
 }
 
@@ -617,12 +617,11 @@ pointgen::SampledFrame Renderer::draw_sampled_on_cpu(const shadow::Camera& camer
 // cores. The sampler only reads what pose() left.
 std::future<Renderer::TimedSelection> Renderer::choose_frame_points(const shadow::Camera& camera) const {
   if (!settings_.points || gpu_sampler_) return {};
-  const pointgen::InstanceCells& cells = this->cells();  // made on first use: here, not on both threads
-  return std::async(std::launch::async, [this, camera, &cells] {
+  return std::async(std::launch::async, [this, camera] {
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = thread_cpu_ms();
     TimedSelection chosen;
-    chosen.selection = pointgen::sample_view(sampler_view(camera, settings_, {view_projection_}), tables_, samples_.meshes(), cells);
+    chosen.selection = pointgen::sample_view(sampler_view(camera, settings_, {view_projection_}), tables_, samples_.meshes(), cells());
     chosen.ms = ms_since(start);
     chosen.cpu_ms = thread_cpu_ms() - cpu_start;
     return chosen;

@@ -19,6 +19,7 @@
 
 #include <future>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -209,8 +210,10 @@ class Renderer {
   GpuScene gpu_scene_;
   PointSamples samples_;
   // The cells over tables_, for the CPU sampler, the culled polygon plants and the volumes: made
-  // when first asked for (cells()), as the GPU sampler needs none (10^7 plants: 1.5 s, 50 MB).
+  // when first asked for (cells(), on whichever thread asks first), as the GPU sampler needs none
+  // (10^7 plants: about 1.5 s, 50 MB).
   mutable std::optional<pointgen::InstanceCells> cells_;
+  mutable std::once_flag cells_made_;
   MapTechnique map_;
   FramePass frame_pass_;
   PointSplat frame_points_;
