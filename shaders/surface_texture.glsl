@@ -10,8 +10,9 @@ float wrapped(float x, int mode, float half_texel) {
   return x;  // the sampler repeats
 }
 
-vec4 surface_texel(vec2 uv, float code) {
-  vec2 dx = dFdx(uv), dy = dFdy(uv);  // of the unwrapped coordinate, before any branch
+// The texel at `uv` with the coordinate's derivatives `dx` and `dy` (which pick the level: 0, 0
+// the full-size one).
+vec4 surface_texel_grad(vec2 uv, float code, vec2 dx, vec2 dy) {
   int c = int(code + 0.5);
   int layer = (c & 255) - 1;
   if (layer < 0) return vec4(1.0);
@@ -19,4 +20,9 @@ vec4 surface_texel(vec2 uv, float code) {
   float half_texel = 0.5 / float(textureSize(surface_textures, 0).x);
   vec2 w = vec2(wrapped(uv.x, wrap / 3, half_texel), wrapped(uv.y, wrap % 3, half_texel));
   return textureGrad(surface_textures, vec3(w, float(layer)), dx, dy);
+}
+
+// The texel a fragment shows, filtered over its footprint.
+vec4 surface_texel(vec2 uv, float code) {
+  return surface_texel_grad(uv, code, dFdx(uv), dFdy(uv));  // of the unwrapped coordinate, before any branch
 }

@@ -9,8 +9,8 @@ constexpr GLuint commands_binding = 41, adjacent_binding = 42, draw_counts_bindi
 
 }  // namespace
 
-AdjacencyDraw::AdjacencyDraw(std::vector<std::string> stages)
-    : stages_(std::move(stages)), tables_program_(gl::build_program(stages_)) {}
+AdjacencyDraw::AdjacencyDraw(std::vector<std::string> stages, std::string defines)
+    : stages_(std::move(stages)), defines_(std::move(defines)), tables_program_(gl::build_program(stages_, defines_)) {}
 
 void AdjacencyDraw::draw(const GpuScene& scene, const GpuScene::PlantDraws* plants,
                          const std::function<void(const gl::Program&)>& set_uniforms, const std::optional<glm::mat4>& view) {
@@ -19,7 +19,7 @@ void AdjacencyDraw::draw(const GpuScene& scene, const GpuScene::PlantDraws* plan
   scene.draw_with_adjacency(view);
   if (plants == nullptr || plants->command_count == 0) return;
   const GpuScene::PlantDraws draws = adjacency_draws(*plants);
-  if (!plants_program_) plants_program_ = gl::build_program(stages_, "#define PLANT_INDEX\n");
+  if (!plants_program_) plants_program_ = gl::build_program(stages_, defines_ + "#define PLANT_INDEX\n");
   glUseProgram(plants_program_->name());
   set_uniforms(*plants_program_);
   scene.draw_chosen_with_adjacency(draws);

@@ -16,7 +16,8 @@ namespace ecoview {
 // PLANT_INDEX, from a copy of their draws made on the GPU (shaders/adjacency_commands.comp).
 class AdjacencyDraw {
  public:
-  explicit AdjacencyDraw(std::vector<std::string> stages);
+  // `defines` for every build of the stages (SURFACE_TEXTURES where they read materials).
+  explicit AdjacencyDraw(std::vector<std::string> stages, std::string defines = {});
   // `scene` with its neighbours found (GpuScene::add_adjacency), the chunks of its large meshes
   // that reach `view` if one is given; `plants`, if any, its plants drawn as polygons
   // (GpuScene::draw_chosen). Each program is bound and handed to `set_uniforms` before it draws.
@@ -27,6 +28,7 @@ class AdjacencyDraw {
   GpuScene::PlantDraws adjacency_draws(const GpuScene::PlantDraws& plants);
 
   std::vector<std::string> stages_;
+  std::string defines_;
   gl::Program tables_program_;
   std::optional<gl::Program> plants_program_, commands_program_;  // built for the first plants
   gl::Buffer commands_;

@@ -316,6 +316,15 @@ void FramePass::bind_surfaces(const gl::Program& program) const {
   gl::set_uniform(program, "points_added", points_added_ ? 1 : 0);
 }
 
+void FramePass::bind_surfaces_for(const gl::Program& program, const shadow::Camera& camera) const {
+  const glm::mat4 surfaces_view_projection = view_projection(camera);
+  gl::set_uniform(program, "camera_position", camera.position);
+  gl::set_uniform(program, "camera_forward", camera.forward());
+  gl::set_uniform(program, "pixel_to_world", glm::inverse(surfaces_view_projection));
+  gl::set_uniform(program, "frame_size", glm::vec2(width_, height_));
+  bind_surfaces(program);
+}
+
 // The point's depth where the point pass added one, else the polygons'.
 Image<float> FramePass::read_depth() const {
   Image<float> depth = read<float>(surfaces_, GL_COLOR_ATTACHMENT2, 1, GL_RED, GL_FLOAT);

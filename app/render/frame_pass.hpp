@@ -86,6 +86,9 @@ class FramePass {
   // The aliasing factor (DESIGN.md) of the surface in each pixel; negative where no surface was
   // drawn, 0 without a shadow map.
   Image<float> read_aliasing() const;
+  // Binds the frame's surfaces and what finds their positions (frame_surface.glsl,
+  // surface_position.glsl) for another pass's program; `camera` is the one they were drawn with.
+  void bind_surfaces_for(const gl::Program& program, const shadow::Camera& camera) const;
   // The depth-stencil texture (GL_DEPTH32F_STENCIL8) the frame draws into.
   GLuint depth_stencil_texture() const { return depth_buffer_.name(); }
   // Whether to fill the aliasing target from the next frame on.

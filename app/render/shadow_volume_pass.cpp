@@ -16,10 +16,10 @@ constexpr float offset_units = 8.0f;
 
 }  // namespace
 
-ShadowVolumePass::ShadowVolumePass(int width, int height, GLuint depth_stencil)
+ShadowVolumePass::ShadowVolumePass(int width, int height, GLuint depth_stencil, bool masked_casters)
     : width_(width),
       height_(height),
-      volumes_({"world_position.vert", "shadow_volume.geom", "shadow_depth.frag"}),
+      volumes_({"world_position.vert", "shadow_volume.geom", "stencil_count.frag"}, gl::surface_defines(masked_casters)),
       mask_program_(gl::build_program({"fullscreen.vert", "light_mask.frag"})),
       edge_program_(gl::build_program({"fullscreen.vert", "edge_pixels.frag"})) {
   glTextureStorage2D(mask_.name(), 1, GL_R8, width, height);
@@ -32,10 +32,10 @@ ShadowVolumePass::ShadowVolumePass(int width, int height, GLuint depth_stencil)
       glCheckNamedFramebufferStatus(stencil_only_.name(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
     throw RuntimeFailure("the shadow-volume targets are not supported by this driver; try another --backend");
   }
+  if (masked_casters) masked_prisms_.emplace(std::vector<std::string>{"world_position.vert", "masked_prism.geom", "masked_prism.frag"}, gl::surface_defines(true));
 }
 
-void ShadowVolumePass::render(const GpuScene& scene, const GpuScene::PlantDraws* plants, const glm::mat4& view_projection,
-                              const shadow::Light& light, Counting counting) {
+void ShadowVolumePass::render(const MaskFrame& frame, Counting counting) {
   const GLuint fb = framebuffer_.name();
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glViewport(0, 0, width_, height_);
@@ -45,16 +45,17 @@ void ShadowVolumePass::render(const GpuScene& scene, const GpuScene::PlantDraws*
   glClearNamedFramebufferiv(fb, GL_STENCIL, 0, &zero);
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_ALWAYS, 0, 0xFF);
-  count(scene, plants, view_projection, light, counting);
+  count(frame, counting);
   // The mask: 1 where the count is 0.
   glStencilFunc(GL_EQUAL, 0, 0xFF);
   write_mask(1.0f);
   glDisable(GL_STENCIL_TEST);
+  shadow_by_masked(frame);
 }
 
-void ShadowVolumePass::render_near_edges(const GpuScene& scene, const GpuScene::PlantDraws* plants, const glm::mat4& view_projection,
-                                         const shadow::Light& light, Counting counting, GLuint visibility) {
+void ShadowVolumePass::render_near_edges(const MaskFrame& frame, Counting counting) {
   constexpr GLuint edge_bit = 0x80, count_bits = 0x7F;
+  const GLuint visibility = frame.frame.visibility_texture();
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);  // the AOV is a compute pass's image
   glCopyImageSubData(visibility, GL_TEXTURE_2D, 0, 0, 0, 0, mask_.name(), GL_TEXTURE_2D, 0, 0, 0, 0, width_, height_, 1);
   const GLint zero = 0;
@@ -72,20 +73,21 @@ void ShadowVolumePass::render_near_edges(const GpuScene& scene, const GpuScene::
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.name());
   glStencilFunc(GL_EQUAL, edge_bit, edge_bit);
   glStencilMask(count_bits);
-  count(scene, plants, view_projection, light, counting);
+  count(frame, counting);
   glStencilMask(0xFF);
   // Near edges: 1 where the count is 0, 0 where it is not.
   glStencilFunc(GL_EQUAL, edge_bit, 0xFF);
   write_mask(1.0f);
   glStencilFunc(GL_LESS, edge_bit, 0xFF);  // edge_bit < stencil: marked, and a count
   write_mask(0.0f);
+  glStencilFunc(GL_EQUAL, edge_bit, edge_bit);
+  shadow_by_masked(frame);
   glDisable(GL_STENCIL_TEST);
 }
 
 // The volumes: no colour, no depth writes, both faces; far caps at infinity kept by depth clamp.
 // The stencil test is the caller's.
-void ShadowVolumePass::count(const GpuScene& scene, const GpuScene::PlantDraws* plants, const glm::mat4& view_projection,
-                             const shadow::Light& light, Counting counting) {
+void ShadowVolumePass::count(const MaskFrame& frame, Counting counting) {
   const bool z_fail = counting == Counting::z_fail;
   glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glEnable(GL_DEPTH_TEST);
@@ -102,15 +104,35 @@ void ShadowVolumePass::count(const GpuScene& scene, const GpuScene::PlantDraws* 
     glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
     glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
   }
-  volumes_.draw(scene, plants, [&](const gl::Program& program) {
-    gl::set_uniform(program, "view_projection", view_projection);
-    gl::set_uniform(program, "light", shadow::homogeneous(light));
+  volumes_.draw(frame.polygons, frame.plants ? &*frame.plants : nullptr, [&](const gl::Program& program) {
+    gl::set_uniform(program, "view_projection", frame.view_projection);
+    gl::set_uniform(program, "light", shadow::homogeneous(frame.light));
     gl::set_uniform(program, "far_caps", z_fail ? 1 : 0);
   });
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_DEPTH_CLAMP);
   glDepthMask(GL_TRUE);
   glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+// Each masked triangle's prism, its faces facing away from the eye: a convex volume's back faces
+// cover each pixel whose ray passes through it once, wherever the eye stands. No depth test: the
+// surface may lie anywhere along the ray inside the prism. The stencil test is the caller's.
+void ShadowVolumePass::shadow_by_masked(const MaskFrame& frame) {
+  if (!masked_prisms_) return;
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_FRONT);
+  glEnable(GL_DEPTH_CLAMP);
+  masked_prisms_->draw(frame.polygons, frame.plants ? &*frame.plants : nullptr, [&](const gl::Program& program) {
+    gl::set_uniform(program, "view_projection", frame.view_projection);
+    gl::set_uniform(program, "light", shadow::homogeneous(frame.light));
+    frame.frame.bind_surfaces_for(program, frame.camera);
+  });
+  glDisable(GL_DEPTH_CLAMP);
+  glCullFace(GL_BACK);
+  glDisable(GL_CULL_FACE);
 }
 
 void ShadowVolumePass::write_mask(float value) const {

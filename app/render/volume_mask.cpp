@@ -2,10 +2,14 @@
 
 #include "shadow/volume_counting.hpp"
 
+#include <algorithm>
+
 namespace ecoview {
 
 VolumeMask::VolumeMask(Where where, const MaskSources& sources)
-    : where_(where), pass_(sources.size.x, sources.size.y, sources.frame.depth_stencil_texture()) {
+    : where_(where),
+      pass_(sources.size.x, sources.size.y, sources.frame.depth_stencil_texture(),
+            std::ranges::any_of(sources.scene.meshes, &pointgen::TriangleMesh::masked)) {
   sources.polygons.add_adjacency(sources.scene);
   for (const pointgen::TriangleMesh& mesh : sources.scene.meshes) {
     const pointgen::Bounds bounds = mesh.bounds();
@@ -16,12 +20,11 @@ VolumeMask::VolumeMask(Where where, const MaskSources& sources)
 GLuint VolumeMask::render(const MaskFrame& frame) {
   const bool z_pass = camera_outside_volumes(frame);
   const auto counting = z_pass ? ShadowVolumePass::Counting::z_pass : ShadowVolumePass::Counting::z_fail;
-  const GpuScene::PlantDraws* plants = frame.plants ? &*frame.plants : nullptr;
   if (where_ == Where::everywhere) {
-    pass_.render(frame.polygons, plants, frame.view_projection, frame.light, counting);
+    pass_.render(frame, counting);
     description_ = z_pass ? "volumes: z-pass" : "volumes: z-fail";
   } else {
-    pass_.render_near_edges(frame.polygons, plants, frame.view_projection, frame.light, counting, frame.frame.visibility_texture());
+    pass_.render_near_edges(frame, counting);
     description_ = z_pass ? "volumes near its edges: z-pass" : "volumes near its edges: z-fail";
   }
   return pass_.light_mask();
