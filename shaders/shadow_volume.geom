@@ -22,6 +22,8 @@ void volume_vertex(vec4 position) {
   gl_Position = position;
   EmitVertex();
 }
+// The point at infinity in the direction from the light through p.
+vec4 far_vertex(vec3 p) { return view_projection * vec4(light.w * p - light.xyz, 0.0); }
 #include "volume_faces.glsl"
 
 #ifdef SURFACE_TEXTURES

@@ -1,11 +1,10 @@
 // The faces of a triangle's shadow volume (Crow 1977), wound to face out of it: the triangle turned
-// to face the light is its near cap, its projection away from the light at infinity its far cap,
-// and a quad runs from each edge to infinity. Needs view_projection, light (light_facing.glsl) and,
-// before this is included, the stage's own volume_vertex(clip position), which emits one vertex.
+// to face the light is its near cap, its projection away from the light its far cap, and a quad
+// runs from each edge to the far cap. Needs view_projection and, before this is included, the
+// stage's own volume_vertex(clip position), which emits one vertex, and far_vertex(p), where the
+// volume ends on the ray from the light through p.
 
 vec4 near_vertex(vec3 p) { return view_projection * vec4(p, 1.0); }
-// The point at infinity in the direction from the light through p.
-vec4 far_vertex(vec3 p) { return view_projection * vec4(light.w * p - light.xyz, 0.0); }
 
 void volume_triangle(vec4 a, vec4 b, vec4 c) {
   volume_vertex(a);

@@ -5,6 +5,7 @@
 #include "app/render/gpu_scene.hpp"
 #include "app/scene/scene.hpp"
 #include "pointgen/sampling/instance_cells.hpp"
+#include "shadow/box.hpp"
 #include "shadow/camera.hpp"
 #include "shadow/light.hpp"
 #include "shadow/techniques.hpp"
@@ -25,6 +26,7 @@ struct MaskFrame {
   float aspect;
   const shadow::Light& light;
   const glm::mat4& view_projection;
+  const shadow::Box& scene_bounds;                      // every caster and receiver, in any pose
   const GpuScene& polygons;                             // the polygon casters, those out of view too
   // With the GPU sampler, the plants it chose as polygons for the frame (GpuScene::draw_chosen):
   // casters too, which `polygons` does not hold.

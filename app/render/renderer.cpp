@@ -377,7 +377,7 @@ MaskFrame Renderer::mask_frame(const shadow::Camera& camera, const shadow::Light
   if (gpu_sampler_ && draws_points() && mask_->casts_from_frame_polygons()) {
     plants = gpu_sampler_->polygon_draws(0, gpu_sampler_->band_count());
   }
-  return {camera, aspect(), light, view_projection_, gpu_scene_, plants, tables_, cells(), frame_pass_};
+  return {camera, aspect(), light, view_projection_, scene_bounds_, gpu_scene_, plants, tables_, cells(), frame_pass_};
 }
 
 // Timed as the shadow pass, by the wall clock where the mask is CPU work.

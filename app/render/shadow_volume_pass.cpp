@@ -119,14 +119,18 @@ void ShadowVolumePass::count(const MaskFrame& frame, Counting counting) {
 // cover each pixel whose ray passes through it once, wherever the eye stands. No depth test: the
 // surface may lie anywhere along the ray inside the prism. The stencil test is the caller's.
 void ShadowVolumePass::shadow_by_masked(const MaskFrame& frame) {
-  if (!masked_prisms_) return;
+  if (!masked_prisms_ || frame.scene_bounds.empty()) return;
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glDisable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);
   glCullFace(GL_FRONT);
   glEnable(GL_DEPTH_CLAMP);
+  // The box a little larger, so that rounding leaves no receiver on its face outside a prism.
+  const glm::vec3 margin = 0.01f * (frame.scene_bounds.max - frame.scene_bounds.min) + 0.01f;
   masked_prisms_->draw(frame.polygons, frame.plants ? &*frame.plants : nullptr, [&](const gl::Program& program) {
     gl::set_uniform(program, "view_projection", frame.view_projection);
+    gl::set_uniform(program, "scene_min", frame.scene_bounds.min - margin);
+    gl::set_uniform(program, "scene_max", frame.scene_bounds.max + margin);
     gl::set_uniform(program, "light", shadow::homogeneous(frame.light));
     frame.frame.bind_surfaces_for(program, frame.camera);
   });
