@@ -491,8 +491,10 @@ class MeshBuilder {
     surface->height = image.height;
     surface->rgba = image.image;
     if (texture.sampler >= 0 && static_cast<std::size_t>(texture.sampler) < model_.samplers.size()) {
-      surface->wrap_s = wrap_mode(model_.samplers[static_cast<std::size_t>(texture.sampler)].wrapS);
-      surface->wrap_t = wrap_mode(model_.samplers[static_cast<std::size_t>(texture.sampler)].wrapT);
+      const tinygltf::Sampler& sampler = model_.samplers[static_cast<std::size_t>(texture.sampler)];
+      surface->wrap_s = wrap_mode(sampler.wrapS);
+      surface->wrap_t = wrap_mode(sampler.wrapT);
+      if (sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) surface->magnify = SurfaceTexture::Filter::nearest;
     }
     if (surface->rgba.size() != 4 * static_cast<std::size_t>(surface->width) * static_cast<std::size_t>(surface->height)) {
       reader_.fail("image " + std::to_string(texture.source) + " was not decoded");

@@ -43,8 +43,9 @@ glm::vec4 SurfaceTexture::sample(glm::vec2 uv) const {
   // (both repeat over 2 texture widths), so far-off coordinates keep the float's precision.
   const auto fold = [](float x, Wrap wrap) { return wrap == Wrap::clamp ? x : x - 2.0f * std::floor(0.5f * x); };
   const glm::vec2 p = glm::vec2(fold(uv.x, wrap_s), fold(uv.y, wrap_t)) * glm::vec2(width, height) - 0.5f;
-  const glm::vec2 base = glm::floor(glm::clamp(p, glm::vec2(-1e6f), glm::vec2(1e6f)));
-  const glm::vec2 f = glm::clamp(p - base, 0.0f, 1.0f);  // beyond a clamped edge: the edge texel
+  const glm::vec2 base = glm::floor(glm::clamp(magnify == Filter::nearest ? p + 0.5f : p, glm::vec2(-1e6f), glm::vec2(1e6f)));
+  // The second texel's weight on each axis (none when nearest); beyond a clamped edge, the edge texel.
+  const glm::vec2 f = magnify == Filter::nearest ? glm::vec2(0.0f) : glm::clamp(p - base, 0.0f, 1.0f);
   const auto& linear = srgb_to_linear_table();
   glm::vec4 sum(0.0f);
   for (int dy = 0; dy < 2; ++dy) {

@@ -8,14 +8,18 @@
 namespace pointgen {
 
 // A material's base-colour image (glTF baseColorTexture): 8-bit RGBA, colour in sRGB, alpha
-// linear, row 0 at texture coordinate v = 0, looked up as GL does with its sampler's wrap modes.
+// linear, row 0 at texture coordinate v = 0, looked up as GL does with its sampler's wrap modes and
+// magnification filter. Minified, it is always filtered through its mipmaps.
 struct SurfaceTexture {
   enum class Wrap { repeat, clamp, mirror };
+  enum class Filter { linear, nearest };
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgba;  // width × height × 4
   Wrap wrap_s = Wrap::repeat, wrap_t = Wrap::repeat;
+  Filter magnify = Filter::linear;
 
-  // Bilinear between the four texels around `uv` (GL_LINEAR on the full image): linear RGB and alpha.
+  // The full-size image at `uv` as it is magnified: bilinear between the four texels around it
+  // (GL_LINEAR), or the texel it falls in (GL_NEAREST). Linear RGB and alpha.
   glm::vec4 sample(glm::vec2 uv) const;
   std::size_t bytes() const { return rgba.size(); }
 };

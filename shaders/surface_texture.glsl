@@ -1,7 +1,8 @@
 // A polygon's base-colour texture and alpha mask (SurfaceTextures::vertex_surfaces). Per vertex:
 // its texture coordinate, a code (the texture's layer + 1, 0 for none, plus 256 × (3 × wrap s +
-// wrap t), each wrap 0 repeat, 1 clamp, 2 mirror), and the alpha below which the mask cuts the
-// surface away (0: no mask). Without a texture the texel is white and opaque.
+// wrap t), each wrap 0 repeat, 1 clamp, 2 mirror, plus 4096 where it is magnified nearest), and
+// the alpha below which the mask cuts the surface away (0: no mask). Without a texture the texel
+// is white and opaque.
 layout(binding = 15) uniform sampler2DArray surface_textures;
 
 float wrapped(float x, int mode, float half_texel) {
@@ -16,9 +17,15 @@ vec4 surface_texel_grad(vec2 uv, float code, vec2 dx, vec2 dy) {
   int c = int(code + 0.5);
   int layer = (c & 255) - 1;
   if (layer < 0) return vec4(1.0);
-  int wrap = c >> 8;
-  float half_texel = 0.5 / float(textureSize(surface_textures, 0).x);
+  int wrap = (c >> 8) & 15;
+  vec2 size = vec2(textureSize(surface_textures, 0).xy);
+  float half_texel = 0.5 / size.x;
   vec2 w = vec2(wrapped(uv.x, wrap / 3, half_texel), wrapped(uv.y, wrap % 3, half_texel));
+  // Magnified (GL's level of detail at most 0: a pixel spans at most a texel), a nearest image
+  // shows the texel the coordinate falls in.
+  if ((c & 4096) != 0 && max(dot(dx * size, dx * size), dot(dy * size, dy * size)) <= 1.0) {
+    return textureLod(surface_textures, vec3((floor(w * size) + 0.5) / size, float(layer)), 0.0);
+  }
   return textureGrad(surface_textures, vec3(w, float(layer)), dx, dy);
 }
 

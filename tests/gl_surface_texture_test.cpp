@@ -15,8 +15,9 @@
 namespace ecoview {
 namespace {
 
-Scene card_scene(const std::string& camera, const std::string& light, const std::string& card_transform, bool ground) {
-  const TexturedCard card = textured_card();
+Scene card_scene(const std::string& camera, const std::string& light, const std::string& card_transform, bool ground,
+                 int mag_filter = 9729) {
+  const TexturedCard card = textured_card("MASK", mag_filter);
   const std::string json = R"({"camera": )" + camera + R"(, "lights": [)" + light + R"(], "objects": [)" +
                            (ground ? R"({"type": "plane", "center": [0, 0, 0], "size": [12, 12]}, )" : "") +
                            R"({"type": "mesh", "file": "card.gltf", "transforms": [)" + card_transform + "]}]}";
@@ -76,6 +77,37 @@ TEST(SurfaceTexture, APolygonShowsItsTexturesColoursAndTheSkyWhereTheMaskCutsItA
   EXPECT_GT(blue, 2000u);
   EXPECT_GT(cut, 2000u);
   EXPECT_LE(wrong, (red + blue + cut) / 200);
+}
+
+// The card close up (about 2.6 pixels a texel) with a nearest sampler: a pixel within a fifth of a
+// texel of the edge between two checker squares shows its own square's colour, not a blend.
+TEST(SurfaceTexture, ANearestTextureMagnifiedShowsEachTexelFlat) {
+  const std::unique_ptr<GlContext> context = create_headless_context("egl");
+  const Scene scene = card_scene(R"({"position": [0, 1, 4], "target": [0, 1, 0], "fov_y_deg": 40})",
+                                 R"({"type": "directional", "direction": [0, -0.3, -1]})", "[1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]", false,
+                                 9728);
+  RenderSettings settings;
+  settings.width = 320;
+  settings.height = 240;
+  settings.method = shadow::Method::none;
+  Renderer renderer(scene, settings);
+  renderer.render(scene.camera, scene.lights[0]);
+  const Image8 color = renderer.frame().read_color();
+  std::size_t checked = 0, blended = 0;
+  for (int y = 0; y < settings.height; ++y) {
+    for (int x = 0; x < settings.width; ++x) {
+      const auto p = pixel_on_plane(scene.camera, 320.0f / 240.0f, x, y, settings.width, settings.height, 0.0f, true);
+      if (!p || std::abs(p->x) > 0.95f || p->y < 0.05f || p->y > 1.95f) continue;
+      const glm::vec2 uv((p->x + 1.0f) / 2.0f, 1.0f - p->y / 2.0f);
+      if (!card_keeps(uv) || distance_to_mask_edge(uv) < 0.02f || distance_to_checker_edge(uv) > 0.2f / card_texels) continue;
+      const glm::ivec3 c(color.at(x, y, 0), color.at(x, y, 1), color.at(x, y, 2));
+      ++checked;
+      blended += card_color(uv).r > 0.5f ? !(c.r > c.b + 60) : !(c.b > c.r + 60);
+    }
+  }
+  std::cout << checked << " pixels beside a checker edge, " << blended << " of them blended\n";
+  EXPECT_GT(checked, 300u);
+  EXPECT_LE(blended, checked / 100);
 }
 
 // The card lies flat 1 m above the ground (x and z from -1 to 1), the sun nearly overhead: the

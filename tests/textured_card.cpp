@@ -80,7 +80,7 @@ std::string card_geometry() {
 
 // The card's glTF JSON: `buffer` and `image` as JSON objects, bufferView 4 free for an image.
 std::string card_json(const std::string& buffer, const std::string& image, const std::string& extra_view,
-                      const std::string& alpha_mode) {
+                      const std::string& alpha_mode, int mag_filter = 9729) {
   return R"({"asset": {"version": "2.0"}, "buffers": [)" + buffer + R"(],
     "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 48},
                     {"buffer": 0, "byteOffset": 96, "byteLength": 32}, {"buffer": 0, "byteOffset": 128, "byteLength": 12})" + extra_view + R"(],
@@ -88,7 +88,7 @@ std::string card_json(const std::string& buffer, const std::string& image, const
                   {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
                   {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
                   {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"}],
-    "images": [)" + image + R"(], "samplers": [{"wrapS": 33071, "wrapT": 33071}],
+    "images": [)" + image + R"(], "samplers": [{"wrapS": 33071, "wrapT": 33071, "magFilter": )" + std::to_string(mag_filter) + R"(}],
     "textures": [{"source": 0, "sampler": 0}],
     "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}, "alphaMode": ")" + alpha_mode + R"(", "doubleSided": true}],
     "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3, "material": 0}]}],
@@ -99,8 +99,8 @@ std::string little_endian(std::uint32_t v) { return std::string(reinterpret_cast
 
 }  // namespace
 
-TexturedCard textured_card(const std::string& alpha_mode) {
-  const std::string gltf = card_json(R"({"uri": "card.bin", "byteLength": 140})", R"({"uri": "leaf.png"})", "", alpha_mode);
+TexturedCard textured_card(const std::string& alpha_mode, int mag_filter) {
+  const std::string gltf = card_json(R"({"uri": "card.bin", "byteLength": 140})", R"({"uri": "leaf.png"})", "", alpha_mode, mag_filter);
   return {{{"card.gltf", gltf}, {"card.bin", card_geometry()}, {"leaf.png", png_of(card_texels_rgba(), card_texels)}}};
 }
 

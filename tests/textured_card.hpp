@@ -17,8 +17,8 @@ struct TexturedCard {
   pointgen::ReadFile read() const;
 };
 
-// `alpha_mode` "MASK", "BLEND" or "OPAQUE".
-TexturedCard textured_card(const std::string& alpha_mode = "MASK");
+// `alpha_mode` "MASK", "BLEND" or "OPAQUE"; `mag_filter` the sampler's (GL_LINEAR or GL_NEAREST).
+TexturedCard textured_card(const std::string& alpha_mode = "MASK", int mag_filter = 9729);
 // The same card in one .glb file ("card.glb") whose buffer holds the image as JPEG (no alpha:
 // opaque).
 TexturedCard textured_card_glb_with_jpeg();

@@ -47,6 +47,21 @@ TEST(TexturedGltf, ACardLoadsWithItsImageTextureCoordinatesAndMask) {
   EXPECT_NEAR(glm::distance(glm::vec3(centre), card_color({0.5f + 0.5f * texel, 0.5f + 0.5f * texel})), 0.0f, 1e-6f);
 }
 
+// The sampler's magnification filter: 0.3 texels from the edge between two checker squares, a
+// nearest image gives the square's own colour, a linear one a blend of the two.
+TEST(TexturedGltf, ANearestSamplerShowsTheTexelTheCoordinateFallsIn) {
+  const glm::vec2 uv(0.5f - 0.3f * texel, 0.5f + 0.5f * texel);  // left of the edge at u = 0.5
+  const glm::vec3 square = card_color(uv), beside = card_color(uv + glm::vec2(0.6f * texel, 0.0f));
+  ASSERT_NE(square, beside);
+  const pointgen::TriangleMesh nearest = pointgen::load_mesh_file("card.gltf", textured_card("MASK", 9728).read());
+  ASSERT_TRUE(nearest.materials[1].texture);
+  EXPECT_EQ(nearest.materials[1].texture->magnify, pointgen::SurfaceTexture::Filter::nearest);
+  EXPECT_NEAR(glm::distance(glm::vec3(nearest.materials[1].texture->sample(uv)), square), 0.0f, 1e-6f);
+  const pointgen::TriangleMesh linear = pointgen::load_mesh_file("card.gltf", textured_card("MASK", 9729).read());
+  const glm::vec3 blend = glm::vec3(linear.materials[1].texture->sample(uv));
+  EXPECT_NEAR(glm::distance(blend, 0.8f * square + 0.2f * beside), 0.0f, 1e-5f);
+}
+
 // The image embedded in a .glb's buffer, as JPEG: decoded, the checkerboard's colours within
 // JPEG's error away from the squares' edges.
 TEST(TexturedGltf, AJpegImageEmbeddedInABinaryFileIsDecoded) {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace ecoview {
 namespace {
@@ -16,6 +17,7 @@ constexpr int max_layer_side = 2048;
 // included, would take more than this.
 constexpr double max_array_bytes = 512.0 * 1024 * 1024;
 constexpr int max_layers = 255;  // a code's low byte holds the layer + 1
+constexpr int nearest_code = 4096;  // a code's bit for nearest magnification (shaders/surface_texture.glsl)
 
 int wrap_code(pointgen::SurfaceTexture::Wrap wrap) {
   switch (wrap) {
@@ -24,6 +26,19 @@ int wrap_code(pointgen::SurfaceTexture::Wrap wrap) {
     case pointgen::SurfaceTexture::Wrap::repeat: break;
   }
   return 0;
+}
+
+// A nearest-magnified image enlarged or shrunk to `side` texels a side by repeating its texels, so
+// that the layer keeps their flat squares.
+void resize_nearest(const pointgen::SurfaceTexture& texture, int side, std::vector<std::uint8_t>& out) {
+  for (int y = 0; y < side; ++y) {
+    const std::size_t from_y = static_cast<std::size_t>(y) * static_cast<std::size_t>(texture.height) / static_cast<std::size_t>(side);
+    for (int x = 0; x < side; ++x) {
+      const std::size_t from_x = static_cast<std::size_t>(x) * static_cast<std::size_t>(texture.width) / static_cast<std::size_t>(side);
+      std::memcpy(&out[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x))],
+                  &texture.rgba[4 * (from_y * static_cast<std::size_t>(texture.width) + from_x)], 4);
+    }
+  }
 }
 
 // The alpha a texel needs for the mask to keep it: texture alpha × the material's alpha ≥ cutoff.
@@ -58,7 +73,11 @@ SurfaceTextures::SurfaceTextures(const std::vector<pointgen::TriangleMesh>& mesh
   for (const auto& [texture, layer] : layers_) {
     const std::uint8_t* pixels = texture->rgba.data();
     if (texture->width != side || texture->height != side) {
-      stbir_resize_uint8_srgb(texture->rgba.data(), texture->width, texture->height, 0, resized.data(), side, side, 0, 4, 3, 0);
+      if (texture->magnify == pointgen::SurfaceTexture::Filter::nearest) {
+        resize_nearest(*texture, side, resized);
+      } else {
+        stbir_resize_uint8_srgb(texture->rgba.data(), texture->width, texture->height, 0, resized.data(), side, side, 0, 4, 3, 0);
+      }
       pixels = resized.data();
     }
     glTextureSubImage3D(array_.name(), 0, 0, 0, layer, side, side, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
@@ -75,7 +94,9 @@ std::vector<glm::vec4> SurfaceTextures::vertex_surfaces(const pointgen::Triangle
   for (const pointgen::SurfaceMaterial& material : mesh.materials) {
     int code = 0;
     if (material.texture) {
-      code = layers_.at(material.texture.get()) + 1 + 256 * (3 * wrap_code(material.texture->wrap_s) + wrap_code(material.texture->wrap_t));
+      const pointgen::SurfaceTexture& texture = *material.texture;
+      code = layers_.at(&texture) + 1 + 256 * (3 * wrap_code(texture.wrap_s) + wrap_code(texture.wrap_t)) +
+             (texture.magnify == pointgen::SurfaceTexture::Filter::nearest ? nearest_code : 0);
     }
     codes.push_back(static_cast<float>(code));
     thresholds.push_back(alpha_threshold(material));
