@@ -434,6 +434,7 @@ class MeshBuilder {
     const tinygltf::Material* material = material_of(model_, primitive.material);
     const glm::vec3 tint(base_color(material));
     part.colors.assign(n, tint);
+    std::vector<float> color_alphas(n, 1.0f);
     const auto color = primitive.attributes.find("COLOR_0");
     if (color != primitive.attributes.end()) {
       const int index = color->second;
@@ -445,14 +446,17 @@ class MeshBuilder {
       for (std::size_t i = 0; i < n; ++i) {
         const float* c = &v[i * static_cast<std::size_t>(components)];
         part.colors[i] = tint * glm::clamp(glm::vec3(c[0], c[1], c[2]), 0.0f, 1.0f);
+        if (rgba) color_alphas[i] = std::clamp(c[3], 0.0f, 1.0f);
       }
     }
-    add_material(part, primitive, material);
+    add_material(part, primitive, material, color_alphas);
     return part;
   }
 
-  // The base-colour texture and alpha mask of a primitive's material, when it has either.
-  void add_material(TriangleMesh& part, const tinygltf::Primitive& primitive, const tinygltf::Material* material) const {
+  // The base-colour texture and alpha mask of a primitive's material, when it has either, with the
+  // alpha of its vertex colours.
+  void add_material(TriangleMesh& part, const tinygltf::Primitive& primitive, const tinygltf::Material* material,
+                    std::vector<float>& color_alphas) const {
     if (!material) return;
     SurfaceMaterial surface;
     surface.alpha = base_color(material).a;
@@ -472,6 +476,7 @@ class MeshBuilder {
         part.texcoords[i] = {uv[2 * i], uv[2 * i + 1]};
       }
     }
+    part.alphas = std::move(color_alphas);
     part.materials = {SurfaceMaterial{}, surface};
     part.vertex_materials.assign(n, 1u);
   }

@@ -62,6 +62,6 @@ glm::vec4 SurfaceTexture::sample(glm::vec2 uv) const {
 
 glm::vec4 SurfaceMaterial::texel(glm::vec2 uv) const { return texture ? texture->sample(uv) : glm::vec4(1.0f); }
 
-bool SurfaceMaterial::keeps(const glm::vec4& texel) const { return !masked() || texel.a * alpha >= alpha_cutoff; }
+float SurfaceMaterial::keep_scale(float vertex_alpha) const { return masked() ? alpha * vertex_alpha / alpha_cutoff : -1.0f; }
 
 }  // namespace pointgen

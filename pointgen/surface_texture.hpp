@@ -25,8 +25,8 @@ struct SurfaceTexture {
 };
 
 // How a surface is coloured and cut beyond its vertex colours: a texture multiplied in, and an
-// alpha mask (glTF alphaMode MASK): the surface exists only where texture alpha × `alpha` is at
-// least `alpha_cutoff`.
+// alpha mask (glTF alphaMode MASK): the surface exists only where texture alpha × `alpha` × the
+// vertex colour's alpha is at least `alpha_cutoff`.
 struct SurfaceMaterial {
   std::shared_ptr<const SurfaceTexture> texture;  // none: vertex colours alone
   float alpha = 1.0f;                             // the base colour factor's alpha
@@ -34,9 +34,13 @@ struct SurfaceMaterial {
 
   bool masked() const { return alpha_cutoff > 0.0f; }
   // The texture at `uv` (linear RGB to multiply the vertex colour by, and alpha; white without a
-  // texture), and whether the mask keeps the surface where it reads `texel`.
+  // texture).
   glm::vec4 texel(glm::vec2 uv) const;
-  bool keeps(const glm::vec4& texel) const;
+  // What texture alpha is multiplied by for the mask to keep the surface where the product reaches
+  // 1, at a vertex of alpha `vertex_alpha`: alpha × vertex_alpha / alpha_cutoff, linear in the
+  // vertex's alpha so that it interpolates across a triangle as that does; -1 without a mask.
+  float keep_scale(float vertex_alpha) const;
+
 };
 
 }  // namespace pointgen

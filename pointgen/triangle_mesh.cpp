@@ -24,17 +24,35 @@ void TriangleMesh::append(const TriangleMesh& other, const glm::mat4& transform)
   if (materials.empty()) {
     materials.push_back({});
     texcoords.assign(base, glm::vec2(0.0f));
+    alphas.assign(base, 1.0f);
     vertex_materials.assign(base, 0u);
   }
   if (other.materials.empty()) {
     texcoords.resize(positions.size(), glm::vec2(0.0f));
+    alphas.resize(positions.size(), 1.0f);
     vertex_materials.resize(positions.size(), 0u);
     return;
   }
   const auto shift = static_cast<std::uint32_t>(materials.size() - 1);  // both meshes' material 0 is the plain one
   materials.insert(materials.end(), other.materials.begin() + 1, other.materials.end());
   texcoords.insert(texcoords.end(), other.texcoords.begin(), other.texcoords.end());
+  alphas.insert(alphas.end(), other.alphas.begin(), other.alphas.end());
   for (std::uint32_t m : other.vertex_materials) vertex_materials.push_back(m == 0 ? 0 : m + shift);
+}
+
+std::optional<glm::vec4> TriangleMesh::kept_texel(std::size_t first, float u, float v) const {
+  if (materials.empty()) return glm::vec4(1.0f);
+  const std::uint32_t a = indices[first], b = indices[first + 1], c = indices[first + 2];
+  const float w = 1.0f - u - v;
+  const SurfaceMaterial& material = materials[vertex_materials[a]];
+  const glm::vec4 texel = material.texel(w * texcoords[a] + u * texcoords[b] + v * texcoords[c]);
+  if (!material.masked()) return texel;
+  // Interpolated only where the vertices' alphas differ: the common scale exactly elsewhere.
+  const float scale = alphas[a] == alphas[b] && alphas[a] == alphas[c]
+                          ? material.keep_scale(alphas[a])
+                          : w * material.keep_scale(alphas[a]) + u * material.keep_scale(alphas[b]) + v * material.keep_scale(alphas[c]);
+  if (texel.a * scale < 1.0f) return std::nullopt;
+  return texel;
 }
 
 bool TriangleMesh::masked() const {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace pointgen {
@@ -28,14 +29,21 @@ struct TriangleMesh {
   std::vector<glm::vec3> normals;
   std::vector<glm::vec3> colors;
   std::vector<std::uint32_t> indices;  // three per triangle
-  // Meshes with textures or alpha masks (glTF materials): per vertex a texture coordinate and
-  // the index of its material; all three empty for meshes of vertex colours alone. Material 0 is
-  // always the plain one (vertex colours, opaque), for vertices without a material of their own.
+  // Meshes with textures or alpha masks (glTF materials): per vertex a texture coordinate, the
+  // vertex colour's alpha (glTF COLOR_0's, 1 where it has none) and the index of its material;
+  // all four empty for meshes of vertex colours alone. Material 0 is always the plain one (vertex
+  // colours, opaque), for vertices without a material of their own.
   std::vector<glm::vec2> texcoords;
+  std::vector<float> alphas;
   std::vector<std::uint32_t> vertex_materials;
   std::vector<SurfaceMaterial> materials;
 
   std::size_t triangle_count() const { return indices.size() / 3; }
+  // The texel at barycentric (u, v) of the triangle starting at index `first` (white where it has
+  // no texture), or nothing where its mask cuts the surface away: where texture alpha × the
+  // material's × the vertex colours' interpolated falls short of the cutoff. A triangle has its
+  // first vertex's material (glTF primitives share no vertices).
+  std::optional<glm::vec4> kept_texel(std::size_t first, float u, float v) const;
   // Whether an alpha mask cuts any of its surface away.
   bool masked() const;
   // Bytes of its materials' texture images, each counted once.

@@ -4,9 +4,10 @@ layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 vertex_color;
 #include "instance.glsl"
 #ifdef SURFACE_TEXTURES
-layout(location = 11) in vec4 surface;  // texture coordinate, material code, alpha threshold
+layout(location = 11) in vec4 surface;  // texture coordinate, material code, keep scale
 out vec2 surface_uv;
-flat out vec2 surface_material;
+flat out vec2 surface_material;  // code, keep scale (surface_texture.glsl)
+out float surface_keep_scale;     // interpolated
 #endif
 
 uniform mat4 view;
@@ -24,6 +25,7 @@ void main() {
 #ifdef SURFACE_TEXTURES
   surface_uv = surface.xy;
   surface_material = surface.zw;
+  surface_keep_scale = surface.w;
 #endif
   gl_Position = view_projection * world;
 }

@@ -12,7 +12,8 @@ uniform vec2 frame_size;
 
 flat in vec3 corners[3];
 flat in vec2 corner_uvs[3];
-flat in vec2 material;
+flat in float corner_scales[3];
+flat in float code;
 layout(location = 0) out float lit;
 
 const float origin_offset = 2e-4;  // app/reference/exact_visibility.cpp's
@@ -37,7 +38,9 @@ void main() {
   float t = dot(e2, r) / det;
   if (u < -edge_slack || v < -edge_slack || u + v > 1.0 + edge_slack) discard;
   if (!(t > 0.0) || (light.w > 0.0 && !(t < 1.0))) discard;
-  vec2 uv = (1.0 - u - v) * corner_uvs[0] + u * corner_uvs[1] + v * corner_uvs[2];
-  if (surface_texel_grad(uv, material.x, vec2(0.0), vec2(0.0)).a < material.y) discard;
+  vec3 weights = vec3(1.0 - u - v, u, v);
+  vec2 uv = weights.x * corner_uvs[0] + weights.y * corner_uvs[1] + weights.z * corner_uvs[2];
+  float keep_scale = fragment_keep_scale(corner_scales[0], dot(weights, vec3(corner_scales[0], corner_scales[1], corner_scales[2])));
+  if (masked_away(surface_texel_grad(uv, code, vec2(0.0), vec2(0.0)), keep_scale)) discard;
   lit = 0.0;
 }

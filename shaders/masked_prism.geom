@@ -18,15 +18,17 @@ uniform vec3 scene_min, scene_max;  // a box around every caster and receiver
 
 flat out vec3 corners[3];
 flat out vec2 corner_uvs[3];
-flat out vec2 material;  // surface_texture.glsl's code and alpha threshold
+flat out float corner_scales[3];  // the mask's keep scales (surface_texture.glsl)
+flat out float code;                  // surface_texture.glsl's
 
 void volume_vertex(vec4 position) {
   gl_Position = position;
   for (int i = 0; i < 3; ++i) {
     corners[i] = world_position[2 * i];
     corner_uvs[i] = vertex_surface[2 * i].xy;
+    corner_scales[i] = vertex_surface[2 * i].w;
   }
-  material = vertex_surface[0].zw;
+  code = vertex_surface[0].z;
   EmitVertex();
 }
 float reach;  // how far the prism runs along a directional light from each corner; 0: to infinity
@@ -50,7 +52,7 @@ float reach_out_of_box(vec3 p[3], vec3 d) {
 }
 
 void main() {
-  if (!cut_by_mask(vertex_surface[0].zw)) return;
+  if (!cut_by_mask(vertex_surface[0].zw) && !cut_by_mask(vertex_surface[2].zw) && !cut_by_mask(vertex_surface[4].zw)) return;
   vec3 p[3] = vec3[3](world_position[0], world_position[2], world_position[4]);
   reach = light.w == 0.0 ? reach_out_of_box(p, -normalize(light.xyz)) : 0.0;
   float f = facing(p[0], p[1], p[2]);

@@ -4,9 +4,10 @@
 #include "surface_texture.glsl"
 in vec2 surface_uv;
 flat in vec2 surface_material;
+in float surface_keep_scale;
 
 void main() {
-  if (surface_texel(surface_uv, surface_material.x).a < surface_material.y) discard;
+  if (masked_away(surface_texel(surface_uv, surface_material.x), fragment_keep_scale(surface_material.y, surface_keep_scale))) discard;
 }
 #else
 void main() {}

@@ -5,7 +5,8 @@ in vec3 patch_position[];
 #ifdef SURFACE_TEXTURES
 in vec4 patch_surface[];
 out vec2 surface_uv;
-flat out vec2 surface_material;
+flat out vec2 surface_material;  // code, keep scale (surface_texture.glsl)
+out float surface_keep_scale;     // interpolated
 #endif
 
 uniform mat4 light_view;
@@ -24,5 +25,6 @@ void main() {
 #ifdef SURFACE_TEXTURES
   surface_uv = gl_TessCoord.x * patch_surface[0].xy + gl_TessCoord.y * patch_surface[1].xy + gl_TessCoord.z * patch_surface[2].xy;
   surface_material = patch_surface[0].zw;
+  surface_keep_scale = dot(gl_TessCoord, vec3(patch_surface[0].w, patch_surface[1].w, patch_surface[2].w));
 #endif
 }

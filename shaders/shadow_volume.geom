@@ -35,7 +35,7 @@ bool masked(int v) { return false; }
 #endif
 
 void main() {
-  if (masked(0)) return;
+  if (masked(0) || masked(2) || masked(4)) return;
   vec3 p[3] = vec3[3](world_position[0], world_position[2], world_position[4]);
   vec3 across[3] = vec3[3](world_position[1], world_position[3], world_position[5]);
   float f = facing(p[0], p[1], p[2]);

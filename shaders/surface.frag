@@ -11,6 +11,7 @@ in float view_depth;
 #include "surface_texture.glsl"
 in vec2 surface_uv;
 flat in vec2 surface_material;
+in float surface_keep_scale;
 #endif
 
 layout(location = 0) out vec4 out_normal;  // world, facing the viewer
@@ -21,7 +22,7 @@ void main() {
   vec3 color = albedo;
 #ifdef SURFACE_TEXTURES
   vec4 texel = surface_texel(surface_uv, surface_material.x);
-  if (texel.a < surface_material.y) discard;  // cut away by the alpha mask
+  if (masked_away(texel, fragment_keep_scale(surface_material.y, surface_keep_scale))) discard;
   color *= texel.rgb;
 #endif
   vec3 n = normalize(world_normal);

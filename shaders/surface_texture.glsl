@@ -1,8 +1,8 @@
 // A polygon's base-colour texture and alpha mask (SurfaceTextures::vertex_surfaces). Per vertex:
 // its texture coordinate, a code (the texture's layer + 1, 0 for none, plus 256 × (3 × wrap s +
 // wrap t), each wrap 0 repeat, 1 clamp, 2 mirror, plus 4096 where it is magnified nearest), and
-// the alpha below which the mask cuts the surface away (0: no mask). Without a texture the texel
-// is white and opaque.
+// the mask's keep scale (pointgen::SurfaceMaterial::keep_scale: -1 for no mask), which varies with
+// the vertex colours' alpha. Without a texture the texel is white and opaque.
 layout(binding = 15) uniform sampler2DArray surface_textures;
 
 float wrapped(float x, int mode, float half_texel) {
@@ -27,6 +27,17 @@ vec4 surface_texel_grad(vec2 uv, float code, vec2 dx, vec2 dy) {
     return textureLod(surface_textures, vec3((floor(w * size) + 0.5) / size, float(layer)), 0.0);
   }
   return textureGrad(surface_textures, vec3(w, float(layer)), dx, dy);
+}
+
+// Whether the mask cuts the surface away where it shows `texel`.
+bool masked_away(vec4 texel, float keep_scale) { return keep_scale >= 0.0 && texel.a * keep_scale < 1.0; }
+
+// The keep scale at a fragment from its provoking vertex's and the interpolated one: the
+// interpolated where the vertex colours' alpha varies across the triangle, else the provoking
+// vertex's exactly. Interpolating equal values can leave them a few units in the last place off,
+// which would cut away a texel whose alpha is exactly the cutoff, or a plain opaque surface.
+float fragment_keep_scale(float provoking, float interpolated) {
+  return abs(interpolated - provoking) <= 1e-5 * abs(provoking) ? provoking : interpolated;
 }
 
 // The texel a fragment shows, filtered over its footprint.

@@ -16,8 +16,7 @@ namespace ecoview {
 namespace {
 
 Scene card_scene(const std::string& camera, const std::string& light, const std::string& card_transform, bool ground,
-                 int mag_filter = 9729) {
-  const TexturedCard card = textured_card("MASK", mag_filter);
+                 const TexturedCard& card = textured_card()) {
   const std::string json = R"({"camera": )" + camera + R"(, "lights": [)" + light + R"(], "objects": [)" +
                            (ground ? R"({"type": "plane", "center": [0, 0, 0], "size": [12, 12]}, )" : "") +
                            R"({"type": "mesh", "file": "card.gltf", "transforms": [)" + card_transform + "]}]}";
@@ -37,33 +36,54 @@ std::optional<glm::vec3> pixel_on_plane(const shadow::Camera& camera, float aspe
   return a + (b - a) * (from / (from - to));
 }
 
-// The card faces the camera 4 m away, against the sky: where the mask keeps it the pixel has the
-// checker square's colour (red or blue as the lit colour's strongest channel, by a margin: the
-// light adds some white), where it cuts the card away the sky shows.
-TEST(SurfaceTexture, APolygonShowsItsTexturesColoursAndTheSkyWhereTheMaskCutsItAway) {
+// The card facing the camera 4 m away against the sky, lit, without shadows (320 × 240, about
+// 2.6 pixels a texel): its colours, and the texture coordinate each pixel sees on its plane.
+struct FacingCard {
+  static constexpr int width = 320, height = 240;
+  Image8 color;
+  shadow::Camera camera;
+
+  glm::ivec3 at(int x, int y) const { return {color.at(x, y, 0), color.at(x, y, 1), color.at(x, y, 2)}; }
+  glm::ivec3 sky() const { return at(0, 0); }
+  // Where the pixel sees the card away from its rim (a fortieth of its side), none elsewhere.
+  std::optional<glm::vec2> uv(int x, int y) const {
+    const auto p = pixel_on_plane(camera, static_cast<float>(width) / height, x, y, width, height, 0.0f, true);
+    if (!p) return std::nullopt;
+    const glm::vec2 uv((p->x + 1.0f) / 2.0f, 1.0f - p->y / 2.0f);
+    if (glm::any(glm::lessThan(uv, glm::vec2(0.025f))) || glm::any(glm::greaterThan(uv, glm::vec2(0.975f)))) return std::nullopt;
+    return uv;
+  }
+};
+
+FacingCard facing_card(const TexturedCard& card) {
   const std::unique_ptr<GlContext> context = create_headless_context("egl");
   const Scene scene = card_scene(R"({"position": [0, 1, 4], "target": [0, 1, 0], "fov_y_deg": 40})",
-                                 R"({"type": "directional", "direction": [0, -0.3, -1]})", "[1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]", false);
+                                 R"({"type": "directional", "direction": [0, -0.3, -1]})", "[1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]", false,
+                                 card);
   RenderSettings settings;
-  settings.width = 320;
-  settings.height = 240;
+  settings.width = FacingCard::width;
+  settings.height = FacingCard::height;
   settings.method = shadow::Method::none;
   Renderer renderer(scene, settings);
   renderer.render(scene.camera, scene.lights[0]);
-  const Image8 color = renderer.frame().read_color();
-  const glm::ivec3 sky(color.at(0, 0, 0), color.at(0, 0, 1), color.at(0, 0, 2));
+  return {renderer.frame().read_color(), scene.camera};
+}
+
+// Where the mask keeps the card the pixel has the checker square's colour (red or blue as the lit
+// colour's strongest channel, by a margin: the light adds some white), where it cuts the card away
+// the sky shows.
+TEST(SurfaceTexture, APolygonShowsItsTexturesColoursAndTheSkyWhereTheMaskCutsItAway) {
+  const FacingCard view = facing_card(textured_card());
   std::size_t red = 0, blue = 0, cut = 0, wrong = 0;
-  for (int y = 0; y < settings.height; ++y) {
-    for (int x = 0; x < settings.width; ++x) {
-      const auto p = pixel_on_plane(scene.camera, 320.0f / 240.0f, x, y, settings.width, settings.height, 0.0f, true);
-      if (!p || std::abs(p->x) > 0.95f || p->y < 0.05f || p->y > 1.95f) continue;  // off the card, or at its rim
-      const glm::vec2 uv((p->x + 1.0f) / 2.0f, 1.0f - p->y / 2.0f);
-      if (distance_to_mask_edge(uv) < 0.02f || distance_to_checker_edge(uv) < 0.02f) continue;
-      const glm::ivec3 c(color.at(x, y, 0), color.at(x, y, 1), color.at(x, y, 2));
-      if (!card_keeps(uv)) {
+  for (int y = 0; y < FacingCard::height; ++y) {
+    for (int x = 0; x < FacingCard::width; ++x) {
+      const std::optional<glm::vec2> uv = view.uv(x, y);
+      if (!uv || distance_to_mask_edge(*uv) < 0.02f || distance_to_checker_edge(*uv) < 0.02f) continue;
+      const glm::ivec3 c = view.at(x, y);
+      if (!card_keeps(*uv)) {
         ++cut;
-        wrong += c != sky;
-      } else if (card_color(uv).r > 0.5f) {
+        wrong += c != view.sky();
+      } else if (card_color(*uv).r > 0.5f) {
         ++red;
         wrong += !(c.r > c.g + 60 && c.r > c.b + 60);
       } else {
@@ -79,30 +99,44 @@ TEST(SurfaceTexture, APolygonShowsItsTexturesColoursAndTheSkyWhereTheMaskCutsItA
   EXPECT_LE(wrong, (red + blue + cut) / 200);
 }
 
-// The card close up (about 2.6 pixels a texel) with a nearest sampler: a pixel within a fifth of a
-// texel of the edge between two checker squares shows its own square's colour, not a blend.
+// With vertex colours whose alpha fades from 1 on the card's left edge to 0 on its right, the
+// polygon keeps the disc's left half (u < 0.5), where the texture's alpha × the interpolated
+// vertex alpha reaches the cutoff, and shows the sky in its right half.
+TEST(SurfaceTexture, TheVertexColoursAlphaCutsThePolygonAsTheMask) {
+  const FacingCard view = facing_card(textured_card_fading_to_the_right());
+  std::size_t left = 0, right = 0, wrong = 0;
+  for (int y = 0; y < FacingCard::height; ++y) {
+    for (int x = 0; x < FacingCard::width; ++x) {
+      const std::optional<glm::vec2> uv = view.uv(x, y);
+      if (!uv || !card_keeps(*uv) || distance_to_mask_edge(*uv) < 0.02f || std::abs(uv->x - 0.5f) < 0.02f) continue;
+      const bool shows_sky = view.at(x, y) == view.sky();
+      if (uv->x < 0.5f) {
+        ++left;
+        wrong += shows_sky;
+      } else {
+        ++right;
+        wrong += !shows_sky;
+      }
+    }
+  }
+  std::cout << left << " pixels left of the cut, " << right << " right of it; " << wrong << " wrong\n";
+  EXPECT_GT(left, 2000u);
+  EXPECT_GT(right, 2000u);
+  EXPECT_LE(wrong, (left + right) / 200);
+}
+
+// With a nearest sampler, magnified, a pixel within a fifth of a texel of the edge between two
+// checker squares shows its own square's colour, not a blend.
 TEST(SurfaceTexture, ANearestTextureMagnifiedShowsEachTexelFlat) {
-  const std::unique_ptr<GlContext> context = create_headless_context("egl");
-  const Scene scene = card_scene(R"({"position": [0, 1, 4], "target": [0, 1, 0], "fov_y_deg": 40})",
-                                 R"({"type": "directional", "direction": [0, -0.3, -1]})", "[1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]", false,
-                                 9728);
-  RenderSettings settings;
-  settings.width = 320;
-  settings.height = 240;
-  settings.method = shadow::Method::none;
-  Renderer renderer(scene, settings);
-  renderer.render(scene.camera, scene.lights[0]);
-  const Image8 color = renderer.frame().read_color();
+  const FacingCard view = facing_card(textured_card("MASK", 9728));
   std::size_t checked = 0, blended = 0;
-  for (int y = 0; y < settings.height; ++y) {
-    for (int x = 0; x < settings.width; ++x) {
-      const auto p = pixel_on_plane(scene.camera, 320.0f / 240.0f, x, y, settings.width, settings.height, 0.0f, true);
-      if (!p || std::abs(p->x) > 0.95f || p->y < 0.05f || p->y > 1.95f) continue;
-      const glm::vec2 uv((p->x + 1.0f) / 2.0f, 1.0f - p->y / 2.0f);
-      if (!card_keeps(uv) || distance_to_mask_edge(uv) < 0.02f || distance_to_checker_edge(uv) > 0.2f / card_texels) continue;
-      const glm::ivec3 c(color.at(x, y, 0), color.at(x, y, 1), color.at(x, y, 2));
+  for (int y = 0; y < FacingCard::height; ++y) {
+    for (int x = 0; x < FacingCard::width; ++x) {
+      const std::optional<glm::vec2> uv = view.uv(x, y);
+      if (!uv || !card_keeps(*uv) || distance_to_mask_edge(*uv) < 0.02f || distance_to_checker_edge(*uv) > 0.2f / card_texels) continue;
+      const glm::ivec3 c = view.at(x, y);
       ++checked;
-      blended += card_color(uv).r > 0.5f ? !(c.r > c.b + 60) : !(c.b > c.r + 60);
+      blended += card_color(*uv).r > 0.5f ? !(c.r > c.b + 60) : !(c.b > c.r + 60);
     }
   }
   std::cout << checked << " pixels beside a checker edge, " << blended << " of them blended\n";

@@ -79,19 +79,23 @@ std::string card_geometry() {
 }
 
 // The card's glTF JSON: `buffer` and `image` as JSON objects, bufferView 4 free for an image.
+// With `colours`, vertex colours (COLOR_0, RGBA floats) in bufferView 4 after the geometry.
 std::string card_json(const std::string& buffer, const std::string& image, const std::string& extra_view,
-                      const std::string& alpha_mode, int mag_filter = 9729) {
+                      const std::string& alpha_mode, int mag_filter = 9729, bool colours = false) {
+  const std::string colour_view = colours ? R"(, {"buffer": 0, "byteOffset": 140, "byteLength": 64})" : "";
+  const std::string colour_accessor = colours ? R"(, {"bufferView": 4, "componentType": 5126, "count": 4, "type": "VEC4"})" : "";
+  const std::string colour_attribute = colours ? R"(, "COLOR_0": 4)" : "";
   return R"({"asset": {"version": "2.0"}, "buffers": [)" + buffer + R"(],
     "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 48},
-                    {"buffer": 0, "byteOffset": 96, "byteLength": 32}, {"buffer": 0, "byteOffset": 128, "byteLength": 12})" + extra_view + R"(],
+                    {"buffer": 0, "byteOffset": 96, "byteLength": 32}, {"buffer": 0, "byteOffset": 128, "byteLength": 12})" + extra_view + colour_view + R"(],
     "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, 0, 0], "max": [1, 2, 0]},
                   {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
                   {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
-                  {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+                  {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"})" + colour_accessor + R"(],
     "images": [)" + image + R"(], "samplers": [{"wrapS": 33071, "wrapT": 33071, "magFilter": )" + std::to_string(mag_filter) + R"(}],
     "textures": [{"source": 0, "sampler": 0}],
     "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}, "alphaMode": ")" + alpha_mode + R"(", "doubleSided": true}],
-    "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3, "material": 0}]}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2)" + colour_attribute + R"(}, "indices": 3, "material": 0}]}],
     "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
 }
 
@@ -102,6 +106,13 @@ std::string little_endian(std::uint32_t v) { return std::string(reinterpret_cast
 TexturedCard textured_card(const std::string& alpha_mode, int mag_filter) {
   const std::string gltf = card_json(R"({"uri": "card.bin", "byteLength": 140})", R"({"uri": "leaf.png"})", "", alpha_mode, mag_filter);
   return {{{"card.gltf", gltf}, {"card.bin", card_geometry()}, {"leaf.png", png_of(card_texels_rgba(), card_texels)}}};
+}
+
+TexturedCard textured_card_fading_to_the_right() {
+  std::string bin = card_geometry();
+  append(bin, std::vector<float>{1, 1, 1, 1, 1, 1, 1, 0, 1, 1, 1, 0, 1, 1, 1, 1});  // alpha 1 at x = -1, 0 at x = 1
+  const std::string gltf = card_json(R"({"uri": "card.bin", "byteLength": 204})", R"({"uri": "leaf.png"})", "", "MASK", 9729, true);
+  return {{{"card.gltf", gltf}, {"card.bin", bin}, {"leaf.png", png_of(card_texels_rgba(), card_texels)}}};
 }
 
 TexturedCard textured_card_glb_with_jpeg() {

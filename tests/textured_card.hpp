@@ -19,6 +19,9 @@ struct TexturedCard {
 
 // `alpha_mode` "MASK", "BLEND" or "OPAQUE"; `mag_filter` the sampler's (GL_LINEAR or GL_NEAREST).
 TexturedCard textured_card(const std::string& alpha_mode = "MASK", int mag_filter = 9729);
+// The card with vertex colours (COLOR_0) whose alpha is 1 on its left edge (x = -1) and 0 on its
+// right (x = 1): with the mask's cutoff 0.5 it keeps the disc's left half.
+TexturedCard textured_card_fading_to_the_right();
 // The same card in one .glb file ("card.glb") whose buffer holds the image as JPEG (no alpha:
 // opaque).
 TexturedCard textured_card_glb_with_jpeg();

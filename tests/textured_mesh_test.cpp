@@ -120,6 +120,23 @@ TEST(TexturedSurfaceSamples, LieOnlyWhereTheMaskKeepsTheCardAndSpreadOverTheKept
   EXPECT_NEAR(static_cast<double>(inner) / samples.size(), 0.5, 0.02) << "half the disc's area, half its points";
 }
 
+// The vertex colours' alpha, interpolated, scales the texture's before the cutoff (glTF): 1 × (1 -
+// u) ≥ 0.5 keeps the disc's left half, u ≤ 0.5. Interpolating the cutoff over the alpha instead
+// would keep only u ≤ 1/3.
+TEST(TexturedSurfaceSamples, TheVertexColoursAlphaEntersTheMask) {
+  const pointgen::TriangleMesh mesh = pointgen::load_mesh_file("card.gltf", textured_card_fading_to_the_right().read());
+  const float half_disc = 3.14159265f * card_disc_radius * card_disc_radius * 2.0f;
+  EXPECT_NEAR(pointgen::surface_area(mesh), half_disc, 0.03f * half_disc);
+  std::size_t near_the_cut = 0;
+  for (const pointgen::SurfaceSample& s : pointgen::sample_surface(mesh, 10000, 7)) {
+    const glm::vec2 uv = card_uv(s.position);
+    ASSERT_TRUE(card_keeps(uv) || distance_to_mask_edge(uv) < texel) << uv.x << ", " << uv.y;
+    ASSERT_LE(uv.x, 0.5f + 1e-4f) << "right of the cut";
+    near_the_cut += uv.x > 0.45f;
+  }
+  EXPECT_GT(near_the_cut, 300u) << "up to the cut at u = 0.5";
+}
+
 TEST(TexturedSurfaceSamples, TakeTheirColourFromTheTexture) {
   const pointgen::TriangleMesh mesh = pointgen::load_mesh_file("card.gltf", textured_card("OPAQUE").read());
   EXPECT_NEAR(pointgen::surface_area(mesh), 4.0f, 1e-4f) << "no mask: the whole card";

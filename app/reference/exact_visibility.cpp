@@ -24,12 +24,8 @@ void pass_masked_away(const RTCFilterFunctionNArguments* args) {
   const auto& mesh = *static_cast<const pointgen::TriangleMesh*>(args->geometryUserPtr);
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] != -1) continue;
-    const float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
     const std::size_t t = 3 * static_cast<std::size_t>(RTCHitN_primID(args->hit, args->N, i));
-    const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
-    const glm::vec2 uv = (1.0f - u - v) * mesh.texcoords[a] + u * mesh.texcoords[b] + v * mesh.texcoords[c];
-    const pointgen::SurfaceMaterial& material = mesh.materials[mesh.vertex_materials[a]];
-    if (!material.keeps(material.texel(uv))) args->valid[i] = 0;
+    if (!mesh.kept_texel(t, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i))) args->valid[i] = 0;
   }
 }
 

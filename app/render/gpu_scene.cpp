@@ -133,8 +133,8 @@ void GpuScene::gather_point_meshes() {
   glNamedBufferStorage(chosen_->vertices.name(), static_cast<GLsizeiptr>(std::max(point_mesh_vertices_, 1)) * sizeof(Vertex), nullptr, 0);
   glNamedBufferStorage(chosen_->indices.name(), static_cast<GLsizeiptr>(std::max(point_mesh_indices_, 1)) * sizeof(GLuint), nullptr, 0);
   if (textures_.any()) {
-    // Zeros where a point mesh has no materials: no texture, no mask.
-    const std::vector<glm::vec4> none(static_cast<std::size_t>(std::max(point_mesh_vertices_, 1)), glm::vec4(0.0f));
+    // Where a point mesh has no materials: no texture (code 0), no mask (keep scale -1).
+    const std::vector<glm::vec4> none(static_cast<std::size_t>(std::max(point_mesh_vertices_, 1)), glm::vec4(0.0f, 0.0f, 0.0f, -1.0f));
     gl::store(chosen_->surfaces.emplace(), none);
   }
   for (std::size_t m = 0; m < meshes_.size(); ++m) {

@@ -41,12 +41,6 @@ void resize_nearest(const pointgen::SurfaceTexture& texture, int side, std::vect
   }
 }
 
-// The alpha a texel needs for the mask to keep it: texture alpha × the material's alpha ≥ cutoff.
-float alpha_threshold(const pointgen::SurfaceMaterial& material) {
-  if (!material.masked()) return 0.0f;
-  return material.alpha > 0.0f ? std::min(material.alpha_cutoff / material.alpha, 2.0f) : 2.0f;
-}
-
 }  // namespace
 
 SurfaceTextures::SurfaceTextures(const std::vector<pointgen::TriangleMesh>& meshes) {
@@ -90,7 +84,7 @@ SurfaceTextures::SurfaceTextures(const std::vector<pointgen::TriangleMesh>& mesh
 }
 
 std::vector<glm::vec4> SurfaceTextures::vertex_surfaces(const pointgen::TriangleMesh& mesh) const {
-  std::vector<float> codes, thresholds;
+  std::vector<float> codes;
   for (const pointgen::SurfaceMaterial& material : mesh.materials) {
     int code = 0;
     if (material.texture) {
@@ -99,13 +93,12 @@ std::vector<glm::vec4> SurfaceTextures::vertex_surfaces(const pointgen::Triangle
              (texture.magnify == pointgen::SurfaceTexture::Filter::nearest ? nearest_code : 0);
     }
     codes.push_back(static_cast<float>(code));
-    thresholds.push_back(alpha_threshold(material));
   }
   std::vector<glm::vec4> surfaces;
   surfaces.reserve(mesh.positions.size());
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     const std::uint32_t m = mesh.vertex_materials[v];
-    surfaces.emplace_back(mesh.texcoords[v], codes[m], thresholds[m]);
+    surfaces.emplace_back(mesh.texcoords[v], codes[m], mesh.materials[m].keep_scale(mesh.alphas[v]));
   }
   return surfaces;
 }

@@ -18,7 +18,7 @@ class SurfaceTextures {
   // the SURFACE_TEXTURES variant.
   bool any() const { return any_; }
   // Per vertex of `mesh` (one with materials): texture coordinate, then the code of its material's
-  // texture layer and wrap modes, then the alpha under which its mask cuts the surface away.
+  // texture layer and wrap modes, then its mask's keep scale (SurfaceMaterial::keep_scale).
   std::vector<glm::vec4> vertex_surfaces(const pointgen::TriangleMesh& mesh) const;
   void bind() const;
 

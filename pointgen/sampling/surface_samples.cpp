@@ -67,14 +67,9 @@ class HaltonPlaces {
     const std::uint32_t a = mesh_.indices[t], b = mesh_.indices[t + 1], c = mesh_.indices[t + 2];
     const float w = 1.0f - u - v;
     glm::vec3 color = w * mesh_.colors[a] + u * mesh_.colors[b] + v * mesh_.colors[c];
-    if (!mesh_.materials.empty()) {
-      // A triangle has its first vertex's material (glTF primitives do not share vertices).
-      const SurfaceMaterial& material = mesh_.materials[mesh_.vertex_materials[a]];
-      const glm::vec2 uv = w * mesh_.texcoords[a] + u * mesh_.texcoords[b] + v * mesh_.texcoords[c];
-      const glm::vec4 texel = material.texel(uv);
-      if (!material.keeps(texel)) return std::nullopt;
-      color *= glm::vec3(texel);
-    }
+    const std::optional<glm::vec4> texel = mesh_.kept_texel(t, u, v);
+    if (!texel) return std::nullopt;
+    color *= glm::vec3(*texel);
     const glm::vec3 normal = w * mesh_.normals[a] + u * mesh_.normals[b] + v * mesh_.normals[c];
     return SurfaceSample{w * mesh_.positions[a] + u * mesh_.positions[b] + v * mesh_.positions[c],
                          glm::length(normal) > 0.0f ? glm::normalize(normal) : glm::vec3(0, 1, 0), color};
