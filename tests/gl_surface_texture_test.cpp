@@ -144,6 +144,37 @@ TEST(SurfaceTexture, ANearestTextureMagnifiedShowsEachTexelFlat) {
   EXPECT_LE(blended, checked / 100);
 }
 
+// A plain plant near the camera, drawn as polygons, is drawn the same whether or not the scene
+// holds a textured mesh (here out of view, behind the camera): its polygons then take the
+// textured programs, with no texture and no mask of their own.
+TEST(SurfaceTexture, APlainPlantBesideATexturedMeshIsDrawnWhole) {
+  const std::unique_ptr<GlContext> context = create_headless_context("egl");
+  const TexturedCard card = textured_card();
+  const std::string plant = R"({"camera": {"position": [0, 3, 0], "target": [0, 3, -20], "fov_y_deg": 50},
+      "lights": [{"type": "directional", "direction": [0.4, -0.8, -0.3]}],
+      "objects": [{"type": "plant", "species": "beech", "positions": [[0, 0, -9]]})";
+  const std::string behind = R"(, {"type": "mesh", "file": "card.gltf", "transforms": [[1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,30,1]]})";
+  RenderSettings settings;
+  settings.width = 320;
+  settings.height = 240;
+  settings.method = shadow::Method::none;
+  Image8 color[2];
+  std::size_t triangles[2];
+  int i = 0;
+  for (const std::string& json : {plant + "]}", plant + behind + "]}"}) {
+    const Scene scene = load_scene({"plant.json", json, card.read()});
+    Renderer renderer(scene, settings);
+    renderer.render(scene.camera, scene.lights[0]);
+    color[i] = renderer.frame().read_color();
+    triangles[i++] = renderer.stats().triangles;
+  }
+  ASSERT_GT(triangles[0], 1000u) << "the near beech should be polygons";
+  ASSERT_GT(triangles[1], 1000u);
+  std::size_t differ = 0;
+  for (std::size_t k = 0; k < color[0].samples.size(); ++k) differ += color[0].samples[k] != color[1].samples[k];
+  EXPECT_EQ(differ, 0u);
+}
+
 // The card lies flat 1 m above the ground (x and z from -1 to 1), the sun nearly overhead: the
 // ground pixels whose ray toward the sun meets the card inside the disc its mask keeps, and those
 // meeting it in the square's rest, away from the card's and the disc's rims.
