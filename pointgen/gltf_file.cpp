@@ -344,6 +344,11 @@ std::string ignored_features(const tinygltf::Model& model) {
                                                             m.pbrMetallicRoughness.baseColorTexture.texCoord != 0; })) {
     ignored.push_back("texture coordinate sets other than TEXCOORD_0 (TEXCOORD_0 used)");
   }
+  if (std::any_of(model.samplers.begin(), model.samplers.end(), [](const tinygltf::Sampler& s) {
+        return s.minFilter != -1 && s.minFilter != TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+      })) {
+    ignored.push_back("minification filters (drawn trilinear)");
+  }
   for (const std::string& extension : model.extensionsUsed) ignored.push_back(extension);
   std::string line;
   for (const std::string& what : ignored) line += (line.empty() ? "" : ", ") + what;

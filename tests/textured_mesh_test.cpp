@@ -92,11 +92,13 @@ TEST(TexturedGltf, AnImageThatCannotBeDecodedIsRefusedByItsIndex) {
 TEST(TexturedGltf, WhatIsNotUsedIsSaidInOneLine) {
   TexturedCard card = textured_card("BLEND");
   card.files["card.gltf"].insert(1, R"("extensionsUsed": ["KHR_texture_transform"], )");
+  std::string& gltf = card.files["card.gltf"];
+  gltf.insert(gltf.find(R"("wrapS")"), R"("minFilter": 9728, )");  // NEAREST, no mipmaps
   std::vector<std::string> notes;
   const pointgen::TriangleMesh mesh =
       pointgen::load_mesh_file("card.gltf", card.read(), [&](const std::string& line) { notes.push_back(line); });
   ASSERT_EQ(notes.size(), 1u);
-  EXPECT_EQ(notes[0], "card.gltf: ignored: alpha blending (drawn as MASK at 0.5), KHR_texture_transform");
+  EXPECT_EQ(notes[0], "card.gltf: ignored: alpha blending (drawn as MASK at 0.5), minification filters (drawn trilinear), KHR_texture_transform");
   EXPECT_FLOAT_EQ(mesh.materials.at(1).alpha_cutoff, 0.5f);
   notes.clear();
   pointgen::load_mesh_file("card.gltf", textured_card().read(), [&](const std::string& line) { notes.push_back(line); });
