@@ -19,7 +19,7 @@ uniform vec3 scene_min, scene_max;  // a box around every caster and receiver
 flat out vec3 corners[3];
 flat out vec2 corner_uvs[3];
 flat out float corner_scales[3];  // the mask's keep scales (surface_texture.glsl)
-flat out float code;                  // surface_texture.glsl's
+flat out float code;              // surface_texture.glsl's
 
 void volume_vertex(vec4 position) {
   gl_Position = position;
