@@ -174,8 +174,7 @@ void FramePass::set_lighting(const gl::Program& program, const shadow::Camera& s
   const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
   set_camera(program, surface_camera);
   gl::set_uniform(program, "view_projection", camera.projection(aspect) * camera.view());
-  gl::set_uniform(program, "camera_forward", surface_camera.forward());
-  gl::set_uniform(program, "pixel_to_world", glm::inverse(surface_camera.projection(aspect) * surface_camera.view()));
+  set_surface_camera(program, surface_camera);
   set_light(program, light, shadow_map);
 }
 
@@ -316,12 +315,15 @@ void FramePass::bind_surfaces(const gl::Program& program) const {
   gl::set_uniform(program, "points_added", points_added_ ? 1 : 0);
 }
 
+void FramePass::set_surface_camera(const gl::Program& program, const shadow::Camera& surface_camera) const {
+  gl::set_uniform(program, "camera_forward", surface_camera.forward());
+  gl::set_uniform(program, "pixel_to_world", glm::inverse(view_projection(surface_camera)));
+}
+
 void FramePass::bind_surfaces_for(const gl::Program& program, const shadow::Camera& camera) const {
-  const glm::mat4 surfaces_view_projection = view_projection(camera);
   gl::set_uniform(program, "camera_position", camera.position);
-  gl::set_uniform(program, "camera_forward", camera.forward());
-  gl::set_uniform(program, "pixel_to_world", glm::inverse(surfaces_view_projection));
   gl::set_uniform(program, "frame_size", glm::vec2(width_, height_));
+  set_surface_camera(program, camera);
   bind_surfaces(program);
 }
 

@@ -124,6 +124,8 @@ class FramePass {
   void set_lighting(const gl::Program& program, const shadow::Camera& surface_camera, const shadow::Camera& camera,
                     const shadow::Light& light, const std::optional<ShadowLookup>& shadow_map) const;
   glm::mat4 view_projection(const shadow::Camera& camera) const;  // world to clip
+  // The uniforms by which surface_position.glsl finds a surface drawn with `surface_camera`.
+  void set_surface_camera(const gl::Program& program, const shadow::Camera& surface_camera) const;
   void set_camera(const gl::Program& program, const shadow::Camera& camera) const;
   // Binds the surfaces' targets and a program for polygons.
   void start_surfaces(const gl::Program& program, const shadow::Camera& camera) const;
