@@ -13,6 +13,7 @@
 #include "app/gl/context.hpp"
 #include "app/scene/scene_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -27,7 +28,8 @@ struct Plan {
   std::vector<double> ks;
   std::vector<int> splats;
   std::vector<int> instance_counts;
-  int warmup, frames, polygon_frames;
+  int polygon_instances_at_most;  // above it the stand is timed with points alone
+  int warmup, frames, slow_frames;  // slow_frames: the polygon runs' and the largest stands', after 1 warm-up
   bool temporal_reference;  // the moving camera's change also with every plant as polygons (two slow frames)
 };
 
@@ -37,8 +39,10 @@ constexpr int reference_samples = 4;
 // k at half, at and at twice the default.
 Plan plan_for(bool quick) {
   const double k = RenderSettings{}.k;
-  if (quick) return {{k}, {2}, {300, 3000}, 1, 3, 1, false};
-  return {{0.5 * k, k, 2.0 * k}, {1, 2}, {1000, 10000, 100000}, 1, 5, 1, true};  // under 10 minutes here
+  if (quick) return {{k}, {2}, {300, 3000}, 300, 1, 3, 1, false};
+  // Under 10 minutes here. A polygon frame of 10^5 plants takes about a minute, of 10^6 ten; a
+  // point frame of 10^7 about half a minute.
+  return {{0.5 * k, k, 2.0 * k}, {1, 2}, {1000, 10000, 100000, 1000000, 10000000}, 100000, 1, 5, 1, true};
 }
 
 // A flat stand of trees and bushes, `count` plants on 250 x 250 m, seen from its edge.
@@ -223,14 +227,18 @@ class DensityBench {
   }
 
  private:
-  // Times the whole scene with points and with polygons (polygon frames are slow: fewer of them).
+  // Times the whole scene with points and, up to the plan's count, with polygons (slow frames:
+  // fewer of them, as of the points of the stands beyond it).
   void time_both_ways(const char* sweep, const Scene& scene, const std::string& scene_name, int count, Progress& progress) {
+    const bool beyond_polygons = count > plan_.polygon_instances_at_most;
     for (const bool points : {true, false}) {
+      if (!points && beyond_polygons) continue;
       RenderSettings settings = base_;
       settings.points = points;
       Renderer renderer(scene, settings);
-      const FrameTiming timing = time_frames(renderer, scene.camera, scene.lights[0], 0.0, points ? plan_.warmup : 1,
-                                             points ? plan_.frames : plan_.polygon_frames);
+      const bool slow = !points || beyond_polygons;
+      const FrameTiming timing = time_frames(renderer, scene.camera, scene.lights[0], 0.0, slow ? 1 : plan_.warmup,
+                                             slow ? plan_.slow_frames : plan_.frames);
       add_timing_run(sweep, scene_name, points, count, timing, renderer.stats());
       progress.step();
     }
@@ -290,7 +298,10 @@ int run_density(const DensityOptions& o) {
   const Plan plan = plan_for(o.run.quick);
   const std::unique_ptr<GlContext> context = create_headless_context(o.run.backend);
   DensityBench bench(o, plan);
-  Progress progress("density: run", plan.ks.size() * plan.splats.size() + 2 + 2 * plan.instance_counts.size() + 2);
+  const auto with_polygons = std::count_if(plan.instance_counts.begin(), plan.instance_counts.end(),
+                                           [&](int count) { return count <= plan.polygon_instances_at_most; });
+  Progress progress("density: run", plan.ks.size() * plan.splats.size() + 2 + plan.instance_counts.size() +
+                                        static_cast<std::size_t>(with_polygons) + 2);
   bench.quality(scene, scene_name, progress);
   bench.speed(scene, scene_name, progress);
   bench.scale(progress);
