@@ -569,6 +569,7 @@ TEST_F(GpuSampling, ItsFrameCoversWhatThePolygonsCover) {
   gpu.render(scene.camera, scene.lights[0]);
   EXPECT_GT(gpu.stats().points, 100000u);
   EXPECT_GT(gpu.stats().triangles, 0u);
+  EXPECT_EQ(gpu.stats().points_left_out, 0u) << "the buffers hold every plant's whole list here";
   const Coverage c = compare(polygons.frame().read_depth(), gpu.frame().read_depth());
   ASSERT_GT(c.polygons, 100000u);
   EXPECT_LT(1.0 - static_cast<double>(c.both) / static_cast<double>(c.polygons), 0.02) << "holes";

@@ -252,7 +252,8 @@ class DensityBench {
     if (count > 0) run.params["instances"] = count;
     run.figures = {{"frame_ms", t.frame_ms}, {"sample_ms", t.sample_ms}, {"host_ms", t.host_ms}, {"shadow_pass_ms", t.shadow_pass_ms},
                    {"frame_pass_ms", t.frame_pass_ms}, {"points", stats.points}, {"triangles", stats.triangles},
-                   {"shadow_points", stats.shadow_points}, {"shadow_triangles", stats.shadow_triangles}};
+                   {"shadow_points", stats.shadow_points}, {"shadow_triangles", stats.shadow_triangles},
+                   {"points_left_out", stats.points_left_out}};
     results_.runs.push_back(run);
   }
 

@@ -82,7 +82,8 @@ nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOp
           {"alias_p95", alias_percentile(renderer.frame().read_aliasing(), renderer.frame().read_visibility(), shadow::p95_fraction)},
           {"sample_ms", s.sample_ms}, {"host_ms", s.host_ms}, {"shadow_pass_ms", s.shadow_pass_ms}, {"frame_pass_ms", s.frame_pass_ms},
           {"points", s.points}, {"triangles", s.triangles}, {"shadow_points", s.shadow_points},
-          {"shadow_triangles", s.shadow_triangles}, {"stage_ms", stage_figures(s)}, {"pages", page_figures(options, s)}};
+          {"shadow_triangles", s.shadow_triangles}, {"points_left_out", s.points_left_out}, {"stage_ms", stage_figures(s)},
+          {"pages", page_figures(options, s)}};
 }
 
 }  // namespace
@@ -193,6 +194,10 @@ int run_capture(const CaptureOptions& o) {
   std::cout << "; the last drew " << renderer.stats().points << " points and " << renderer.stats().triangles << " triangles";
   if (static_cast<int>(todo.size()) < total) std::cout << " (" << total - static_cast<int>(todo.size()) << " already there)";
   std::printf(" in %.1f s on %s\n", seconds, context->description().c_str());
+  if (const std::size_t left_out = renderer.stats().points_left_out; left_out > 0) {
+    std::cout << "capture: the last frame chose " << left_out << " points more than this driver's buffers hold; "
+              << "they were not drawn (fewer plants, or a smaller --shadow-size or --k, draw them all)\n";
+  }
   return 0;
 }
 

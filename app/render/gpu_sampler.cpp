@@ -434,6 +434,7 @@ GpuSampler::Totals GpuSampler::read_totals() const {
   glGetNamedBufferSubData(totals_.name(), 0, sizeof totals, &totals);
   Totals out;
   out.frame_points = totals.frame_points;
+  out.points_left_out = totals.all_points - std::min<std::size_t>(totals.all_points, point_capacity_);
   out.triangles = every_band_drawn_->read_triangles().front();
   out.frame_triangles = part_lists_->frame_triangles(casters_band_.value_or(bands_used_));
   out.layer_triangles = part_lists_->layer_triangles();

@@ -115,6 +115,7 @@ class GpuSampler {
   std::vector<glm::uvec4> read_draws() const;
   struct Totals {
     std::size_t triangles = 0, frame_points = 0, frame_triangles = 0;
+    std::size_t points_left_out = 0;  // chosen beyond what the splat's buffers hold: not drawn
     std::vector<std::size_t> layer_triangles;
     std::size_t selections = 0;
   };

@@ -724,6 +724,7 @@ const FrameStats& Renderer::stats() const {
   if (pending_.gpu_choice) {
     const GpuSampler::Totals chosen = gpu_sampler_->read_totals();
     stats_.points = chosen.frame_points;
+    stats_.points_left_out = chosen.points_left_out;
     stats_.triangles = gpu_scene_.fixed_triangles(view_projection_) + chosen.frame_triangles;
     if (pending_.shadow_views > 0) {
       stats_.shadow_points = map_.points_drawn();

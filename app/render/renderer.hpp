@@ -36,6 +36,9 @@ struct FrameStats {
   std::size_t triangles = 0;  // in the frame pass
   std::size_t shadow_points = 0;  // in the shadow pass
   std::size_t shadow_triangles = 0;  // in the shadow pass, every view's
+  // Points the GPU sampler chose beyond what its buffers hold (a driver's largest buffer): not
+  // drawn, in the frame or the maps. 0 but in scenes of millions of plants on such a driver.
+  std::size_t points_left_out = 0;
   double sample_ms = 0.0;     // CPU: choosing points or polygons, for both passes
   // CPU time of the program's own threads outside GL calls (DESIGN.md), for the whole frame:
   // posing, sampling, setups, uploads' preparation, read-backs' scans.
