@@ -16,17 +16,9 @@ layout(binding = 14) uniform samplerBuffer pyramid_texels;
 float pyramid_at(int level, ivec2 texel) { return texelFetch(pyramid_texels, int(pyramid_index(level, texel))).r; }
 #endif
 
-// Whether every depth drawn over the pixels from `lo` to `hi` (inclusive, level 0's) lies nearer
-// than `depth` (with `or_at`, or at it): read at the lowest level where they span at most 16 × 16
-// texels, up to the first texel that does not. A coarser level's texels reach further past the
-// rectangle, into gaps that show the sky: at most 4 × 4 drew 1.8 times the triangles on a dense
-// stand of 10^5 plants and 1.15 times on the ecosystem's default view, and its frames took longer
-// on llvmpipe (docs/benchmarks.md); 32 × 32 saves a few percent more.
-bool all_nearer(ivec2 lo, ivec2 hi, float depth, bool or_at) {
-  lo = clamp(lo, ivec2(0), pyramid_size[0] - 1);
-  hi = clamp(hi, ivec2(0), pyramid_size[0] - 1);
-  int level = 0;
-  while (level + 1 < pyramid_levels && any(greaterThan((hi >> level) - (lo >> level), ivec2(15)))) ++level;
+// Whether every texel of `level` over the pixels from `lo` to `hi` (level 0's) lies nearer than
+// `depth` (with `or_at`, or at it), read up to the first that does not.
+bool all_nearer_at(int level, ivec2 lo, ivec2 hi, float depth, bool or_at) {
   ivec2 a = lo >> level, b = hi >> level;
   for (int y = a.y; y <= b.y; ++y) {
     for (int x = a.x; x <= b.x; ++x) {
@@ -35,6 +27,25 @@ bool all_nearer(ivec2 lo, ivec2 hi, float depth, bool or_at) {
     }
   }
   return true;
+}
+
+// Whether every depth drawn over the pixels from `lo` to `hi` (inclusive, level 0's) lies nearer
+// than `depth` (with `or_at`, or at it): the answer of the lowest level where they span at most
+// 16 × 16 texels. A coarser level's texels reach further past the rectangle, into gaps that show
+// the sky: at most 4 × 4 drew 1.8 times the triangles on a dense stand of 10^5 plants and 1.15
+// times on the ecosystem's default view, and its frames took longer on llvmpipe
+// (docs/benchmarks.md); 32 × 32 saves a few percent more. But a texel holds the farthest of those
+// below it, so where the lowest level at which they span at most 2 × 2 says "all nearer", so would
+// that one: a plant hidden behind a closed canopy is known in four reads instead of up to 256.
+bool all_nearer(ivec2 lo, ivec2 hi, float depth, bool or_at) {
+  lo = clamp(lo, ivec2(0), pyramid_size[0] - 1);
+  hi = clamp(hi, ivec2(0), pyramid_size[0] - 1);
+  int level = 0;
+  while (level + 1 < pyramid_levels && any(greaterThan((hi >> level) - (lo >> level), ivec2(15)))) ++level;
+  int coarse = level;
+  while (coarse + 1 < pyramid_levels && any(greaterThan((hi >> coarse) - (lo >> coarse), ivec2(1)))) ++coarse;
+  if (coarse > level && all_nearer_at(coarse, lo, hi, depth, or_at)) return true;
+  return all_nearer_at(level, lo, hi, depth, or_at);
 }
 
 // The pyramid's tiles of tile_pixels × tile_pixels pixels, a flag each, rows from the bottom, that
