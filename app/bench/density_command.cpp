@@ -40,8 +40,8 @@ constexpr int reference_samples = 4;
 Plan plan_for(bool quick) {
   const double k = RenderSettings{}.k;
   if (quick) return {{k}, {2}, {300, 3000}, 300, 1, 3, 1, false};
-  // Under 10 minutes here. A polygon frame of 10^5 plants takes about a minute, of 10^6 ten; a
-  // point frame of 10^7 about half a minute.
+  // Under 10 minutes here. A polygon frame of 10^5 plants takes over a minute (one of 10^6 would
+  // take ten); a point frame of 10^7 about 15 s.
   return {{0.5 * k, k, 2.0 * k}, {1, 2}, {1000, 10000, 100000, 1000000, 10000000}, 100000, 1, 5, 1, true};
 }
 
@@ -227,8 +227,8 @@ class DensityBench {
   }
 
  private:
-  // Times the whole scene with points and, up to the plan's count, with polygons (slow frames:
-  // fewer of them, as of the points of the stands beyond it).
+  // Times the whole scene with points and, up to the plan's count, with polygons. Polygon frames,
+  // and the point frames of the stands beyond that count, are slow: fewer of them.
   void time_both_ways(const char* sweep, const Scene& scene, const std::string& scene_name, int count, Progress& progress) {
     const bool beyond_polygons = count > plan_.polygon_instances_at_most;
     for (const bool points : {true, false}) {
