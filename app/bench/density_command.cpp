@@ -31,6 +31,8 @@ struct Plan {
   int polygon_instances_at_most;  // above it the stand is timed with points alone
   int warmup, frames, slow_frames;  // slow_frames: the polygon runs' and the largest stands', after 1 warm-up
   bool temporal_reference;  // the moving camera's change also with every plant as polygons (two slow frames)
+
+  bool timed_as_polygons(int instances) const { return instances <= polygon_instances_at_most; }
 };
 
 // The reference of the quality runs: the polygons at this many samples a pixel each way.
@@ -230,13 +232,13 @@ class DensityBench {
   // Times the whole scene with points and, up to the plan's count, with polygons. Polygon frames,
   // and the point frames of the stands beyond that count, are slow: fewer of them.
   void time_both_ways(const char* sweep, const Scene& scene, const std::string& scene_name, int count, Progress& progress) {
-    const bool beyond_polygons = count > plan_.polygon_instances_at_most;
+    const bool with_polygons = plan_.timed_as_polygons(count);
     for (const bool points : {true, false}) {
-      if (!points && beyond_polygons) continue;
+      if (!points && !with_polygons) continue;
       RenderSettings settings = base_;
       settings.points = points;
       Renderer renderer(scene, settings);
-      const bool slow = !points || beyond_polygons;
+      const bool slow = !points || !with_polygons;
       const FrameTiming timing = time_frames(renderer, scene.camera, scene.lights[0], 0.0, slow ? 1 : plan_.warmup,
                                              slow ? plan_.slow_frames : plan_.frames);
       add_timing_run(sweep, scene_name, points, count, timing, renderer.stats());
@@ -299,8 +301,7 @@ int run_density(const DensityOptions& o) {
   const Plan plan = plan_for(o.run.quick);
   const std::unique_ptr<GlContext> context = create_headless_context(o.run.backend);
   DensityBench bench(o, plan);
-  const auto with_polygons = std::count_if(plan.instance_counts.begin(), plan.instance_counts.end(),
-                                           [&](int count) { return count <= plan.polygon_instances_at_most; });
+  const auto with_polygons = std::ranges::count_if(plan.instance_counts, [&](int count) { return plan.timed_as_polygons(count); });
   Progress progress("density: run", plan.ks.size() * plan.splats.size() + 2 + plan.instance_counts.size() +
                                         static_cast<std::size_t>(with_polygons) + 2);
   bench.quality(scene, scene_name, progress);
