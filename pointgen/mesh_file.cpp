@@ -29,7 +29,7 @@ void check_mesh(const std::string& path, const TriangleMesh& mesh) {
 
 TriangleMesh load_mesh_file(const std::string& path, const ReadFile& read, const Note& note) {
   const std::optional<std::string> bytes = read(path);
-  if (!bytes) throw FileError(path, "no such file (or not a readable one)");
+  if (!bytes) throw FileError(path, "no such file");
   // OpenMesh reserves for counts an empty file never gave: it is refused before any reader sees it.
   if (bytes->find_first_not_of(" \t\r\n") == std::string::npos) throw FileError(path, "is empty");
   const std::string ext = lower_extension(path);

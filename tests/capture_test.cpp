@@ -509,6 +509,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"shadowmap_without_map", "", {"--method", "volumes", "--aov", "color,shadowmap"}, {"--aov", "volumes"}},
         BadInput{"unknown_aov", "", {"--aov", "color,normals"}, {"--aov", "normals"}},
         BadInput{"unknown_scene", "", {"--scene", "no-such-scene"}, {"no-such-scene", "courtyard"}},
+        BadInput{"scene_is_a_device", "", {"--scene", "/dev/zero"}, {"/dev/zero: not a regular file (a character device)"}},
+        BadInput{"path_is_a_device", "", {"--path", "/dev/zero"}, {"/dev/zero: not a regular file (a character device)"}},
         BadInput{"light_index", "", {"--scene", "courtyard", "--light", "7"}, {"--light"}},
         BadInput{"huge_shadow_map", "", {"--shadow-size", "100000"}, {"--shadow-size"}},
         BadInput{"unknown_option", "", {"--colour"}, {"--colour"}},

@@ -1,9 +1,12 @@
 // Mesh files through OpenMesh: the three formats load the same tetrahedron; counts that cannot be
 // right are refused before OpenMesh reserves memory for them.
 #include "pointgen/file_error.hpp"
+#include "pointgen/input_file.hpp"
 #include "pointgen/mesh_file.hpp"
+#include "test_support.hpp"
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -112,7 +115,7 @@ TEST(MeshFile, UnknownFormatAndMissingFileAreNamed) {
     pointgen::load_mesh_file("gone.obj", [](const std::string&) { return std::nullopt; });
     ADD_FAILURE();
   } catch (const pointgen::FileError& e) {
-    EXPECT_EQ(std::string(e.what()), "gone.obj: no such file (or not a readable one)");
+    EXPECT_EQ(std::string(e.what()), "gone.obj: no such file");
   }
 }
 
@@ -195,6 +198,32 @@ TEST(GltfFile, DeclaredCountsAreCheckedAgainstTheBufferBeforeAnythingIsAllocated
                                       R"("componentType": 5126, "count": )" + huge +
                                           R"(, "sparse": {"count": 1, "indices": {"bufferView": 0, "componentType": 5125}, "values": {"bufferView": 0}})");
   expect_refused_within_memory(sparse, "declares more elements than the file has bytes");
+}
+
+// What read_input_file says of a path; "" when it reads it.
+std::string failure_of(const std::filesystem::path& path) {
+  try {
+    pointgen::read_input_file(path);
+  } catch (const pointgen::FileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(InputFile, OnlyARegularFileWithinTheBoundIsReadAndAnythingElseIsRefusedByName) {
+  const ecoview::test::TempDir dir;
+  ecoview::test::write_text(dir / "a.obj", obj_tetrahedron);
+  EXPECT_EQ(pointgen::read_input_file(dir / "a.obj"), std::optional<std::string>(obj_tetrahedron));
+  EXPECT_EQ(pointgen::read_input_file(dir / "gone.obj"), std::nullopt);
+  EXPECT_EQ(failure_of(dir.path()), dir.path().string() + ": not a regular file (a folder)");
+  EXPECT_EQ(failure_of("/dev/zero"), "/dev/zero: not a regular file (a character device)");
+  // A pipe nobody writes to: opening it to read would wait for a writer.
+  ASSERT_EQ(::mkfifo((dir / "pipe").c_str(), 0600), 0);
+  EXPECT_EQ(failure_of(dir / "pipe"), (dir / "pipe").string() + ": not a regular file (a pipe)");
+  // A sparse file one byte past the bound: refused by its size, before anything is allocated.
+  ecoview::test::write_text(dir / "huge.bin", "");
+  std::filesystem::resize_file(dir / "huge.bin", pointgen::max_input_file_bytes + 1);
+  EXPECT_NE(failure_of(dir / "huge.bin").find("huge.bin: is 2147483648 bytes, more than the 2 GiB"), std::string::npos);
 }
 
 }  // namespace
