@@ -3,6 +3,7 @@
 #include "pointgen/file_error.hpp"
 #include "pointgen/input_file.hpp"
 #include "pointgen/mesh_file.hpp"
+#include "pointgen/obj_references.hpp"
 #include "test_support.hpp"
 
 #include <sys/resource.h>
@@ -200,6 +201,16 @@ TEST(GltfFile, DeclaredCountsAreCheckedAgainstTheBufferBeforeAnythingIsAllocated
   expect_refused_within_memory(sparse, "declares more elements than the file has bytes");
 }
 
+// What load_mesh_file says of a mesh on disk, read as a scene reads it; "" when it loads.
+std::string disk_failure(const std::filesystem::path& mesh) {
+  try {
+    pointgen::load_mesh_file(mesh.string(), [](const std::string& path) { return pointgen::read_input_file(path); });
+  } catch (const pointgen::FileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 // What read_input_file says of a path; "" when it reads it.
 std::string failure_of(const std::filesystem::path& path) {
   try {
@@ -224,6 +235,35 @@ TEST(InputFile, OnlyARegularFileWithinTheBoundIsReadAndAnythingElseIsRefusedByNa
   ecoview::test::write_text(dir / "huge.bin", "");
   std::filesystem::resize_file(dir / "huge.bin", pointgen::max_input_file_bytes + 1);
   EXPECT_NE(failure_of(dir / "huge.bin").find("huge.bin: is 2147483648 bytes, more than the 2 GiB"), std::string::npos);
+}
+
+TEST(MeshFile, AMaterialLibraryThatIsNotARegularFileIsRefusedNamingBothFiles) {
+  const ecoview::test::TempDir dir;
+  // OpenMesh would read /dev/zero without end, as one endless line.
+  ecoview::test::write_text(dir / "lamp.obj", std::string("mtllib /dev/zero\n") + obj_tetrahedron);
+  EXPECT_EQ(disk_failure(dir / "lamp.obj"),
+            (dir / "lamp.obj").string() + ": line 1: mtllib: /dev/zero: not a regular file (a character device)");
+  std::filesystem::create_directory(dir / "shades.mtl");
+  ecoview::test::write_text(dir / "shade.obj", std::string(obj_tetrahedron) + "  mtllib  shades.mtl\n");
+  EXPECT_EQ(disk_failure(dir / "shade.obj"),
+            (dir / "shade.obj").string() + ": line 9: mtllib: " + (dir / "shades.mtl").string() + ": not a regular file (a folder)");
+}
+
+TEST(MeshFile, AMissingMaterialLibraryIsNotedAsIgnoredAndTheMeshLoads) {
+  std::vector<std::string> notes;
+  const pointgen::TriangleMesh mesh = pointgen::load_mesh_file(
+      "t.obj", [&](const std::string& path) -> std::optional<std::string> {
+        if (path == "t.obj") return std::string("mtllib t.mtl\n") + obj_tetrahedron;
+        return std::nullopt;
+      },
+      [&](const std::string& line) { notes.push_back(line); });
+  EXPECT_EQ(mesh.triangle_count(), 4u);
+  EXPECT_EQ(notes, std::vector<std::string>{"t.obj: ignored: material libraries (OBJ materials are not used; vertex colours are)"});
+}
+
+TEST(MeshFile, OpenMeshIsGivenNoMaterialLibraryToOpen) {
+  const std::string hidden = pointgen::without_material_libraries("v 0 0 0\n mtllib /dev/zero\nmtllibs x\n\tmtllib\n# mtllib\nmtllib");
+  EXPECT_EQ(hidden, "v 0 0 0\n #tllib /dev/zero\nmtllibs x\n\t#tllib\n# mtllib\n#tllib");
 }
 
 }  // namespace
