@@ -21,18 +21,31 @@ namespace {
 constexpr std::size_t max_elements = std::size_t{1} << 28;
 
 // Routes tinygltf's file access through ReadFile; never expands paths (tinygltf's default runs
-// wordexp on URIs from the file).
+// wordexp on URIs from the file). tinygltf takes a file it cannot read for a missing one, and goes
+// on without a missing image: a file that is there but cannot be used is kept here, to be refused
+// by name once tinygltf is done.
 struct FileAccess {
   const ReadFile* read;
+  std::string refused;  // the first such file, as FileError words it
 
+  std::optional<std::string> bytes_of(const std::string& path) {
+    try {
+      return (*read)(path);
+    } catch (const FileError& e) {
+      if (refused.empty()) refused = e.what();
+      return std::nullopt;
+    }
+  }
   static bool exists(const std::string& path, void* self) {
-    return static_cast<FileAccess*>(self)->read->operator()(path).has_value();
+    return static_cast<FileAccess*>(self)->bytes_of(path).has_value();
   }
   static std::string expand(const std::string& path, void*) { return path; }
   static bool read_whole(std::vector<unsigned char>* out, std::string* err,
                          const std::string& path, void* self) {
-    const std::optional<std::string> bytes = static_cast<FileAccess*>(self)->read->operator()(path);
-    if (!bytes) {
+    auto& access = *static_cast<FileAccess*>(self);
+    const std::optional<std::string> bytes = access.bytes_of(path);
+    if (bytes && bytes->empty() && access.refused.empty()) access.refused = path + ": is empty";
+    if (!bytes || bytes->empty()) {
       if (err) *err += "cannot read '" + path + "'\n";
       return false;
     }
@@ -51,17 +64,22 @@ constexpr std::size_t max_texture_bytes_per_file = std::size_t{1} << 30;
 
 struct ImageDecoding {
   std::size_t bytes = 0;  // decoded so far, in this file
-  int failed_image = -1;
-  std::string problem;
+  std::string problem;  // of the image that failed, naming it (image_field)
 };
+
+// An image as the user finds it in the file: "images[0].uri: bark.png", or "images[0]" when it is
+// embedded (tinygltf keeps the URI only of an image in a file of its own).
+std::string image_field(int index, const tinygltf::Image& image) {
+  const std::string field = "images[" + std::to_string(index) + "]";
+  return image.uri.empty() ? field : field + ".uri: " + image.uri;
+}
 
 bool decode_image(tinygltf::Image* image, const int image_index, std::string* error, std::string*, int, int,
                   const unsigned char* bytes, int size, void* user) {
   auto& decoding = *static_cast<ImageDecoding*>(user);
   const auto refuse = [&](const std::string& problem) {
-    decoding.failed_image = image_index;
-    decoding.problem = problem;
-    if (error) *error += "image " + std::to_string(image_index) + ": " + problem + "\n";
+    decoding.problem = image_field(image_index, *image) + ": " + problem;
+    if (error) *error += decoding.problem + "\n";
     return false;
   };
   int width = 0, height = 0, channels = 0;
@@ -507,7 +525,9 @@ class MeshBuilder {
       if (sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) surface->magnify = SurfaceTexture::Filter::nearest;
     }
     if (surface->rgba.size() != 4 * static_cast<std::size_t>(surface->width) * static_cast<std::size_t>(surface->height)) {
-      reader_.fail("image " + std::to_string(texture.source) + " was not decoded");
+      // Every other way an image can fail stops tinygltf with an error; only a missing file of
+      // its own gets here.
+      reader_.fail(image_field(texture.source, image) + (image.uri.empty() ? ": was not decoded" : ": no such file"));
     }
     return cached = std::move(surface);
   }
@@ -522,7 +542,7 @@ class MeshBuilder {
 }  // namespace
 
 TriangleMesh load_gltf(const std::string& path, const std::string& bytes, const ReadFile& read, const Note& note) {
-  FileAccess access{&read};
+  FileAccess access{&read, {}};
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&FileAccess::exists, &FileAccess::expand, &FileAccess::read_whole,
                          &FileAccess::no_write, &access});
@@ -538,9 +558,8 @@ TriangleMesh load_gltf(const std::string& path, const std::string& bytes, const 
                                            static_cast<unsigned int>(bytes.size()), base_dir)
              : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(),
                                           static_cast<unsigned int>(bytes.size()), base_dir);
-  if (!ok && decoding.failed_image >= 0) {
-    throw FileError(path, "image " + std::to_string(decoding.failed_image) + " " + decoding.problem);
-  }
+  if (!access.refused.empty()) throw FileError(path, "refers to " + access.refused);
+  if (!ok && !decoding.problem.empty()) throw FileError(path, decoding.problem);
   if (!ok) {
     const std::string first_line = error.substr(0, error.find('\n'));
     throw FileError(path, "not a valid glTF file: " + (first_line.empty() ? "parse failed" : first_line));

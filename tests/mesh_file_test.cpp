@@ -266,4 +266,27 @@ TEST(MeshFile, OpenMeshIsGivenNoMaterialLibraryToOpen) {
   EXPECT_EQ(hidden, "v 0 0 0\n #tllib /dev/zero\nmtllibs x\n\t#tllib\n# mtllib\n#tllib");
 }
 
+// A glTF in `dir` whose one buffer is `buffer_uri` and one image `image_uri`, each on disk.
+std::string gltf_referring_to(const std::string& buffer_uri, const std::string& image_uri) {
+  return R"({"asset": {"version": "2.0"}, "buffers": [{"uri": ")" + buffer_uri + R"(", "byteLength": 36}],
+    "images": [{"uri": ")" + image_uri + R"("}]})";
+}
+
+TEST(GltfFile, ABufferOrImageThatIsNotARegularFileIsRefusedNamingBothFiles) {
+  const ecoview::test::TempDir dir;
+  ecoview::test::write_text(dir / "tri.bin", std::string(36, '\0'));
+  ecoview::test::write_text(dir / "leaf.png", "stands for an image");
+  std::filesystem::create_symlink("/dev/zero", dir / "zero.bin");
+  ecoview::test::write_text(dir / "lamp.gltf", gltf_referring_to("zero.bin", "leaf.png"));
+  EXPECT_EQ(disk_failure(dir / "lamp.gltf"),
+            (dir / "lamp.gltf").string() + ": refers to " + (dir / "zero.bin").string() + ": not a regular file (a character device)");
+  std::filesystem::create_directory(dir / "bark.png");
+  ecoview::test::write_text(dir / "tree.gltf", gltf_referring_to("tri.bin", "bark.png"));
+  EXPECT_EQ(disk_failure(dir / "tree.gltf"),
+            (dir / "tree.gltf").string() + ": refers to " + (dir / "bark.png").string() + ": not a regular file (a folder)");
+  ecoview::test::write_text(dir / "empty.png", "");
+  ecoview::test::write_text(dir / "bush.gltf", gltf_referring_to("tri.bin", "empty.png"));
+  EXPECT_EQ(disk_failure(dir / "bush.gltf"), (dir / "bush.gltf").string() + ": refers to " + (dir / "empty.png").string() + ": is empty");
+}
+
 }  // namespace
