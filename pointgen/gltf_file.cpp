@@ -1,6 +1,7 @@
 // glTF 2.0 through tinygltf. tinygltf parses; every index and byte range it hands over is checked
 // here before it is read, so hostile files fail with FileError instead of reading out of bounds.
 #include "pointgen/file_error.hpp"
+#include "pointgen/json_nesting.hpp"
 #include "pointgen/mesh_file.hpp"
 
 #include <stb/stb_image.h>
@@ -539,9 +540,27 @@ class MeshBuilder {
   mutable std::map<int, std::shared_ptr<const SurfaceTexture>> textures_;
 };
 
+// The JSON of a glTF file: all of a .gltf; the first chunk of a .glb (after its 12-byte header
+// and the chunk's length and type), as far as the file holds it. tinygltf checks the rest.
+std::string_view json_text(const std::string& bytes, bool binary) {
+  if (!binary) return bytes;
+  constexpr std::size_t chunk_start = 20;
+  if (bytes.size() < chunk_start) return {};
+  std::uint32_t length = 0;
+  std::memcpy(&length, bytes.data() + 12, sizeof length);
+  return std::string_view(bytes).substr(chunk_start, length);
+}
+
 }  // namespace
 
 TriangleMesh load_gltf(const std::string& path, const std::string& bytes, const ReadFile& read, const Note& note) {
+  const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+  const std::string_view json = json_text(bytes, binary);
+  if (const std::optional<std::size_t> at = json_nests_too_deep(json)) {
+    const auto byte = static_cast<std::size_t>(json.data() - bytes.data()) + *at;
+    throw FileError(path, "JSON nested deeper than " + std::to_string(max_json_nesting) + " levels (at byte " +
+                              std::to_string(byte) + ")");
+  }
   FileAccess access{&read, {}};
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&FileAccess::exists, &FileAccess::expand, &FileAccess::read_whole,
@@ -551,7 +570,6 @@ TriangleMesh load_gltf(const std::string& path, const std::string& bytes, const 
   tinygltf::Model model;
   std::string error, warning;
   const std::string base_dir = std::filesystem::path(path).parent_path().string();
-  const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
   const bool ok =
       binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
                                            reinterpret_cast<const unsigned char*>(bytes.data()),

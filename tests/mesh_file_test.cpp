@@ -2,6 +2,7 @@
 // right are refused before OpenMesh reserves memory for them.
 #include "pointgen/file_error.hpp"
 #include "pointgen/input_file.hpp"
+#include "pointgen/json_nesting.hpp"
 #include "pointgen/mesh_file.hpp"
 #include "pointgen/obj_references.hpp"
 #include "test_support.hpp"
@@ -287,6 +288,49 @@ TEST(GltfFile, ABufferOrImageThatIsNotARegularFileIsRefusedNamingBothFiles) {
   ecoview::test::write_text(dir / "empty.png", "");
   ecoview::test::write_text(dir / "bush.gltf", gltf_referring_to("tri.bin", "empty.png"));
   EXPECT_EQ(disk_failure(dir / "bush.gltf"), (dir / "bush.gltf").string() + ": refers to " + (dir / "empty.png").string() + ": is empty");
+}
+
+// `levels` arrays one inside the next, around a 0.
+std::string nested_arrays(int levels) { return std::string(static_cast<std::size_t>(levels), '[') + "0" + std::string(static_cast<std::size_t>(levels), ']'); }
+
+TEST(JsonNesting, TheFirstBracketPastTheLimitIsFoundOutsideStringsOnly) {
+  EXPECT_EQ(pointgen::json_nests_too_deep(nested_arrays(pointgen::max_json_nesting)), std::nullopt);
+  EXPECT_EQ(pointgen::json_nests_too_deep(nested_arrays(pointgen::max_json_nesting + 1)), std::size_t(pointgen::max_json_nesting));
+  const std::string in_a_string = "{\"a\": \"" + std::string(1000, '[') + "\\\"{\"}";
+  EXPECT_EQ(pointgen::json_nests_too_deep(in_a_string), std::nullopt) << in_a_string;
+  EXPECT_EQ(pointgen::json_nests_too_deep("[" + std::string(300, '{') + "}]"), std::size_t(pointgen::max_json_nesting));
+}
+
+// `levels` objects one inside the next, each {"a": ...}, around a 1.
+std::string nested_objects(int levels) {
+  std::string text;
+  for (int i = 0; i < levels; ++i) text += "{\"a\":";
+  return text + "1" + std::string(static_cast<std::size_t>(levels), '}');
+}
+
+// 100,000 levels in an extension, where tinygltf's recursive reader overflows the stack.
+TEST(GltfFile, JsonNestedTooDeepIsRefusedBeforeTinygltfReadsItInGltfAndGlb) {
+  const std::string gltf = R"({"asset": {"version": "2.0"}, "extensions": {"deep": )" + nested_objects(100000) + "}}";
+  // The root and "extensions" are two levels: the deep value's 255th object opens the 257th.
+  const std::size_t too_deep = gltf.find("{\"a\":") + 254 * std::string("{\"a\":").size();
+  try {
+    load("deep.gltf", gltf);
+    ADD_FAILURE() << "loaded";
+  } catch (const pointgen::FileError& e) {
+    EXPECT_EQ(std::string(e.what()), "deep.gltf: JSON nested deeper than 256 levels (at byte " + std::to_string(too_deep) + ")");
+  }
+  std::string glb = "glTF";
+  const auto append_u32 = [&](std::uint32_t v) { glb.append(reinterpret_cast<const char*>(&v), 4); };
+  append_u32(2);
+  append_u32(static_cast<std::uint32_t>(20 + gltf.size()));
+  append_u32(static_cast<std::uint32_t>(gltf.size()));
+  glb += "JSON" + gltf;
+  try {
+    load("deep.glb", glb);
+    ADD_FAILURE() << "loaded";
+  } catch (const pointgen::FileError& e) {
+    EXPECT_EQ(std::string(e.what()), "deep.glb: JSON nested deeper than 256 levels (at byte " + std::to_string(glb.find(gltf) + too_deep) + ")");
+  }
 }
 
 }  // namespace

@@ -148,6 +148,12 @@ TEST(SceneFileErrors, SyntaxErrorNamesFileAndLine) {
   expect_input_error(with_objects("").substr(0, 40), {"test.json:", "invalid JSON"});  // truncated
 }
 
+TEST(SceneFileErrors, JsonNestedDeeperThan256LevelsIsRefusedAtItsPlace) {
+  // '{' opens the first level, so the 256th '[', at byte 267, opens the 257th: column 268.
+  const std::string deep = "{\"comment\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
+  expect_input_error(deep, {"test.json:1:268: invalid JSON: nested deeper than 256 levels"});
+}
+
 TEST(SceneFileErrors, NaNAndInfinityAreRejected) {
   expect_input_error(R"({"camera": {"position": [0, 8, NaN], "target": [0, 0, 0]}})", {"test.json:1:", "invalid JSON"});
   expect_input_error(R"({"camera": {"position": [0, 8, Infinity], "target": [0, 0, 0]}})", {"test.json:1:"});
