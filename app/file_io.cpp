@@ -10,7 +10,6 @@
 #include <cstring>
 #include <fstream>
 #include <mutex>
-#include <sstream>
 
 namespace ecoview {
 namespace {
@@ -48,17 +47,6 @@ void write_temporary(const std::filesystem::path& temporary, const std::filesyst
 }
 
 }  // namespace
-
-std::optional<std::string> read_file(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return std::move(bytes).str();
-}
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
   const std::lock_guard lock(one_write_at_a_time);

@@ -7,9 +7,6 @@
 
 namespace ecoview {
 
-// The bytes of a regular file, or nothing if there is none or it cannot be read.
-std::optional<std::string> read_file(const std::filesystem::path& path);
-
 // Writes to a temporary name beside `path` (`path` + ".tmp" + the process id) and renames it
 // into place, so `path` is either absent or complete. Throws RuntimeFailure naming the file.
 // One file is in flight at a time; a SIGINT or SIGTERM removes it (remove_temporary_on_signals).

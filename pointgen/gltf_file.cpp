@@ -1,6 +1,7 @@
 // glTF 2.0 through tinygltf. tinygltf parses; every index and byte range it hands over is checked
 // here before it is read, so hostile files fail with FileError instead of reading out of bounds.
 #include "pointgen/file_error.hpp"
+#include "pointgen/json_nesting.hpp"
 #include "pointgen/mesh_file.hpp"
 
 #include <stb/stb_image.h>
@@ -21,18 +22,31 @@ namespace {
 constexpr std::size_t max_elements = std::size_t{1} << 28;
 
 // Routes tinygltf's file access through ReadFile; never expands paths (tinygltf's default runs
-// wordexp on URIs from the file).
+// wordexp on URIs from the file). tinygltf takes a file it cannot read for a missing one, and goes
+// on without a missing image: a file that is there but cannot be used is kept here, to be refused
+// by name once tinygltf is done.
 struct FileAccess {
   const ReadFile* read;
+  std::string refused;  // the first such file, as FileError words it
 
+  std::optional<std::string> bytes_of(const std::string& path) {
+    try {
+      return (*read)(path);
+    } catch (const FileError& e) {
+      if (refused.empty()) refused = e.what();
+      return std::nullopt;
+    }
+  }
   static bool exists(const std::string& path, void* self) {
-    return static_cast<FileAccess*>(self)->read->operator()(path).has_value();
+    return static_cast<FileAccess*>(self)->bytes_of(path).has_value();
   }
   static std::string expand(const std::string& path, void*) { return path; }
   static bool read_whole(std::vector<unsigned char>* out, std::string* err,
                          const std::string& path, void* self) {
-    const std::optional<std::string> bytes = static_cast<FileAccess*>(self)->read->operator()(path);
-    if (!bytes) {
+    auto& access = *static_cast<FileAccess*>(self);
+    const std::optional<std::string> bytes = access.bytes_of(path);
+    if (bytes && bytes->empty() && access.refused.empty()) access.refused = path + ": is empty";
+    if (!bytes || bytes->empty()) {
       if (err) *err += "cannot read '" + path + "'\n";
       return false;
     }
@@ -51,17 +65,22 @@ constexpr std::size_t max_texture_bytes_per_file = std::size_t{1} << 30;
 
 struct ImageDecoding {
   std::size_t bytes = 0;  // decoded so far, in this file
-  int failed_image = -1;
-  std::string problem;
+  std::string problem;  // of the image that failed, naming it (image_field)
 };
+
+// An image as the user finds it in the file: "images[0].uri: bark.png", or "images[0]" when it is
+// embedded (tinygltf keeps the URI only of an image in a file of its own).
+std::string image_field(int index, const tinygltf::Image& image) {
+  const std::string field = "images[" + std::to_string(index) + "]";
+  return image.uri.empty() ? field : field + ".uri: " + image.uri;
+}
 
 bool decode_image(tinygltf::Image* image, const int image_index, std::string* error, std::string*, int, int,
                   const unsigned char* bytes, int size, void* user) {
   auto& decoding = *static_cast<ImageDecoding*>(user);
   const auto refuse = [&](const std::string& problem) {
-    decoding.failed_image = image_index;
-    decoding.problem = problem;
-    if (error) *error += "image " + std::to_string(image_index) + ": " + problem + "\n";
+    decoding.problem = image_field(image_index, *image) + ": " + problem;
+    if (error) *error += decoding.problem + "\n";
     return false;
   };
   int width = 0, height = 0, channels = 0;
@@ -507,7 +526,9 @@ class MeshBuilder {
       if (sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) surface->magnify = SurfaceTexture::Filter::nearest;
     }
     if (surface->rgba.size() != 4 * static_cast<std::size_t>(surface->width) * static_cast<std::size_t>(surface->height)) {
-      reader_.fail("image " + std::to_string(texture.source) + " was not decoded");
+      // Every other way an image can fail stops tinygltf with an error; only a missing file of
+      // its own gets here.
+      reader_.fail(image_field(texture.source, image) + (image.uri.empty() ? ": was not decoded" : ": no such file"));
     }
     return cached = std::move(surface);
   }
@@ -519,10 +540,28 @@ class MeshBuilder {
   mutable std::map<int, std::shared_ptr<const SurfaceTexture>> textures_;
 };
 
+// The JSON of a glTF file: all of a .gltf; the first chunk of a .glb (after its 12-byte header
+// and the chunk's length and type), as far as the file holds it. tinygltf checks the rest.
+std::string_view json_text(const std::string& bytes, bool binary) {
+  if (!binary) return bytes;
+  constexpr std::size_t chunk_start = 20;
+  if (bytes.size() < chunk_start) return {};
+  std::uint32_t length = 0;
+  std::memcpy(&length, bytes.data() + 12, sizeof length);
+  return std::string_view(bytes).substr(chunk_start, length);
+}
+
 }  // namespace
 
 TriangleMesh load_gltf(const std::string& path, const std::string& bytes, const ReadFile& read, const Note& note) {
-  FileAccess access{&read};
+  const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+  const std::string_view json = json_text(bytes, binary);
+  if (const std::optional<std::size_t> at = json_nests_too_deep(json)) {
+    const auto byte = static_cast<std::size_t>(json.data() - bytes.data()) + *at;
+    throw FileError(path, "JSON nested deeper than " + std::to_string(max_json_nesting) + " levels (at byte " +
+                              std::to_string(byte) + ")");
+  }
+  FileAccess access{&read, {}};
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&FileAccess::exists, &FileAccess::expand, &FileAccess::read_whole,
                          &FileAccess::no_write, &access});
@@ -531,16 +570,14 @@ TriangleMesh load_gltf(const std::string& path, const std::string& bytes, const 
   tinygltf::Model model;
   std::string error, warning;
   const std::string base_dir = std::filesystem::path(path).parent_path().string();
-  const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
   const bool ok =
       binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
                                            reinterpret_cast<const unsigned char*>(bytes.data()),
                                            static_cast<unsigned int>(bytes.size()), base_dir)
              : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(),
                                           static_cast<unsigned int>(bytes.size()), base_dir);
-  if (!ok && decoding.failed_image >= 0) {
-    throw FileError(path, "image " + std::to_string(decoding.failed_image) + " " + decoding.problem);
-  }
+  if (!access.refused.empty()) throw FileError(path, "refers to " + access.refused);
+  if (!ok && !decoding.problem.empty()) throw FileError(path, decoding.problem);
   if (!ok) {
     const std::string first_line = error.substr(0, error.find('\n'));
     throw FileError(path, "not a valid glTF file: " + (first_line.empty() ? "parse failed" : first_line));

@@ -1,6 +1,7 @@
 #include "pointgen/mesh_file.hpp"
 
 #include "pointgen/file_error.hpp"
+#include "pointgen/obj_references.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +30,7 @@ void check_mesh(const std::string& path, const TriangleMesh& mesh) {
 
 TriangleMesh load_mesh_file(const std::string& path, const ReadFile& read, const Note& note) {
   const std::optional<std::string> bytes = read(path);
-  if (!bytes) throw FileError(path, "no such file (or not a readable one)");
+  if (!bytes) throw FileError(path, "no such file");
   // OpenMesh reserves for counts an empty file never gave: it is refused before any reader sees it.
   if (bytes->find_first_not_of(" \t\r\n") == std::string::npos) throw FileError(path, "is empty");
   const std::string ext = lower_extension(path);
@@ -37,6 +38,7 @@ TriangleMesh load_mesh_file(const std::string& path, const ReadFile& read, const
   if (ext == ".gltf" || ext == ".glb") {
     mesh = load_gltf(path, *bytes, read, note);
   } else if (ext == ".obj" || ext == ".ply" || ext == ".off") {
+    if (ext == ".obj") check_material_libraries(path, *bytes, read, note);
     mesh = load_openmesh_format(path, *bytes);
   } else {
     throw FileError(path, "unknown mesh format '" + ext + "' (use .gltf, .glb, .obj, .ply or .off)");

@@ -7,7 +7,8 @@
 
 namespace pointgen {
 
-// Returns the bytes of a file, or nothing when it does not exist. Lets one loader read from disk
+// Returns the bytes of a file, or nothing when it does not exist; throws FileError naming the file
+// when it is there but cannot be used (read_input_file's refusals). Lets one loader read from disk
 // and from the resources embedded in the binary alike.
 using ReadFile = std::function<std::optional<std::string>(const std::string& path)>;
 

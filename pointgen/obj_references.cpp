@@ -4,6 +4,8 @@
 #include "pointgen/file_error.hpp"
 
 #include <array>
+#include <cctype>
+#include <filesystem>
 #include <sstream>
 
 namespace pointgen {
@@ -70,6 +72,38 @@ void check_obj_references(const std::string& path, const std::string& bytes) {
     if (keyword != "f") return;
     for (std::string corner; fields >> corner && corner[0] != '#';) check_corner(path, number, corner, total, before);
   });
+}
+
+void check_material_libraries(const std::string& path, const std::string& bytes, const ReadFile& read, const Note& note) {
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  bool named = false;
+  for_each_line(bytes, [&](long long number, const std::string&, const std::string& keyword, std::istringstream& fields) {
+    if (keyword != "mtllib") return;
+    for (std::string library; fields >> library && library[0] != '#';) {
+      named = true;
+      try {
+        read((folder / library).string());
+      } catch (const FileError& refused) {
+        throw FileError(path, "line " + std::to_string(number) + ": mtllib: " + refused.what());
+      }
+    }
+  });
+  if (named && note) note(path + ": ignored: material libraries (OBJ materials are not used; vertex colours are)");
+}
+
+std::string without_material_libraries(std::string bytes) {
+  const std::string keyword = "mtllib";
+  for (std::size_t line = 0; line < bytes.size();) {
+    const std::size_t word = bytes.find_first_not_of(" \t\r\v\f", line);
+    const std::size_t after = word == std::string::npos ? word : word + keyword.size();
+    if (word != std::string::npos && bytes.compare(word, keyword.size(), keyword) == 0 &&
+        (after >= bytes.size() || std::isspace(static_cast<unsigned char>(bytes[after])))) {
+      bytes[word] = '#';
+    }
+    line = bytes.find('\n', line);
+    if (line != std::string::npos) ++line;
+  }
+  return bytes;
 }
 
 }  // namespace pointgen

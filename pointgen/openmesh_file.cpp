@@ -89,7 +89,7 @@ TriangleMesh load_openmesh_format(const std::string& path, const std::string& by
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   check_declared_counts(path, ext, bytes);
   if (ext == ".obj") check_obj_references(path, bytes);
-  std::istringstream stream(bytes);
+  std::istringstream stream(ext == ".obj" ? without_material_libraries(bytes) : bytes);
   bool ok = false;
   {
     const CaughtErrorStreams caught;

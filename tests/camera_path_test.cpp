@@ -49,6 +49,15 @@ TEST(CameraPath, WrittenKeysReadBackExactly) {
   }
 }
 
+TEST(CameraPath, JsonNestedDeeperThan256LevelsIsRefusedAtItsPlace) {
+  try {
+    load_path(std::string(100000, '[') + std::string(100000, ']'));
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "path.json:1:257: invalid JSON: nested deeper than 256 levels");
+  }
+}
+
 TEST(CameraPath, BadKeysAreNamed) {
   auto expect_error = [](const std::string& json, const char* field) {
     try {

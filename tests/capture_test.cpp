@@ -5,6 +5,7 @@
 #include <stb/stb_image.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <regex>
 #include <sstream>
@@ -396,6 +397,35 @@ TEST(Capture, BadMeshFilesGiveOneLineWhateverTheLibrarySays) {
   }
 }
 
+// A mesh whose references would make capture read /dev/zero forever or overflow its stack: each
+// refused within seconds, in one line naming the mesh and the file it refers to.
+TEST(Capture, AMeshReferringToADeviceOrAFolderOrNestedTooDeepIsRefusedAtOnce) {
+  const TempDir dir;
+  write_text(dir / "lamp.obj", "mtllib /dev/zero\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  write_text(dir / "lamp.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "/dev/zero", "byteLength": 36}]})");
+  std::filesystem::create_directory(dir / "bark.png");
+  write_text(dir / "tree.gltf", R"({"asset": {"version": "2.0"}, "images": [{"uri": "bark.png"}]})");
+  std::string deep;  // an object in an object ... 100,000 levels: tinygltf's recursive reader overflows the stack
+  for (int level = 0; level < 100000; ++level) deep += "{\"a\":";
+  deep += "1" + std::string(100000, '}');
+  write_text(dir / "deep.gltf", R"({"asset": {"version": "2.0"}, "extensions": {"deep": )" + deep + "}}");
+  const std::map<std::string, std::string> expected = {
+      {"lamp.obj", "objects[0].file: lamp.obj: line 1: mtllib: /dev/zero: not a regular file (a character device)"},
+      {"lamp.gltf", "objects[0].file: lamp.gltf: refers to /dev/zero: not a regular file (a character device)"},
+      {"tree.gltf", "objects[0].file: tree.gltf: refers to " + (dir / "bark.png").string() + ": not a regular file (a folder)"},
+      {"deep.gltf", "objects[0].file: deep.gltf: JSON nested deeper than 256 levels"}};
+  for (const auto& [mesh, message] : expected) {
+    write_text(dir / "scene.json", R"({"camera": {"position": [0, 8, 12], "target": [0, 0, 0]},
+      "lights": [{"type": "directional", "direction": [0.3, -1, 0.2]}], "objects": [{"type": "mesh", "file": ")" + mesh + R"("}]})");
+    const auto start = std::chrono::steady_clock::now();
+    const CommandResult r = run_ecoview({"capture", "--scene", (dir / "scene.json").string(), "--out", (dir / "out").string()});
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30)) << mesh;
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  }
+}
+
 TEST(CommandLine, UnknownCommandsAndOptionsAreNamedFirst) {
   CommandResult r = run_ecoview({"bogus"});
   EXPECT_EQ(r.exit_code, 2);
@@ -502,6 +532,8 @@ INSTANTIATE_TEST_SUITE_P(
           "lights": [{"type": "directional", "direction": [0, 0, 0]}], "objects": [{"type": "sphere", "center": [0, 1, 0], "radius": 1}]})",
                  {}, {"bad.json", "lights[0].direction"}},
         BadInput{"truncated", good_start, {}, {"bad.json:", "invalid JSON"}},
+        BadInput{"nested_too_deep", "{\"comment\": " + std::string(100000, '[') + std::string(100000, ']') + "}", {},
+                 {"bad.json:1:268: invalid JSON: nested deeper than 256 levels"}},
         BadInput{"wrong_type", good_start + R"({"type": "sphere", "center": [0, 1, 0], "radius": [1]}]})", {}, {"bad.json", "objects[0].radius"}},
         BadInput{"size_zero", "", {"--size", "0x0"}, {"--size"}},
         BadInput{"frames_backwards", "", {"--frames", "5:2"}, {"--frames"}},
@@ -509,6 +541,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"shadowmap_without_map", "", {"--method", "volumes", "--aov", "color,shadowmap"}, {"--aov", "volumes"}},
         BadInput{"unknown_aov", "", {"--aov", "color,normals"}, {"--aov", "normals"}},
         BadInput{"unknown_scene", "", {"--scene", "no-such-scene"}, {"no-such-scene", "courtyard"}},
+        BadInput{"scene_is_a_device", "", {"--scene", "/dev/zero"}, {"/dev/zero: not a regular file (a character device)"}},
+        BadInput{"path_is_a_device", "", {"--path", "/dev/zero"}, {"/dev/zero: not a regular file (a character device)"}},
         BadInput{"light_index", "", {"--scene", "courtyard", "--light", "7"}, {"--light"}},
         BadInput{"huge_shadow_map", "", {"--shadow-size", "100000"}, {"--shadow-size"}},
         BadInput{"unknown_option", "", {"--colour"}, {"--colour"}},

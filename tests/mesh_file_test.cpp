@@ -1,9 +1,14 @@
 // Mesh files through OpenMesh: the three formats load the same tetrahedron; counts that cannot be
 // right are refused before OpenMesh reserves memory for them.
 #include "pointgen/file_error.hpp"
+#include "pointgen/input_file.hpp"
+#include "pointgen/json_nesting.hpp"
 #include "pointgen/mesh_file.hpp"
+#include "pointgen/obj_references.hpp"
+#include "test_support.hpp"
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -112,7 +117,7 @@ TEST(MeshFile, UnknownFormatAndMissingFileAreNamed) {
     pointgen::load_mesh_file("gone.obj", [](const std::string&) { return std::nullopt; });
     ADD_FAILURE();
   } catch (const pointgen::FileError& e) {
-    EXPECT_EQ(std::string(e.what()), "gone.obj: no such file (or not a readable one)");
+    EXPECT_EQ(std::string(e.what()), "gone.obj: no such file");
   }
 }
 
@@ -195,6 +200,137 @@ TEST(GltfFile, DeclaredCountsAreCheckedAgainstTheBufferBeforeAnythingIsAllocated
                                       R"("componentType": 5126, "count": )" + huge +
                                           R"(, "sparse": {"count": 1, "indices": {"bufferView": 0, "componentType": 5125}, "values": {"bufferView": 0}})");
   expect_refused_within_memory(sparse, "declares more elements than the file has bytes");
+}
+
+// What load_mesh_file says of a mesh on disk, read as a scene reads it; "" when it loads.
+std::string disk_failure(const std::filesystem::path& mesh) {
+  try {
+    pointgen::load_mesh_file(mesh.string(), [](const std::string& path) { return pointgen::read_input_file(path); });
+  } catch (const pointgen::FileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// What read_input_file says of a path; "" when it reads it.
+std::string failure_of(const std::filesystem::path& path) {
+  try {
+    pointgen::read_input_file(path);
+  } catch (const pointgen::FileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(InputFile, OnlyARegularFileWithinTheBoundIsReadAndAnythingElseIsRefusedByName) {
+  const ecoview::test::TempDir dir;
+  ecoview::test::write_text(dir / "a.obj", obj_tetrahedron);
+  EXPECT_EQ(pointgen::read_input_file(dir / "a.obj"), std::optional<std::string>(obj_tetrahedron));
+  EXPECT_EQ(pointgen::read_input_file(dir / "gone.obj"), std::nullopt);
+  EXPECT_EQ(failure_of(dir.path()), dir.path().string() + ": not a regular file (a folder)");
+  EXPECT_EQ(failure_of("/dev/zero"), "/dev/zero: not a regular file (a character device)");
+  // A pipe nobody writes to: opening it to read would wait for a writer.
+  ASSERT_EQ(::mkfifo((dir / "pipe").c_str(), 0600), 0);
+  EXPECT_EQ(failure_of(dir / "pipe"), (dir / "pipe").string() + ": not a regular file (a pipe)");
+  // A sparse file one byte past the bound: refused by its size, before anything is allocated.
+  ecoview::test::write_text(dir / "huge.bin", "");
+  std::filesystem::resize_file(dir / "huge.bin", pointgen::max_input_file_bytes + 1);
+  EXPECT_NE(failure_of(dir / "huge.bin").find("huge.bin: is 2147483648 bytes, more than the 2 GiB"), std::string::npos);
+}
+
+TEST(MeshFile, AMaterialLibraryThatIsNotARegularFileIsRefusedNamingBothFiles) {
+  const ecoview::test::TempDir dir;
+  // OpenMesh would read /dev/zero without end, as one endless line.
+  ecoview::test::write_text(dir / "lamp.obj", std::string("mtllib /dev/zero\n") + obj_tetrahedron);
+  EXPECT_EQ(disk_failure(dir / "lamp.obj"),
+            (dir / "lamp.obj").string() + ": line 1: mtllib: /dev/zero: not a regular file (a character device)");
+  std::filesystem::create_directory(dir / "shades.mtl");
+  ecoview::test::write_text(dir / "shade.obj", std::string(obj_tetrahedron) + "  mtllib  shades.mtl\n");
+  EXPECT_EQ(disk_failure(dir / "shade.obj"),
+            (dir / "shade.obj").string() + ": line 9: mtllib: " + (dir / "shades.mtl").string() + ": not a regular file (a folder)");
+}
+
+TEST(MeshFile, AMissingMaterialLibraryIsNotedAsIgnoredAndTheMeshLoads) {
+  std::vector<std::string> notes;
+  const pointgen::TriangleMesh mesh = pointgen::load_mesh_file(
+      "t.obj", [&](const std::string& path) -> std::optional<std::string> {
+        if (path == "t.obj") return std::string("mtllib t.mtl\n") + obj_tetrahedron;
+        return std::nullopt;
+      },
+      [&](const std::string& line) { notes.push_back(line); });
+  EXPECT_EQ(mesh.triangle_count(), 4u);
+  EXPECT_EQ(notes, std::vector<std::string>{"t.obj: ignored: material libraries (OBJ materials are not used; vertex colours are)"});
+}
+
+TEST(MeshFile, OpenMeshIsGivenNoMaterialLibraryToOpen) {
+  const std::string hidden = pointgen::without_material_libraries("v 0 0 0\n mtllib /dev/zero\nmtllibs x\n\tmtllib\n# mtllib\nmtllib");
+  EXPECT_EQ(hidden, "v 0 0 0\n #tllib /dev/zero\nmtllibs x\n\t#tllib\n# mtllib\n#tllib");
+}
+
+// A glTF in `dir` whose one buffer is `buffer_uri` and one image `image_uri`, each on disk.
+std::string gltf_referring_to(const std::string& buffer_uri, const std::string& image_uri) {
+  return R"({"asset": {"version": "2.0"}, "buffers": [{"uri": ")" + buffer_uri + R"(", "byteLength": 36}],
+    "images": [{"uri": ")" + image_uri + R"("}]})";
+}
+
+TEST(GltfFile, ABufferOrImageThatIsNotARegularFileIsRefusedNamingBothFiles) {
+  const ecoview::test::TempDir dir;
+  ecoview::test::write_text(dir / "tri.bin", std::string(36, '\0'));
+  ecoview::test::write_text(dir / "leaf.png", "stands for an image");
+  std::filesystem::create_symlink("/dev/zero", dir / "zero.bin");
+  ecoview::test::write_text(dir / "lamp.gltf", gltf_referring_to("zero.bin", "leaf.png"));
+  EXPECT_EQ(disk_failure(dir / "lamp.gltf"),
+            (dir / "lamp.gltf").string() + ": refers to " + (dir / "zero.bin").string() + ": not a regular file (a character device)");
+  std::filesystem::create_directory(dir / "bark.png");
+  ecoview::test::write_text(dir / "tree.gltf", gltf_referring_to("tri.bin", "bark.png"));
+  EXPECT_EQ(disk_failure(dir / "tree.gltf"),
+            (dir / "tree.gltf").string() + ": refers to " + (dir / "bark.png").string() + ": not a regular file (a folder)");
+  ecoview::test::write_text(dir / "empty.png", "");
+  ecoview::test::write_text(dir / "bush.gltf", gltf_referring_to("tri.bin", "empty.png"));
+  EXPECT_EQ(disk_failure(dir / "bush.gltf"), (dir / "bush.gltf").string() + ": refers to " + (dir / "empty.png").string() + ": is empty");
+}
+
+// `levels` arrays one inside the next, around a 0.
+std::string nested_arrays(int levels) { return std::string(static_cast<std::size_t>(levels), '[') + "0" + std::string(static_cast<std::size_t>(levels), ']'); }
+
+TEST(JsonNesting, TheFirstBracketPastTheLimitIsFoundOutsideStringsOnly) {
+  EXPECT_EQ(pointgen::json_nests_too_deep(nested_arrays(pointgen::max_json_nesting)), std::nullopt);
+  EXPECT_EQ(pointgen::json_nests_too_deep(nested_arrays(pointgen::max_json_nesting + 1)), std::size_t(pointgen::max_json_nesting));
+  const std::string in_a_string = "{\"a\": \"" + std::string(1000, '[') + "\\\"{\"}";
+  EXPECT_EQ(pointgen::json_nests_too_deep(in_a_string), std::nullopt) << in_a_string;
+  EXPECT_EQ(pointgen::json_nests_too_deep("[" + std::string(300, '{') + "}]"), std::size_t(pointgen::max_json_nesting));
+}
+
+// `levels` objects one inside the next, each {"a": ...}, around a 1.
+std::string nested_objects(int levels) {
+  std::string text;
+  for (int i = 0; i < levels; ++i) text += "{\"a\":";
+  return text + "1" + std::string(static_cast<std::size_t>(levels), '}');
+}
+
+// 100,000 levels in an extension, where tinygltf's recursive reader overflows the stack.
+TEST(GltfFile, JsonNestedTooDeepIsRefusedBeforeTinygltfReadsItInGltfAndGlb) {
+  const std::string gltf = R"({"asset": {"version": "2.0"}, "extensions": {"deep": )" + nested_objects(100000) + "}}";
+  // The root and "extensions" are two levels: the deep value's 255th object opens the 257th.
+  const std::size_t too_deep = gltf.find("{\"a\":") + 254 * std::string("{\"a\":").size();
+  try {
+    load("deep.gltf", gltf);
+    ADD_FAILURE() << "loaded";
+  } catch (const pointgen::FileError& e) {
+    EXPECT_EQ(std::string(e.what()), "deep.gltf: JSON nested deeper than 256 levels (at byte " + std::to_string(too_deep) + ")");
+  }
+  std::string glb = "glTF";
+  const auto append_u32 = [&](std::uint32_t v) { glb.append(reinterpret_cast<const char*>(&v), 4); };
+  append_u32(2);
+  append_u32(static_cast<std::uint32_t>(20 + gltf.size()));
+  append_u32(static_cast<std::uint32_t>(gltf.size()));
+  glb += "JSON" + gltf;
+  try {
+    load("deep.glb", glb);
+    ADD_FAILURE() << "loaded";
+  } catch (const pointgen::FileError& e) {
+    EXPECT_EQ(std::string(e.what()), "deep.glb: JSON nested deeper than 256 levels (at byte " + std::to_string(glb.find(gltf) + too_deep) + ")");
+  }
 }
 
 }  // namespace

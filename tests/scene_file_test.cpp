@@ -105,6 +105,43 @@ TEST(SceneFile, MeshesFromFilesBecomeSpeciesAsPointsAndInEcosystems) {
   EXPECT_EQ(s.groups.back().size(), 25u);
 }
 
+// Each channel of the tints of a group's instances: the smallest and the largest, each checked
+// within [1 - tint, 1 + tint] and the 0.2 % the packing may add (instance_table.hpp).
+std::pair<float, float> tint_range(const pointgen::InstanceTable& group, float tint) {
+  float lo = 2.0f, hi = 0.0f;
+  for (std::size_t i = 0; i < group.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      const float t = group.tint(i)[c];
+      EXPECT_GE(t, (1.0f - tint) * 0.998f) << i;
+      EXPECT_LE(t, (1.0f + tint) * 1.002f) << i;
+      lo = std::min(lo, t);
+      hi = std::max(hi, t);
+    }
+  }
+  return {lo, hi};
+}
+
+TEST(SceneFile, AFileSpeciesKeepsItsMeshColoursUnlessGivenATint) {
+  const std::map<std::string, std::string> tet{{"tet.obj", tetrahedron_obj}};
+  const std::string plants = R"({"type": "ecosystem", "size": [40, 40], "plants": [{"file": "tet.obj", "count": 60)";
+  const Scene plain = load_objects(plants + "}]}", tet);
+  ASSERT_EQ(plain.groups.back().size(), 60u);
+  for (const std::uint32_t tint : plain.groups.back().tints) EXPECT_EQ(tint, pointgen::pack_tint(glm::vec3(1.0f)));
+  const Scene tinted = load_objects(plants + R"(, "tint": 0.3}]})", tet);
+  const auto [lo, hi] = tint_range(tinted.groups.back(), 0.3f);
+  EXPECT_LT(lo, 0.8f);
+  EXPECT_GT(hi, 1.2f);
+}
+
+TEST(SceneFile, ACatalogueSpeciesVariesByTwelvePercentUnlessGivenATint) {
+  const std::string plants = R"({"type": "ecosystem", "size": [40, 40], "plants": [{"species": "hazel", "count": 60, "variants": 1)";
+  const auto [lo, hi] = tint_range(load_objects(plants + "}]}").groups.back(), 0.12f);
+  EXPECT_LT(lo, 0.92f);
+  EXPECT_GT(hi, 1.08f);
+  const Scene untinted = load_objects(plants + R"(, "tint": 0}]})");
+  for (const std::uint32_t tint : untinted.groups.back().tints) EXPECT_EQ(tint, pointgen::pack_tint(glm::vec3(1.0f)));
+}
+
 TEST(SceneFile, CameraAndEveryLightTypeKeepTheirFields) {
   const Scene s = load_text(R"({"camera": {"position": [1, 2, 3], "target": [0, 1, 0], "up": [0, 0, 1],
                                            "fov_y_deg": 35, "near": 0.5, "far": 90},
@@ -146,6 +183,12 @@ std::string with_objects(const std::string& objects) {
 TEST(SceneFileErrors, SyntaxErrorNamesFileAndLine) {
   expect_input_error("{\n  \"camera\": {\n    \"position\": [0, 8 12]\n", {"test.json:3:", "invalid JSON"});
   expect_input_error(with_objects("").substr(0, 40), {"test.json:", "invalid JSON"});  // truncated
+}
+
+TEST(SceneFileErrors, JsonNestedDeeperThan256LevelsIsRefusedAtItsPlace) {
+  // '{' opens the first level, so the 256th '[', at byte 267, opens the 257th: column 268.
+  const std::string deep = "{\"comment\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
+  expect_input_error(deep, {"test.json:1:268: invalid JSON: nested deeper than 256 levels"});
 }
 
 TEST(SceneFileErrors, NaNAndInfinityAreRejected) {
@@ -230,6 +273,10 @@ TEST(SceneFileErrors, MalformedSpeciesAndCrowdsNameTheField) {
   expect_input_error(with_objects(eco + R"({"file": "tet.obj", "count": 3, "scale": [2, 1]}]})"), {"objects[0].plants[0].scale"}, tet);
   expect_input_error(with_objects(eco + R"({"file": "tet.obj", "species": "oak", "count": 3}]})"), {"objects[0].plants[0].file"}, tet);
   expect_input_error(with_objects(eco + R"({"file": "gone.obj", "count": 3}]})"), {"objects[0].plants[0].file", "gone.obj"});
+  expect_input_error(with_objects(eco + R"({"file": "tet.obj", "count": 3, "tint": 1.5}]})"),
+                     {"objects[0].plants[0].tint", "between 0 and 1"}, tet);
+  expect_input_error(with_objects(eco + R"({"species": "oak", "count": 3, "tint": "none"}]})"),
+                     {"objects[0].plants[0].tint", "expected a number"});
   expect_input_error(with_objects(R"({"type": "mesh", "file": "tet.obj", "points": "yes"})"), {"objects[0].points", "true or false"}, tet);
   expect_input_error(with_objects(R"({"type": "crowd", "count": -5, "center": [0, 0, 0], "size": [10, 10]})"),
                      {"objects[0].count"});

@@ -76,17 +76,23 @@ TEST(TexturedGltf, AJpegImageEmbeddedInABinaryFileIsDecoded) {
   }
 }
 
-TEST(TexturedGltf, AnImageThatCannotBeDecodedIsRefusedByItsIndex) {
+TEST(TexturedGltf, AnImageThatCannotBeDecodedIsRefusedByItsIndexAndFile) {
   TexturedCard card = textured_card();
   card.files["leaf.png"] = "not an image at all";
   const std::string message = load_failure(card);
-  EXPECT_NE(message.find("card.gltf: image 0 cannot be decoded"), std::string::npos) << message;
+  EXPECT_NE(message.find("card.gltf: images[0].uri: leaf.png: cannot be decoded"), std::string::npos) << message;
   // A PNG whose header claims 16,385 × 1,000 texels: wider than a texture may be, refused from the
   // header before anything is decoded (stb_image itself refuses images over 1 GiB).
   std::string& png = card.files["leaf.png"] = textured_card().files.at("leaf.png");
   png.replace(16, 8, std::string("\x00\x00\x40\x01\x00\x00\x03\xe8", 8));
   const std::string huge = load_failure(card);
-  EXPECT_NE(huge.find("image 0 16385 x 1000 texels, more than 16384 a side"), std::string::npos) << huge;
+  EXPECT_NE(huge.find("images[0].uri: leaf.png: 16385 x 1000 texels, more than 16384 a side"), std::string::npos) << huge;
+}
+
+TEST(TexturedGltf, AMissingImageFileIsNamedWithItsField) {
+  TexturedCard card = textured_card();
+  card.files.erase("leaf.png");
+  EXPECT_EQ(load_failure(card), "card.gltf: images[0].uri: leaf.png: no such file");
 }
 
 TEST(TexturedGltf, WhatIsNotUsedIsSaidInOneLine) {

@@ -103,9 +103,12 @@ pointgen::EcosystemSpec read_ecosystem(const JsonField& field, std::uint64_t sce
     for (const JsonField& item : list->items()) defined.push_back(read_species(item, defined));
   }
   for (const JsonField& item : field["plants"].items(1)) {
-    item.only_keys({"species", "count", "variants", "file", "layer", "scale"});
+    item.only_keys({"species", "count", "variants", "file", "layer", "scale", "tint"});
     pointgen::PlantRequest request;
     request.count = item["count"].integer(0, 100000000);
+    // The user's own mesh keeps its colours unless asked; the catalogue's plants vary as they did.
+    if (item.has("file")) request.tint = 0.0f;
+    if (auto f = item.optional("tint")) request.tint = f->number_f(0, 1);
     if (auto file = item.optional("file")) {
       if (item.has("species") || item.has("variants")) file->fail("a species from a file has no \"species\" or \"variants\"");
       request.species.name = file->string();

@@ -17,8 +17,9 @@ using LoadMesh = std::function<pointgen::TriangleMesh(const JsonField& file)>;
 
 // {"seed", "center", "size", "terrain": {...}, "species": [...], "plants": [...]}, each plant
 // entry {"species", "count", "variants"} or, for the user's own species, {"file", "count",
-// "layer": "trees" | "bushes" | "ground", "scale": [min, max]}; its seed is derived from the
-// scene's and its own.
+// "layer": "trees" | "bushes" | "ground", "scale": [min, max]}; either with "tint", from 0 to 1,
+// the most a plant's colour differs per channel (PlantRequest::tint; a species from a file is not
+// tinted unless asked). Its seed is derived from the scene's and its own.
 pointgen::EcosystemSpec read_ecosystem(const JsonField& field, std::uint64_t scene_seed, const LoadMesh& load_mesh);
 
 }  // namespace ecoview

@@ -1,6 +1,7 @@
 #include "app/scene/json_input.hpp"
 
 #include "app/errors.hpp"
+#include "pointgen/json_nesting.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -48,6 +49,10 @@ std::size_t find_outside_strings(const std::string& text, const std::string& nee
 }  // namespace
 
 nlohmann::json parse_json(const std::string& text, const std::string& file) {
+  if (const std::optional<std::size_t> at = pointgen::json_nests_too_deep(text)) {
+    throw InputError(file + ":" + position(text, *at) + ": invalid JSON: nested deeper than " +
+                     std::to_string(pointgen::max_json_nesting) + " levels");
+  }
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {

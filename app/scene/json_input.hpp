@@ -9,7 +9,8 @@
 
 namespace ecoview {
 
-// Parses JSON text; a syntax error throws InputError "file:line:column: ...".
+// Parses JSON text; a syntax error, or nesting deeper than pointgen::max_json_nesting, throws
+// InputError "file:line:column: ...".
 nlohmann::json parse_json(const std::string& text, const std::string& file);
 
 // A value inside a parsed JSON document that knows its file and path ("objects[2].min"), so every

@@ -1,7 +1,6 @@
 #include "app/scene/scene_file.hpp"
 
 #include "app/errors.hpp"
-#include "app/file_io.hpp"
 #include "app/resources.hpp"
 #include "app/scene/ecosystem_fields.hpp"
 #include "app/scene/json_input.hpp"
@@ -9,6 +8,7 @@
 #include "app/scene/set_piece_fields.hpp"
 #include "app/scene/scene_fields.hpp"
 #include "pointgen/file_error.hpp"
+#include "pointgen/input_file.hpp"
 #include "pointgen/primitives.hpp"
 #include "pointgen/random.hpp"
 
@@ -260,11 +260,16 @@ InputSource open_input(const std::string& name_or_file, const std::string& folde
   const bool is_shipped = resources::find(resource).has_value();
   // A file wins over a shipped name, but a folder (such as a capture's output) does not.
   if (fs::is_regular_file(name_or_file, ec) || (!is_shipped && fs::exists(name_or_file, ec))) {
-    std::optional<std::string> text = read_file(name_or_file);
-    if (!text) throw InputError(name_or_file + ": cannot be read (not a regular, readable file)");
+    std::optional<std::string> text;
+    try {
+      text = pointgen::read_input_file(name_or_file);
+    } catch (const pointgen::FileError& e) {
+      throw InputError(e.what());
+    }
+    if (!text) throw InputError(name_or_file + ": no such file");
     const fs::path base = fs::path(name_or_file).parent_path();
     return {name_or_file, std::move(*text),
-            [base](const std::string& relative) { return read_file(base / relative); }};
+            [base](const std::string& relative) { return pointgen::read_input_file(base / relative); }};
   }
   if (const auto text = resources::find(resource)) {
     const fs::path base = "data/" + folder;

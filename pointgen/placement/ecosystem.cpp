@@ -174,7 +174,8 @@ Ecosystem grow_ecosystem(const EcosystemSpec& spec) {
             glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(p.x, eco.terrain.height(p.x, p.y), p.y)),
                                    own.uniform(0.0f, glm::two_pi<float>()), glm::vec3(0, 1, 0)),
                        glm::vec3(own.uniform(r.scale.x, r.scale.y)));
-        const glm::vec3 tint(own.uniform(0.88f, 1.12f), own.uniform(0.88f, 1.12f), own.uniform(0.88f, 1.12f));
+        const float lo = 1.0f - r.tint, hi = 1.0f + r.tint;  // 0.88f and 1.12f to the bit at the default: the same plants as before
+        const glm::vec3 tint(own.uniform(lo, hi), own.uniform(lo, hi), own.uniform(lo, hi));
         const std::uint32_t variants = r.mesh ? 1u : static_cast<std::uint32_t>(r.variants);
         eco.tables[first_mesh[s] + own.below(variants)].add(transform, tint, seed);
       }

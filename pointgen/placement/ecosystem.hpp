@@ -18,6 +18,9 @@ struct PlantRequest {
   std::shared_ptr<const TriangleMesh> mesh;
   int layer = 0;
   glm::vec2 scale{0.75f, 1.25f};  // each plant's size factor, uniform between the two
+  // The most a plant's colour differs from its mesh's, per channel: each channel of a plant's
+  // tint is uniform in [1 - tint, 1 + tint]. 0 keeps the mesh's colours.
+  float tint = 0.12f;
 };
 
 // A landscape: a terrain over an area and plants on it, placed by Poisson-disk sampling in three
