@@ -1,8 +1,13 @@
 // A landscape's plants made cell by cell from (seed, cell, site) alone: the hash, the terrain,
 // the cells' plants and their rules, and the expected surface of a cell.
 #include "pointgen/landscape/hash32.hpp"
+#include "pointgen/landscape/landscape_terrain.hpp"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
 
 namespace pointgen {
 namespace {
@@ -16,6 +21,33 @@ TEST(LandscapeHash32, IsXxHash32OfTheValuesAsLittleEndianWords) {
   EXPECT_EQ(hash32(42u, 1u, 0xFFFFFFFFu, 7u), 0xBE575C68u);
   EXPECT_EQ(unit_float(0xFFFFFFFFu), 1.0f - 0x1p-24f);
   EXPECT_EQ(unit_float(0xFFu), 0.0f);
+}
+
+// Value noise may break where its lattice lines are (each octave's at multiples of feature /
+// 2^octave, the valley's along x at multiples of its wavelength). Across each, the height steps
+// no more than the slope on either side gives.
+TEST(LandscapeTerrain, HeightsAgreeAcrossLatticeLines) {
+  const LandscapeTerrainSpec spec{.relief = 160.0f, .feature = 640.0f, .octaves = 6, .valley_depth = 60.0f, .valley_width = 400.0f,
+                                  .valley_meander = 300.0f, .valley_wavelength = 1500.0f};
+  const LandscapeTerrain terrain(spec, 67);
+  std::vector<float> borders;
+  const float finest = spec.feature / static_cast<float>(1 << (spec.octaves - 1));
+  for (int k = -40; k <= 40; k += 3) borders.push_back(finest * static_cast<float>(k));
+  for (int k = -1; k <= 1; ++k) borders.push_back(spec.valley_wavelength * static_cast<float>(k));
+  constexpr float step = 0.01f;
+  auto step_across = [&](float b, float along, bool across_x, float from, float to) {
+    return std::abs(across_x ? terrain.height(b + to, along) - terrain.height(b + from, along)
+                             : terrain.height(along, b + to) - terrain.height(along, b + from));
+  };
+  for (float b : borders) {
+    for (float along = -900.0f; along <= 900.0f; along += 37.0f) {
+      for (bool across_x : {true, false}) {
+        const float jump = step_across(b, along, across_x, -step, step);
+        const float sides = std::max(step_across(b, along, across_x, step, 3.0f * step), step_across(b, along, across_x, -3.0f * step, -step));
+        EXPECT_LE(jump, 2.0f * sides + 1e-3f) << "across " << (across_x ? "x = " : "z = ") << b << " at " << along;
+      }
+    }
+  }
 }
 
 }  // namespace
