@@ -1,16 +1,50 @@
 // A landscape's plants made cell by cell from (seed, cell, site) alone: the hash, the terrain,
 // the cells' plants and their rules, and the expected surface of a cell.
 #include "pointgen/landscape/hash32.hpp"
+#include "pointgen/landscape/landscape_spec.hpp"
 #include "pointgen/landscape/landscape_terrain.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 namespace pointgen {
 namespace {
+
+LandscapeSpecies species(const std::string& name, float weight) {
+  LandscapeSpecies s;
+  s.name = name;
+  s.weight = weight;
+  return s;
+}
+
+// Two kilometres of hills and a valley, with trees, bushes and ground cover under every kind of
+// rule.
+LandscapeSpec forest() {
+  LandscapeSpec spec;
+  spec.seed = 67;
+  spec.size = glm::vec2(2000.0f);
+  spec.terrain = {.relief = 160.0f, .feature = 640.0f, .octaves = 6, .valley_depth = 60.0f, .valley_width = 400.0f,
+                  .valley_meander = 300.0f, .valley_wavelength = 1500.0f};
+  LandscapeLayer trees{"trees", 40.0f, 0.004f, {species("oak", 2.0f), species("pine", 1.0f)}};
+  trees.species[0].altitude = {-1e9f, 10.0f};
+  trees.species[0].grove = 0.5f;
+  trees.species[0].grove_size = 200.0f;
+  trees.species[1].altitude = {0.0f, 1e9f};
+  trees.species[1].slope_max_deg = 20.0f;
+  LandscapeLayer bushes{"bushes", 20.0f, 0.02f, {species("hazel", 1.0f)}};
+  bushes.species[0].slope_max_deg = 15.0f;
+  bushes.species[0].grove = 0.45f;
+  LandscapeLayer ground{"ground", 8.0f, 0.5f, {species("grass", 5.0f), species("daisy", 1.0f)}};
+  ground.species[1].altitude = {-20.0f, 20.0f};
+  ground.species[1].tint_spread = 0.0f;
+  spec.layers = {trees, bushes, ground};
+  spec.check();
+  return spec;
+}
 
 TEST(LandscapeHash32, IsXxHash32OfTheValuesAsLittleEndianWords) {
   // From libxxhash 0.8.1's XXH32 over the words 1, 0xFFFFFFFF, 7 (first 0 to 3 of them), seed 42.
@@ -48,6 +82,20 @@ TEST(LandscapeTerrain, HeightsAgreeAcrossLatticeLines) {
       }
     }
   }
+}
+
+TEST(LandscapeSpec, CheckNamesTheFirstFieldOutOfRange) {
+  LandscapeSpec spec = forest();
+  spec.layers[1].species[0].scale = {2.0f, 1.0f};
+  try {
+    spec.check();
+    FAIL() << "a reversed scale range passed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("layers[1].species[0].scale:", 0), 0u) << e.what();
+  }
+  spec = forest();
+  spec.size.x = 2.0f * LandscapeSpec::max_size;
+  EXPECT_THROW(spec.check(), std::invalid_argument);
 }
 
 }  // namespace
