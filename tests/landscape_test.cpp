@@ -276,6 +276,25 @@ TEST(LandscapeCells, MakesACellAtTheFarCornerOfA100KmLandscapeAloneAndAtOnce) {
   EXPECT_TRUE(generate_cell(spec, {ground, cells.x, 0}).empty()) << "past the edge";
 }
 
+// Checked against every cell of the layer: those reaching within the radius (their nearest point
+// to the centre), and no other.
+TEST(LandscapeCells, CellsWithinARadiusAreThoseReachingIntoIt) {
+  const LandscapeSpec spec = forest();
+  for (const glm::vec3 disc : {glm::vec3(130.0f, -410.0f, 95.0f), glm::vec3(-990.0f, 990.0f, 60.0f), glm::vec3(3000.0f, 0.0f, 100.0f)}) {
+    const glm::vec2 center(disc.x, disc.y);
+    std::vector<CellKey> reaching;
+    const glm::ivec2 cells = cell_count(spec, 0);
+    for (int z = 0; z < cells.y; ++z) {
+      for (int x = 0; x < cells.x; ++x) {
+        const CellBounds b = cell_bounds(spec, {0, x, z});
+        const glm::vec2 nearest = glm::clamp(center, b.min, b.max);
+        if (glm::length(nearest - center) <= disc.z) reaching.push_back({0, x, z});
+      }
+    }
+    EXPECT_EQ(cells_within(spec, 0, center, disc.z), reaching) << center.x << ", " << center.y;
+  }
+}
+
 TEST(LandscapeCells, ExpectedSurfaceIsTheMeanOfTheSurfaceMade) {
   LandscapeSpec spec;
   spec.size = glm::vec2(640.0f);

@@ -34,6 +34,9 @@ struct LandscapePlant {
 glm::ivec2 cell_count(const LandscapeSpec& spec, int layer);
 CellBounds cell_bounds(const LandscapeSpec& spec, const CellKey& key);
 
+// The cells of `layer` that reach within `radius` of `center` (x, z), row by row.
+std::vector<CellKey> cells_within(const LandscapeSpec& spec, int layer, glm::vec2 center, float radius);
+
 // A cell's candidate sites: a jittered grid of n × n (n² just above density × area), each site
 // taken with the probability that makes density × area the expected count.
 struct CellSites {
