@@ -163,7 +163,7 @@ TEST(LandscapeCells, NoPlantGrowsPastTheEdgeThatCutsTheLastCells) {
   EXPECT_NEAR(count, expected, 5.0 * std::sqrt(expected));
 }
 
-TEST(LandscapeCells, EveryPlantGrowsWithinItsSpeciesAltitudeSlopeAndGroveRules) {
+TEST(LandscapeCells, EveryPlantGrowsWithinItsSpeciesAltitudeSlopeGroveScaleAndTintRules) {
   const LandscapeSpec spec = forest();
   const LandscapeSpec unruled = without_rules(spec);
   const LandscapeTerrain terrain(spec.terrain, spec.seed);
@@ -185,6 +185,14 @@ TEST(LandscapeCells, EveryPlantGrowsWithinItsSpeciesAltitudeSlopeAndGroveRules) 
           const float slope_deg = glm::degrees(std::acos(terrain.normal(p.x, p.y).y));
           EXPECT_LE(slope_deg, s.slope_max_deg + 1e-3f) << s.name;
           EXPECT_GE(grove_noise(spec, layer, static_cast<int>(plant.species), p), s.grove) << s.name;
+          const float scale = uniform_scale(glm::mat4(plant.transform));
+          EXPECT_GE(scale, s.scale.x * (1.0f - 1e-5f)) << s.name;
+          EXPECT_LE(scale, s.scale.y * (1.0f + 1e-5f)) << s.name;
+          EXPECT_TRUE(plant.transform[1].x == 0.0f && plant.transform[1].z == 0.0f) << "upright";
+          EXPECT_NEAR(plant.transform[1].y, scale, 1e-5f * scale) << "scaled alike on every axis";
+          // Within the spread, and a quarter of an sRGB step (pack_tint's) of it.
+          const glm::vec3 tint = unpack_tint(plant.tint);
+          EXPECT_TRUE(glm::all(glm::lessThanEqual(glm::abs(tint - 1.0f), glm::vec3(s.tint_spread + 0.002f)))) << s.name;
         }
       }
     }

@@ -15,7 +15,7 @@ namespace {
 constexpr std::uint32_t site_domain = 0x73697465u;  // "site"
 
 // What each of a site's uniforms decides: its own hash input, so that a rule added to one never
-// moves another. Two sites whose 32-bit keys agree (a pair in four billion) draw alike: the same
+// moves another. Two sites whose 32-bit keys agree (any two, once in four billion) draw alike: the same
 // jitter in their own cells, the same turn and tint.
 enum SiteDraw : std::uint32_t { taken_draw, species_draw, jitter_x_draw, jitter_z_draw, turn_draw, scale_draw, tint_draw, seed_draw = tint_draw + 3 };
 
