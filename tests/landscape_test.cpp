@@ -275,8 +275,8 @@ TEST(LandscapeCells, MakesACellAtTheFarCornerOfA100KmLandscapeAloneAndAtOnce) {
   const CellKey corner{ground, cells.x - 1, cells.y - 1};
   const double start = thread_seconds();
   const std::vector<LandscapePlant> plants = generate_cell(spec, corner);
-  // Its 36 sites take microseconds; making even the cells before it in its row takes a tenth of a
-  // second, all before it hours.
+  // Its 36 sites take microseconds; making first the cells before it in its row takes some 60 ms,
+  // all cells before it hours.
   EXPECT_LT(thread_seconds() - start, 0.005);
   EXPECT_FALSE(plants.empty());
   EXPECT_LE(plants.capacity(), static_cast<std::size_t>(cell_sites(spec.layers[ground]).count())) << "room for its own sites only";
