@@ -1,10 +1,13 @@
 // Scene files: every object type loads with the values written; every kind of bad input is an
 // InputError naming the file and the field.
 #include "app/errors.hpp"
+#include "app/scene/landscape_fields.hpp"
 #include "app/scene/scene_file.hpp"
+#include "pointgen/landscape/landscape_cells.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <map>
 
 #include "pointgen/movers/moving_set.hpp"
@@ -299,6 +302,105 @@ TEST(SceneFileErrors, AScenePastTheMemoryBudgetIsRefusedBeforeItIsBuilt) {
     EXPECT_NE(message.find("objects[1]"), std::string::npos) << message;
     EXPECT_NE(message.find("memory budget of 1.00 GiB"), std::string::npos) << message;
     EXPECT_NE(message.find("would need about 22.1"), std::string::npos) << message;  // 9e7 plants x 264 bytes
+  }
+}
+
+// A small landscape: trees of two species (one the user's, on low ground) and grass on gentle
+// slopes, made within 60 m of the camera at (0, 8, 12).
+const char* small_landscape = R"({"type": "landscape", "size": [2000, 2000], "radius": 60, "ground_cells": 32,
+    "terrain": {"relief": 40, "feature": 300},
+    "layers": [{"name": "trees", "cell_size": 20, "density": 0.01,
+                "species": [{"species": "birch"}, {"file": "tet.obj", "weight": 2, "scale": [2, 3], "altitude": [-1000, 5]}]},
+               {"cell_size": 5, "density": 0.2, "species": [{"species": "meadow grass", "slope_max_deg": 30}]}]})";
+
+// The object as the scene file reads it (scene seed 1), for making its cells here.
+LandscapeObject read_small_landscape() {
+  const nlohmann::json document = nlohmann::json::parse(small_landscape);
+  return read_landscape(JsonField(document, "test.json"), 1, [](const JsonField&) { return pointgen::TriangleMesh{}; });
+}
+
+TEST(SceneFile, LandscapeHasThePlantsOfItsCellsNearTheCameraOnItsGround) {
+  const Scene s = load_objects(small_landscape, {{"tet.obj", tetrahedron_obj}});
+  const LandscapeObject landscape = read_small_landscape();
+  const pointgen::LandscapeSpec& spec = landscape.spec;
+  // Every species' plants, in order, from the cells reaching within 60 m of (0, 12).
+  std::vector<pointgen::InstanceTable> expected;
+  for (int layer = 0; layer < 2; ++layer) {
+    std::vector<pointgen::InstanceTable> tables(spec.layers[static_cast<std::size_t>(layer)].species.size());
+    for (const pointgen::CellKey& key : pointgen::cells_within(spec, layer, {0.0f, 12.0f}, 60.0f)) {
+      for (const pointgen::LandscapePlant& plant : pointgen::generate_cell(spec, key)) {
+        tables[plant.species].transforms.push_back(plant.transform);
+        tables[plant.species].tints.push_back(plant.tint);
+        tables[plant.species].seeds.push_back(plant.seed);
+      }
+    }
+    for (pointgen::InstanceTable& table : tables) {
+      if (table.size() > 0) expected.push_back(std::move(table));
+    }
+  }
+  ASSERT_EQ(expected.size(), 3u) << "birches, the user's, grass";
+  ASSERT_EQ(s.groups.size(), 1u + expected.size()) << "the ground, then each species";
+  for (std::size_t g = 0; g < expected.size(); ++g) {
+    const pointgen::InstanceTable& made = s.groups[g + 1];
+    ASSERT_EQ(made.size(), expected[g].size()) << "species " << g;
+    EXPECT_EQ(std::memcmp(made.transforms.data(), expected[g].transforms.data(), made.size() * sizeof(glm::mat4x3)), 0);
+    EXPECT_EQ(made.tints, expected[g].tints);
+    EXPECT_EQ(made.seeds, expected[g].seeds);
+    EXPECT_TRUE(s.point_meshes[made.mesh]) << "plants are drawn as points far away";
+  }
+  const pointgen::TriangleMesh& ground = s.meshes[s.groups[0].mesh];
+  EXPECT_FALSE(s.point_meshes[s.groups[0].mesh]);
+  EXPECT_EQ(ground.positions.size(), 33u * 33u);
+  const pointgen::LandscapeTerrain terrain(spec.terrain, spec.seed);
+  for (const glm::vec3& p : ground.positions) EXPECT_EQ(p.y, terrain.height(p.x, p.z));
+  EXPECT_EQ(ground.bounds().min.x, -60.0f);
+  EXPECT_EQ(ground.bounds().max.z, 72.0f);
+}
+
+TEST(SceneFileErrors, MalformedLandscapeNamesTheField) {
+  const std::string start = R"({"type": "landscape", "size": [500, 500], "layers": [)";
+  expect_input_error(with_objects(start + R"({"cell_size": 10, "density": 0.1, "species": [{"species": "baobab"}]}]})"),
+                     {"objects[0].layers[0].species[0].species", "baobab"});
+  expect_input_error(with_objects(start + R"({"cell_size": 10, "density": 0.1, "species": [{"species": "oak", "altitude": [5, 1]}]}]})"),
+                     {"objects[0].layers[0].species[0].altitude", "smaller"});
+  expect_input_error(with_objects(start + R"({"cell_size": 10, "density": 0.1, "species": [{"species": "oak", "slope_max_deg": 95}]}]})"),
+                     {"objects[0].layers[0].species[0].slope_max_deg"});
+  expect_input_error(with_objects(start + R"({"cell_size": 10, "density": 0.1, "species": [{"species": "oak", "speed": 1}]}]})"),
+                     {"objects[0].layers[0].species[0].speed", "unknown key"});
+  expect_input_error(with_objects(start + R"({"cell_size": 10, "density": 0.1, "species": [{"file": "tet.obj", "species": "oak"}]}]})"),
+                     {"objects[0].layers[0].species[0].file"}, {{"tet.obj", tetrahedron_obj}});
+  expect_input_error(with_objects(start + R"({"cell_size": 5000, "density": 1, "species": [{"species": "oak"}]}]})"),
+                     {"objects[0]", "layers[0].density", "plants a cell"});
+  expect_input_error(with_objects(start + R"({"cell_size": 10, "density": 0.1, "species": []}]})"), {"objects[0].layers[0].species"});
+  expect_input_error(with_objects(R"({"type": "landscape", "size": [200000, 500], "layers": []})"), {"objects[0].size"});
+  expect_input_error(with_objects(R"({"type": "landscape", "size": [500, 500], "terrain": {"octaves": 40}, "layers": []})"),
+                     {"objects[0].terrain.octaves"});
+}
+
+TEST(SceneFileErrors, ALandscapeWhoseCellsNearTheCameraPassTheBudgetIsRefusedSayingWhatItNeeds) {
+  std::string big = small_landscape;
+  big.replace(big.find("\"radius\": 60"), 12, "\"radius\": 900");
+  try {
+    load_scene({"test.json", with_objects(big), [](const std::string&) { return std::string(tetrahedron_obj); }}, {64.0 * 1024.0 * 1024.0});
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("objects[0]"), std::string::npos) << message;
+    EXPECT_NE(message.find("memory budget of 0.06 GiB"), std::string::npos) << message;
+    // Its plants' expected count from the cells reaching within 900 m, 184 bytes each, and a few
+    // MiB of meshes and ground.
+    const LandscapeObject landscape = read_small_landscape();
+    double plants = 0.0;
+    for (int layer = 0; layer < 2; ++layer) {
+      const pointgen::CellSites sites = pointgen::cell_sites(landscape.spec.layers[static_cast<std::size_t>(layer)]);
+      plants += sites.count() * sites.probability * static_cast<double>(pointgen::cells_within(landscape.spec, layer, {0.0f, 12.0f}, 900.0f).size());
+    }
+    const std::size_t at = message.find("would need about ");
+    ASSERT_NE(at, std::string::npos) << message;
+    const double needs_gib = std::stod(message.substr(at + 17));
+    const double plants_gib = plants * 184.0 / (1024.0 * 1024.0 * 1024.0);
+    EXPECT_GE(needs_gib, plants_gib - 0.005) << message;
+    EXPECT_LE(needs_gib, plants_gib + 0.01) << message;
   }
 }
 

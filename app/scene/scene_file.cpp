@@ -4,11 +4,14 @@
 #include "app/resources.hpp"
 #include "app/scene/ecosystem_fields.hpp"
 #include "app/scene/json_input.hpp"
+#include "app/scene/landscape_fields.hpp"
 #include "app/scene/mover_fields.hpp"
 #include "app/scene/set_piece_fields.hpp"
 #include "app/scene/scene_fields.hpp"
 #include "pointgen/file_error.hpp"
 #include "pointgen/input_file.hpp"
+#include "pointgen/landscape/landscape_cells.hpp"
+#include "pointgen/placement/height_grid_mesh.hpp"
 #include "pointgen/primitives.hpp"
 #include "pointgen/random.hpp"
 
@@ -70,6 +73,8 @@ class SceneBuilder {
       add_plants(object);
     } else if (type == "ecosystem") {
       add_ecosystem(object);
+    } else if (type == "landscape") {
+      add_landscape(object);
     } else if (type == "crowd") {
       reserve_memory(object, bytes_per_mover * (object.has("count") ? object["count"].number(0, 1e6) : 0.0));
       add_moving_set(read_crowd(object, seed_));
@@ -87,7 +92,7 @@ class SceneBuilder {
         }
       }
     } else {
-      object["type"].fail("unknown object type '" + type + "' (known: plane, box, sphere, mesh, plant, ecosystem, "
+      object["type"].fail("unknown object type '" + type + "' (known: plane, box, sphere, mesh, plant, ecosystem, landscape, "
                           "crowd, traffic, cathedral, houses, chess, lathe)");
     }
   }
@@ -193,6 +198,68 @@ class SceneBuilder {
       object["clearings"].fail(e.what());
     }
   }
+
+  // A landscape's ground and plants within its radius of the camera, made now into the scene's
+  // tables: until cells are made on demand, a small landscape on the renderer's usual path.
+  void add_landscape(const JsonField& object) {
+    LandscapeObject landscape = read_landscape(object, seed_, [this](const JsonField& file) { return load_file(file); });
+    const pointgen::LandscapeSpec& spec = landscape.spec;
+    const glm::vec2 eye(scene_.camera.position.x, scene_.camera.position.z);
+    const pointgen::CellBounds ground{glm::max(eye - landscape.radius, -0.5f * spec.size), glm::min(eye + landscape.radius, 0.5f * spec.size)};
+    if (glm::any(glm::greaterThan(ground.min, ground.max))) return;  // nothing of it within the radius
+    std::vector<std::vector<pointgen::CellKey>> cells;
+    double plants = 0.0, triangles = 2.0 * landscape.ground_cells * landscape.ground_cells;
+    for (std::size_t layer = 0; layer < spec.layers.size(); ++layer) {
+      cells.push_back(pointgen::cells_within(spec, static_cast<int>(layer), eye, landscape.radius));
+      const pointgen::CellSites sites = pointgen::cell_sites(spec.layers[layer]);
+      plants += static_cast<double>(cells.back().size()) * sites.count() * sites.probability;
+      for (const pointgen::TriangleMesh& mesh : landscape.meshes[layer]) triangles += static_cast<double>(mesh.triangle_count());
+    }
+    reserve_memory(object, plants * bytes_per_plant + triangles * bytes_per_triangle);
+    add_instance(add_ground(spec, ground, landscape.ground_cells), glm::mat4(1.0f), glm::vec3(1.0f));
+    for (std::size_t layer = 0; layer < spec.layers.size(); ++layer) add_layer_plants(std::move(landscape.meshes[layer]), spec, cells[layer]);
+  }
+
+  std::size_t add_ground(const pointgen::LandscapeSpec& spec, const pointgen::CellBounds& area, int grid_cells) {
+    const pointgen::LandscapeTerrain terrain(spec.terrain, spec.seed);
+    const glm::vec2 step = (area.max - area.min) / static_cast<float>(grid_cells);
+    scene_.meshes.push_back(pointgen::height_grid_mesh(
+        glm::ivec2(grid_cells),
+        [&](int i, int j) {
+          const glm::vec2 p = area.min + step * glm::vec2(i, j);
+          return glm::vec3(p.x, terrain.height(p.x, p.y), p.y);
+        },
+        spec.terrain.relief, {}));
+    return scene_.meshes.size() - 1;
+  }
+
+  // The layer's species meshes, drawn as points far away, and a table each of their plants.
+  void add_layer_plants(std::vector<pointgen::TriangleMesh> meshes, const pointgen::LandscapeSpec& spec,
+                        const std::vector<pointgen::CellKey>& cells) {
+    const std::size_t first = scene_.meshes.size();
+    std::vector<pointgen::InstanceTable> tables;
+    for (pointgen::TriangleMesh& mesh : meshes) {
+      scene_.meshes.push_back(std::move(mesh));
+      tables.push_back({scene_.meshes.size() - 1, {}, {}, {}});
+    }
+    mark_point_meshes(first, scene_.meshes.size());
+    for (const pointgen::CellKey& key : cells) {
+      for (const pointgen::LandscapePlant& plant : pointgen::generate_cell(spec, key)) {
+        pointgen::InstanceTable& table = tables[plant.species];
+        table.transforms.push_back(plant.transform);
+        table.tints.push_back(plant.tint);
+        table.seeds.push_back(plant.seed);
+      }
+    }
+    for (pointgen::InstanceTable& table : tables) {
+      if (table.size() > 0) scene_.groups.push_back(std::move(table));
+    }
+  }
+
+  // A plant's table row and GPU instance record; a triangle's CPU and GPU copies of its vertices
+  // and indices, about.
+  static constexpr double bytes_per_plant = 56 + 128;
+  static constexpr double bytes_per_triangle = 2 * (3 * 36 + 12);
 
   // The set's part meshes and its tables posed at t = 0; the renderer poses them per frame.
   void add_moving_set(pointgen::MovingSet set) {

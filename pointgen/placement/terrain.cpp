@@ -1,5 +1,6 @@
 #include "pointgen/placement/terrain.hpp"
 
+#include "pointgen/placement/height_grid_mesh.hpp"
 #include "pointgen/random.hpp"
 
 #include <algorithm>
@@ -63,28 +64,13 @@ float Terrain::height(float x, float z) const {
 }
 
 TriangleMesh Terrain::mesh() const {
-  TriangleMesh mesh;
-  for (int j = 0; j <= cells_.y; ++j) {
-    for (int i = 0; i <= cells_.x; ++i) {
-      const glm::vec2 p = origin_ + glm::vec2(i, j) * cell_;
-      mesh.positions.emplace_back(p.x, grid(i, j), p.y);
-    }
-  }
-  const auto row = static_cast<std::uint32_t>(cells_.x + 1);
-  for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(cells_.y); ++j) {
-    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(cells_.x); ++i) {
-      const std::uint32_t a = j * row + i, b = a + 1, c = a + row, d = c + 1;
-      // Counter-clockwise seen from above (+Y), split along a-d.
-      mesh.indices.insert(mesh.indices.end(), {a, d, b, a, c, d});
-    }
-  }
-  mesh.normals = vertex_normals(mesh.positions, mesh.indices);
-  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    const float height = spec_.relief > 0.0f ? mesh.positions[v].y / spec_.relief + 0.5f : 0.0f;
-    const float steep = 1.0f - mesh.normals[v].y;
-    mesh.colors.push_back(glm::mix(spec_.low_color, spec_.high_color, std::clamp(0.7f * height + 3.0f * steep, 0.0f, 1.0f)));
-  }
-  return mesh;
+  return height_grid_mesh(
+      cells_,
+      [this](int i, int j) {
+        const glm::vec2 p = origin_ + glm::vec2(i, j) * cell_;
+        return glm::vec3(p.x, grid(i, j), p.y);
+      },
+      spec_.relief, {spec_.low_color, spec_.high_color});
 }
 
 }  // namespace pointgen

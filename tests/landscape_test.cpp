@@ -1,0 +1,353 @@
+// A landscape's plants made cell by cell from (seed, cell, site) alone: the hash, the terrain,
+// the cells' plants and their rules, and the expected surface of a cell.
+#include "pointgen/instance_table.hpp"
+#include "pointgen/landscape/growth_rules.hpp"
+#include "pointgen/landscape/hash32.hpp"
+#include "pointgen/landscape/landscape_cells.hpp"
+#include "pointgen/landscape/landscape_terrain.hpp"
+#include "pointgen/random.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <ctime>
+#include <stdexcept>
+#include <thread>
+
+namespace pointgen {
+namespace {
+
+LandscapeSpecies species(const std::string& name, float weight) {
+  LandscapeSpecies s;
+  s.name = name;
+  s.weight = weight;
+  return s;
+}
+
+// Two kilometres of hills and a valley, with trees, bushes and ground cover under every kind of
+// rule.
+LandscapeSpec forest() {
+  LandscapeSpec spec;
+  spec.seed = 67;
+  spec.size = glm::vec2(2000.0f);
+  spec.terrain = {.relief = 160.0f, .feature = 640.0f, .octaves = 6, .valley_depth = 60.0f, .valley_width = 400.0f,
+                  .valley_meander = 300.0f, .valley_wavelength = 1500.0f};
+  LandscapeLayer trees{"trees", 40.0f, 0.004f, {species("oak", 2.0f), species("pine", 1.0f)}};
+  trees.species[0].altitude = {-1e9f, 10.0f};
+  trees.species[0].grove = 0.5f;
+  trees.species[0].grove_size = 200.0f;
+  trees.species[1].altitude = {0.0f, 1e9f};
+  trees.species[1].slope_max_deg = 20.0f;
+  LandscapeLayer bushes{"bushes", 20.0f, 0.02f, {species("hazel", 1.0f)}};
+  bushes.species[0].slope_max_deg = 15.0f;
+  bushes.species[0].grove = 0.45f;
+  LandscapeLayer ground{"ground", 8.0f, 0.5f, {species("grass", 5.0f), species("daisy", 1.0f)}};
+  ground.species[1].altitude = {-20.0f, 20.0f};
+  ground.species[1].tint_spread = 0.0f;
+  spec.layers = {trees, bushes, ground};
+  spec.check();
+  return spec;
+}
+
+// The same layers and species growing everywhere.
+LandscapeSpec without_rules(LandscapeSpec spec) {
+  for (LandscapeLayer& layer : spec.layers) {
+    for (LandscapeSpecies& s : layer.species) s = species(s.name, s.weight);
+  }
+  return spec;
+}
+
+bool same_bytes(const std::vector<LandscapePlant>& a, const std::vector<LandscapePlant>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(LandscapePlant)) == 0;
+}
+
+// This thread's processor time: what it computed, whatever else the machine runs.
+double thread_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+glm::vec2 ground_position(const LandscapePlant& plant) { return {plant.transform[3].x, plant.transform[3].z}; }
+
+TEST(LandscapeHash32, IsXxHash32OfTheValuesAsLittleEndianWords) {
+  // From libxxhash 0.8.1's XXH32 over the words 1, 0xFFFFFFFF, 7 (first 0 to 3 of them), seed 42.
+  static_assert(hash32(0u) == 0x02CC5D05u, "XXH32 of nothing, seed 0");
+  EXPECT_EQ(hash32(42u), 0xD5BE6EB8u);
+  EXPECT_EQ(hash32(42u, 1), 0xB22F1493u);
+  EXPECT_EQ(hash32(42u, 1, -1), 0x385575BDu) << "a signed value hashes as its two's complement bits";
+  EXPECT_EQ(hash32(42u, 1u, 0xFFFFFFFFu, 7u), 0xBE575C68u);
+  EXPECT_EQ(unit_float(0xFFFFFFFFu), 1.0f - 0x1p-24f);
+  EXPECT_EQ(unit_float(0xFFu), 0.0f);
+}
+
+TEST(LandscapeCells, ACellIsTheSameBytesAloneAfterOthersShuffledAndOnOneTwoOrFourThreads) {
+  const LandscapeSpec spec = forest();
+  const CellKey first{2, 101, 37};
+  const std::vector<LandscapePlant> alone = generate_cell(spec, first);
+  ASSERT_FALSE(alone.empty());
+
+  std::vector<CellKey> keys{first};
+  for (int layer = 0; layer < 3; ++layer) {
+    for (int i = 0; i < 16; ++i) keys.push_back({layer, (i * 7) % cell_count(spec, layer).x, (i * 13 + layer) % cell_count(spec, layer).y});
+  }
+  std::vector<std::vector<LandscapePlant>> in_order;
+  for (const CellKey& key : keys) in_order.push_back(generate_cell(spec, key));
+  EXPECT_TRUE(same_bytes(in_order[0], alone)) << "after itself";
+  EXPECT_TRUE(same_bytes(generate_cell(spec, first), alone)) << "after all the others";
+
+  std::vector<std::size_t> shuffled(keys.size());
+  for (std::size_t i = 0; i < shuffled.size(); ++i) shuffled[i] = i;
+  Random rng(67);
+  for (std::size_t i = shuffled.size() - 1; i > 0; --i) std::swap(shuffled[i], shuffled[rng.below(static_cast<std::uint32_t>(i + 1))]);
+  for (std::size_t i : shuffled) EXPECT_TRUE(same_bytes(generate_cell(spec, keys[i]), in_order[i])) << "shuffled, key " << i;
+
+  for (std::size_t threads : {1u, 2u, 4u}) {
+    std::vector<std::vector<LandscapePlant>> made(keys.size());
+    std::vector<std::thread> workers;
+    for (std::size_t t = 0; t < threads; ++t) {
+      workers.emplace_back([&, t] {
+        for (std::size_t i = t; i < keys.size(); i += threads) made[i] = generate_cell(spec, keys[i]);
+      });
+    }
+    for (std::thread& w : workers) w.join();
+    for (std::size_t i = 0; i < keys.size(); ++i) EXPECT_TRUE(same_bytes(made[i], in_order[i])) << threads << " threads, key " << i;
+  }
+}
+
+TEST(LandscapeCells, CountOverAUniformAreaIsDensityTimesAreaWithinFiveBinomialDeviations) {
+  LandscapeSpec spec;
+  spec.size = glm::vec2(1280.0f);
+  spec.layers = {{"uniform", 32.0f, 0.05f, {species("a", 3.0f), species("b", 1.0f)}}};
+  const CellSites sites = cell_sites(spec.layers[0]);
+  const glm::ivec2 cells = cell_count(spec, 0);
+  ASSERT_EQ(cells, glm::ivec2(40));  // no cell reaches past the area
+  double count = 0.0, first_species = 0.0;
+  for (int z = 0; z < cells.y; ++z) {
+    for (int x = 0; x < cells.x; ++x) {
+      for (const LandscapePlant& plant : generate_cell(spec, {0, x, z})) {
+        count += 1.0;
+        first_species += plant.species == 0 ? 1.0 : 0.0;
+      }
+    }
+  }
+  const double expected = 0.05 * 1280.0 * 1280.0;
+  // Each of the cells' sites is taken with probability p, so the count is binomial.
+  const double candidates = static_cast<double>(sites.count()) * cells.x * cells.y;
+  const double p = expected / candidates;
+  EXPECT_NEAR(count, expected, 5.0 * std::sqrt(candidates * p * (1.0 - p)));
+  // Each plant is the first species with probability 3/4.
+  EXPECT_NEAR(first_species, 0.75 * count, 5.0 * std::sqrt(count * 0.75 * 0.25));
+}
+
+// 1270 m is 39 cells and 22 m of a 40th: the last cells' sites past the edge grow nothing, so the
+// count is still density × area, a sum of independent sites with a variance below its mean.
+TEST(LandscapeCells, NoPlantGrowsPastTheEdgeThatCutsTheLastCells) {
+  LandscapeSpec spec;
+  spec.size = glm::vec2(1270.0f);
+  spec.layers = {{"uniform", 32.0f, 0.05f, {species("a", 1.0f)}}};
+  const glm::ivec2 cells = cell_count(spec, 0);
+  ASSERT_EQ(cells, glm::ivec2(40));
+  double count = 0.0;
+  for (int z = 0; z < cells.y; ++z) {
+    for (int x = 0; x < cells.x; ++x) {
+      for (const LandscapePlant& plant : generate_cell(spec, {0, x, z})) {
+        EXPECT_TRUE(glm::all(glm::lessThanEqual(glm::abs(ground_position(plant)), 0.5f * spec.size))) << "cell " << x << ", " << z;
+        count += 1.0;
+      }
+    }
+  }
+  const double expected = 0.05 * 1270.0 * 1270.0;
+  EXPECT_NEAR(count, expected, 5.0 * std::sqrt(expected));
+}
+
+TEST(LandscapeCells, EveryPlantGrowsWithinItsSpeciesAltitudeSlopeGroveScaleAndTintRules) {
+  const LandscapeSpec spec = forest();
+  const LandscapeSpec unruled = without_rules(spec);
+  const LandscapeTerrain terrain(spec.terrain, spec.seed);
+  for (int layer = 0; layer < 3; ++layer) {
+    const LandscapeLayer& l = spec.layers[static_cast<std::size_t>(layer)];
+    const glm::ivec2 cells = cell_count(spec, layer);
+    std::size_t plants = 0, unruled_plants = 0;
+    for (int z = 0; z < cells.y; z += std::max(1, cells.y / 12)) {
+      for (int x = 0; x < cells.x; x += std::max(1, cells.x / 12)) {
+        unruled_plants += generate_cell(unruled, {layer, x, z}).size();
+        for (const LandscapePlant& plant : generate_cell(spec, {layer, x, z})) {
+          ++plants;
+          const LandscapeSpecies& s = l.species[plant.species];
+          const glm::vec2 p = ground_position(plant);
+          const float height = terrain.height(p.x, p.y);
+          EXPECT_EQ(plant.transform[3].y, height) << "stands on the ground";
+          EXPECT_GE(height, s.altitude.x) << s.name;
+          EXPECT_LE(height, s.altitude.y) << s.name;
+          const float slope_deg = glm::degrees(std::acos(terrain.normal(p.x, p.y).y));
+          EXPECT_LE(slope_deg, s.slope_max_deg + 1e-3f) << s.name;
+          EXPECT_GE(grove_noise(spec, layer, static_cast<int>(plant.species), p), s.grove) << s.name;
+          const float scale = uniform_scale(glm::mat4(plant.transform));
+          EXPECT_GE(scale, s.scale.x * (1.0f - 1e-5f)) << s.name;
+          EXPECT_LE(scale, s.scale.y * (1.0f + 1e-5f)) << s.name;
+          EXPECT_TRUE(plant.transform[1].x == 0.0f && plant.transform[1].z == 0.0f) << "upright";
+          EXPECT_NEAR(plant.transform[1].y, scale, 1e-5f * scale) << "scaled alike on every axis";
+          // Within the spread, and a quarter of an sRGB step (pack_tint's) of it.
+          const glm::vec3 tint = unpack_tint(plant.tint);
+          EXPECT_TRUE(glm::all(glm::lessThanEqual(glm::abs(tint - 1.0f), glm::vec3(s.tint_spread + 0.002f)))) << s.name;
+        }
+      }
+    }
+    EXPECT_GT(plants, 100u) << l.name;
+    EXPECT_GT(unruled_plants, plants) << l.name << ": the rules keep some plants out";
+  }
+}
+
+// Inside, and spread over all of it: where plants grow everywhere, their mean offset from their
+// cells' centres is 0 within five deviations of a uniform spread (a cell's side / sqrt(12 n)).
+// Moss's cells of 7.3 m (no float's multiple) are where rounding 50 km out could carry plants
+// past their cell.
+TEST(LandscapeCells, PlantsSpreadOverTheirCellAndStayInsideItEvenFiftyKilometresOut) {
+  LandscapeSpec near = without_rules(forest());
+  near.layers.push_back({"moss", 7.3f, 2.0f, {species("moss", 1.0f)}});
+  LandscapeSpec wide = near;
+  wide.size = glm::vec2(LandscapeSpec::max_size);
+  for (const LandscapeSpec& spec : {near, wide}) {
+    for (int layer = 0; layer < 4; ++layer) {
+      const glm::ivec2 cells = cell_count(spec, layer);
+      glm::dvec2 offsets(0.0);
+      std::size_t plants = 0;
+      for (const glm::ivec2 block : {glm::ivec2(0), cells / 3, cells - 16}) {
+        for (int k = 0; k < 256; ++k) {
+          const CellKey key{layer, block.x + k % 16, block.y + k / 16};
+          const CellBounds bounds = cell_bounds(spec, key);
+          for (const LandscapePlant& plant : generate_cell(spec, key)) {
+            const glm::vec2 p = ground_position(plant);
+            EXPECT_TRUE(glm::all(glm::greaterThanEqual(p, bounds.min)) && glm::all(glm::lessThanEqual(p, bounds.max)))
+                << "layer " << layer << " cell " << key.x << ", " << key.z;
+            offsets += glm::dvec2((p - 0.5f * (bounds.min + bounds.max)) / (bounds.max - bounds.min));
+            ++plants;
+          }
+        }
+      }
+      ASSERT_GT(plants, 100u);
+      const double deviation = std::sqrt(1.0 / (12.0 * static_cast<double>(plants)));
+      EXPECT_NEAR(offsets.x / static_cast<double>(plants), 0.0, 5.0 * deviation) << "layer " << layer << " of " << spec.size.x << " m";
+      EXPECT_NEAR(offsets.y / static_cast<double>(plants), 0.0, 5.0 * deviation) << "layer " << layer << " of " << spec.size.x << " m";
+    }
+  }
+}
+
+// Value noise may break where its lattice lines are (each octave's at multiples of feature /
+// 2^octave, the valley's along x at multiples of its wavelength); cells' borders are where
+// neighbouring cells' plants meet. Across each, the height steps no more than the slope on
+// either side gives.
+TEST(LandscapeTerrain, HeightsAgreeAcrossLatticeLinesAndCellBorders) {
+  const LandscapeSpec spec = forest();
+  const LandscapeTerrain terrain(spec.terrain, spec.seed);
+  std::vector<float> borders;
+  const float finest = spec.terrain.feature / static_cast<float>(1 << (spec.terrain.octaves - 1));
+  for (int k = -40; k <= 40; k += 3) borders.push_back(finest * static_cast<float>(k));
+  for (int k = -1; k <= 1; ++k) borders.push_back(spec.terrain.valley_wavelength * static_cast<float>(k));
+  for (const LandscapeLayer& layer : spec.layers) {
+    for (int k = 0; k < 5; ++k) borders.push_back(cell_bounds(spec, {static_cast<int>(&layer - spec.layers.data()), 7 * k, 0}).min.x);
+  }
+  constexpr float step = 0.01f;
+  auto step_across = [&](float b, float along, bool across_x, float from, float to) {
+    return std::abs(across_x ? terrain.height(b + to, along) - terrain.height(b + from, along)
+                             : terrain.height(along, b + to) - terrain.height(along, b + from));
+  };
+  for (float b : borders) {
+    for (float along = -900.0f; along <= 900.0f; along += 37.0f) {
+      for (bool across_x : {true, false}) {
+        const float jump = step_across(b, along, across_x, -step, step);
+        const float sides = std::max(step_across(b, along, across_x, step, 3.0f * step), step_across(b, along, across_x, -3.0f * step, -step));
+        EXPECT_LE(jump, 2.0f * sides + 1e-3f) << "across " << (across_x ? "x = " : "z = ") << b << " at " << along;
+      }
+    }
+  }
+}
+
+TEST(LandscapeCells, MakesACellAtTheFarCornerOfA100KmLandscapeAloneAndAtOnce) {
+  LandscapeSpec spec = forest();
+  spec.size = glm::vec2(LandscapeSpec::max_size);
+  const int ground = 2;
+  const glm::ivec2 cells = cell_count(spec, ground);
+  ASSERT_EQ(cells, glm::ivec2(12500)) << "156 million cells of ground cover";
+  const CellKey corner{ground, cells.x - 1, cells.y - 1};
+  const double start = thread_seconds();
+  const std::vector<LandscapePlant> plants = generate_cell(spec, corner);
+  // Its 36 sites take microseconds; making first the cells before it in its row takes some 60 ms,
+  // all cells before it hours.
+  EXPECT_LT(thread_seconds() - start, 0.005);
+  EXPECT_FALSE(plants.empty());
+  EXPECT_LE(plants.capacity(), static_cast<std::size_t>(cell_sites(spec.layers[ground]).count())) << "room for its own sites only";
+  EXPECT_EQ(cell_bounds(spec, corner).max, 0.5f * spec.size);
+  EXPECT_TRUE(generate_cell(spec, {ground, cells.x, 0}).empty()) << "past the edge";
+}
+
+// Checked against every cell of the layer: those reaching within the radius (their nearest point
+// to the centre), and no other.
+TEST(LandscapeCells, CellsWithinARadiusAreThoseReachingIntoIt) {
+  const LandscapeSpec spec = forest();
+  for (const glm::vec3 disc : {glm::vec3(130.0f, -410.0f, 95.0f), glm::vec3(-990.0f, 990.0f, 60.0f), glm::vec3(3000.0f, 0.0f, 100.0f)}) {
+    const glm::vec2 center(disc.x, disc.y);
+    std::vector<CellKey> reaching;
+    const glm::ivec2 cells = cell_count(spec, 0);
+    for (int z = 0; z < cells.y; ++z) {
+      for (int x = 0; x < cells.x; ++x) {
+        const CellBounds b = cell_bounds(spec, {0, x, z});
+        const glm::vec2 nearest = glm::clamp(center, b.min, b.max);
+        if (glm::length(nearest - center) <= disc.z) reaching.push_back({0, x, z});
+      }
+    }
+    EXPECT_EQ(cells_within(spec, 0, center, disc.z), reaching) << center.x << ", " << center.y;
+  }
+}
+
+TEST(LandscapeCells, ExpectedSurfaceIsTheMeanOfTheSurfaceMade) {
+  LandscapeSpec spec;
+  spec.size = glm::vec2(640.0f);
+  spec.layers = {{"uniform", 32.0f, 0.05f, {species("a", 3.0f), species("b", 1.0f), species("nowhere", 1.0f)}}};
+  spec.layers[0].species[0].surface = 2.0f;
+  spec.layers[0].species[0].scale = {0.5f, 1.5f};
+  spec.layers[0].species[1].surface = 10.0f;
+  spec.layers[0].species[2].altitude = {1e6f, 1e7f};  // above every hill
+  // Mean squared scale over a uniform [a, b]: (a² + ab + b²) / 3.
+  const float per_plant = 0.6f * 2.0f * (0.25f + 0.75f + 2.25f) / 3.0f + 0.2f * 10.0f * (0.5625f + 0.9375f + 1.5625f) / 3.0f;
+  const glm::ivec2 cells = cell_count(spec, 0);
+  double expected = 0.0, made = 0.0, made_squares = 0.0;
+  for (int z = 0; z < cells.y; ++z) {
+    for (int x = 0; x < cells.x; ++x) {
+      const float cell = expected_surface(spec, {0, x, z});
+      EXPECT_NEAR(cell, 0.05f * 32.0f * 32.0f * per_plant, 1e-4f * cell);
+      expected += cell;
+      for (const LandscapePlant& plant : generate_cell(spec, {0, x, z})) {
+        ASSERT_NE(plant.species, 2u) << "grows nowhere";
+        const float scale = uniform_scale(glm::mat4(plant.transform));
+        const double surface = spec.layers[0].species[plant.species].surface * scale * scale;
+        made += surface;
+        made_squares += surface * surface;
+      }
+    }
+  }
+  // Each site adds a surface or nothing: five deviations of the sum of independent sites.
+  const double sites = static_cast<double>(cell_sites(spec.layers[0]).count()) * cells.x * cells.y;
+  const double variance = made_squares / sites - (made / sites) * (made / sites);
+  EXPECT_NEAR(made, expected, 5.0 * std::sqrt(sites * variance));
+}
+
+TEST(LandscapeSpec, CheckNamesTheFirstFieldOutOfRange) {
+  LandscapeSpec spec = forest();
+  spec.layers[1].species[0].scale = {2.0f, 1.0f};
+  try {
+    spec.check();
+    FAIL() << "a reversed scale range passed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("layers[1].species[0].scale:", 0), 0u) << e.what();
+  }
+  spec = forest();
+  spec.size.x = 2.0f * LandscapeSpec::max_size;
+  EXPECT_THROW(spec.check(), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace pointgen
