@@ -508,6 +508,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"unknown_method", "", {"--method", "magic"}, {"--method"}},
         BadInput{"shadowmap_without_map", "", {"--method", "volumes", "--aov", "color,shadowmap"}, {"--aov", "volumes"}},
         BadInput{"unknown_aov", "", {"--aov", "color,normals"}, {"--aov", "normals"}},
+        BadInput{"aov_format", "", {"--aov-format", "tiff"}, {"--aov-format", "png or exr", "'tiff'"}},
         BadInput{"unknown_scene", "", {"--scene", "no-such-scene"}, {"no-such-scene", "courtyard"}},
         BadInput{"light_index", "", {"--scene", "courtyard", "--light", "7"}, {"--light"}},
         BadInput{"huge_shadow_map", "", {"--shadow-size", "100000"}, {"--shadow-size"}},

@@ -15,6 +15,7 @@ struct CaptureOptions {
   std::string frames;
   double fps = 30.0;
   std::string aov = "color";
+  std::string aov_format = "png";
   bool force = false;
   std::string stats;  // per-frame figures as JSON, when not empty
   std::string out;
