@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 packages="build-essential cmake pkg-config python3 python3-glad
   libglfw3-dev libglm-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libosmesa6-dev
   libopenmesh-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libcli11-dev libgtest-dev libembree-dev libimgui-dev
-  libopenexr-dev
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libopenexr-dev
   xvfb xauth xdotool
   python3-matplotlib"
 

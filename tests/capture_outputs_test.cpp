@@ -1,11 +1,14 @@
-// What `ecoview capture` writes for other tools: float AOVs in OpenEXR (--aov-format exr).
+// What `ecoview capture` writes for other tools: an MP4 of the colour frames (--video) and float
+// AOVs in OpenEXR (--aov-format exr).
 #include "exr_channel.hpp"
 #include "test_support.hpp"
+#include "video_frames.hpp"
 
 #include <stb/stb_image.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -40,9 +43,95 @@ std::vector<std::uint16_t> load_png16(const fs::path& file) {
   return samples;
 }
 
+double mean_difference(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b) {
+  if (a.size() != b.size() || a.empty()) return std::numeric_limits<double>::infinity();
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) sum += std::abs(static_cast<int>(a[i]) - static_cast<int>(b[i]));
+  return sum / static_cast<double>(a.size());
+}
+
+std::string color_png(int frame) {
+  char name[32];
+  std::snprintf(name, sizeof name, "color_%05d.png", frame);
+  return name;
+}
+
+// Each frame of the video is the colour PNG of its frame: nearer to it than to any other frame's
+// (the path moves the camera), and near in itself (H.264 at high quality, colour at half size).
+void expect_the_frames_of(const VideoFrames& video, const fs::path& out, int frames) {
+  ASSERT_EQ(static_cast<int>(video.rgb.size()), frames);
+  for (int i = 0; i < frames; ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    int nearest_frame = -1;
+    for (int j = 0; j < frames; ++j) {
+      const double difference = mean_difference(video.rgb[static_cast<std::size_t>(i)], load_png(out / color_png(j), 3).samples);
+      if (difference < nearest) nearest = difference, nearest_frame = j;
+    }
+    EXPECT_EQ(nearest_frame, i) << "video frame " << i;
+    EXPECT_LT(nearest, 6.0) << "video frame " << i << ": mean difference to its PNG, of 255";
+  }
+}
+
+const std::vector<std::string> courtyard_path = {"capture", "--scene", "courtyard", "--path", "courtyard", "--fps", "4",
+                                                 "--size", "160x90"};
+
 std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
   args.insert(args.end(), more.begin(), more.end());
   return args;
+}
+
+TEST(CaptureVideo, TheMp4HoldsEveryFrameAtTheAskedSizeAndRate) {
+  const TempDir dir;
+  const fs::path video = dir / "flight.mp4";
+  const CommandResult r = run_ecoview(with(courtyard_path, {"--frames", "0:5", "--video", video.string(), "--out", (dir / "out").string()}));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const VideoFrames frames = read_video_frames(video);
+  ASSERT_TRUE(frames.error.empty()) << frames.error;
+  EXPECT_EQ(frames.codec, "h264");
+  EXPECT_EQ(frames.width, 160);
+  EXPECT_EQ(frames.height, 90);
+  EXPECT_EQ(frames.rate_num, 4 * frames.rate_den) << frames.rate_num << "/" << frames.rate_den;
+  expect_the_frames_of(frames, dir / "out", 5);
+  EXPECT_EQ(files_in(dir.path()), (std::vector<std::string>{"flight.mp4", "out"})) << "a temporary file stayed";
+}
+
+// Frames a resumed capture skips are read back from their PNGs: the video is the one a single run
+// made; and it is made again from frames all there.
+TEST(CaptureVideo, AResumedCaptureGivesTheVideoOfAllItsFrames) {
+  const TempDir dir;
+  const fs::path out = dir / "out", video = dir / "flight.mp4";
+  const std::vector<std::string> args = with(courtyard_path, {"--frames", "0:4", "--video", video.string(), "--out", out.string()});
+  ASSERT_EQ(run_ecoview(args).exit_code, 0);
+  const std::string whole = read_bytes(video);
+  fs::remove(video);
+  fs::remove(out / color_png(1));
+  fs::remove(out / color_png(3));
+  const CommandResult resumed = run_ecoview(args);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("wrote 2 frame(s)"), std::string::npos) << resumed.out;
+  const VideoFrames frames = read_video_frames(video);
+  expect_the_frames_of(frames, out, 4);
+  EXPECT_TRUE(read_bytes(video) == whole) << "the resumed video differs from the whole run's";
+
+  fs::remove(video);
+  const CommandResult complete = run_ecoview(args);
+  ASSERT_EQ(complete.exit_code, 0) << complete.err;
+  EXPECT_NE(complete.out.find("all 4 frames already"), std::string::npos) << complete.out;
+  EXPECT_TRUE(read_bytes(video) == whole) << "the video made from frames all there differs from the whole run's";
+}
+
+// A video is one size: frames a capture would skip that have another are refused before anything renders.
+TEST(CaptureVideo, SkippedFramesOfAnotherSizeAreRefusedBeforeRendering) {
+  const TempDir dir;
+  const fs::path out = dir / "out";
+  ASSERT_EQ(run_ecoview(with(courtyard_path, {"--frames", "0:2", "--out", out.string()})).exit_code, 0);
+  fs::remove(out / color_png(1));
+  const CommandResult r = run_ecoview({"capture", "--scene", "courtyard", "--path", "courtyard", "--fps", "4", "--size", "64x36",
+                                       "--frames", "0:2", "--video", (dir / "v.mp4").string(), "--out", out.string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("color_00000.png is 160x90, not --size 64x36"), std::string::npos) << r.err;
+  EXPECT_EQ(files_in(out), std::vector<std::string>{color_png(0)});
+  EXPECT_FALSE(fs::exists(dir / "v.mp4"));
 }
 
 // Seen from straight above, the ground is 10 m away in every pixel that sees it and a 2 m box's top

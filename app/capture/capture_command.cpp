@@ -3,6 +3,7 @@
 #include "app/bench/shadow_figures.hpp"
 #include "app/capture/aliasing_colours.hpp"
 #include "app/capture/aov.hpp"
+#include "app/capture/frame_video.hpp"
 #include "app/capture/png.hpp"
 #include "app/cli/options.hpp"
 #include "app/cli/progress.hpp"
@@ -107,6 +108,7 @@ CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
                                   "without writing images (a GPU left idle while a PNG is encoded clocks down)")->capture_default_str();
   cmd->add_option("--aov-format", o.aov_format, "png, or exr: depth, shadow and reference as 32-bit float OpenEXR")
       ->capture_default_str();
+  cmd->add_option("--video", o.video, "Also write the color frames as H.264 in this MP4 file, at --fps");
   cmd->add_flag("--force", o.force, "Render frames again even where their files exist (by default a capture "
                                     "resumes, skipping finished frames)");
   cmd->add_option("--stats", o.stats, "Also write each rendered frame's figures as JSON to this file: alias_p95, "
@@ -136,6 +138,8 @@ int run_capture(const CaptureOptions& o) {
   const FrameRange asked_frames = frames_asked ? parse_frames(o.frames) : FrameRange{};
   check_out_folder(o.out);
   check_output_file("--stats", o.stats, o.out);
+  const glm::ivec2 size(settings.width, settings.height);
+  check_video_option(o.video, o.out, size, std::find(aovs.begin(), aovs.end(), Aov::color) != aovs.end());
   const auto load_start = std::chrono::steady_clock::now();
   const Scene scene = load_scene_option(o.scene.name, o.scene.memory_budget_gib);
   std::cout << describe_scene(scene, std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count())
@@ -152,9 +156,17 @@ int run_capture(const CaptureOptions& o) {
     for (Aov aov : aovs) done = finished(aov_file(out, aov, frame, aov_format)) && done;
     if (o.force || !done) todo.push_back(frame);
   }
+  if (!o.video.empty()) check_skipped_frames(out, frames, todo, size);
+  const auto write_video = [&] {
+    if (o.video.empty()) return;
+    remove_stale_temporaries(fs::absolute(o.video).parent_path(), {fs::path(o.video).filename().string()});
+    write_frame_video(o.video, out, frames, size, fps);
+    std::cout << "capture: wrote " << frames.end - frames.begin << " frame(s) as a video to " << o.video << "\n";
+  };
   const int total = frames.end - frames.begin;
   if (todo.empty()) {
     std::cout << "capture: all " << total << " frames already in " << o.out << " (--force renders them again)\n";
+    write_video();
     return 0;
   }
 
@@ -202,6 +214,7 @@ int run_capture(const CaptureOptions& o) {
     std::cout << "capture: the last frame chose " << left_out << " points more than this driver's buffers hold; "
               << "they were not drawn (fewer plants, or a smaller --shadow-size or --k, draw them all)\n";
   }
+  write_video();
   return 0;
 }
 

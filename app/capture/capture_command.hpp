@@ -19,6 +19,7 @@ struct CaptureOptions {
   bool force = false;
   std::string stats;  // per-frame figures as JSON, when not empty
   std::string out;
+  std::string video;  // an MP4 of the color frames, when not empty
 };
 
 // Registers `ecoview capture` and its options on `app`.
