@@ -1,5 +1,5 @@
-// What `ecoview capture` writes for other tools: an MP4 of the colour frames (--video) and float
-// AOVs in OpenEXR (--aov-format exr).
+// What `ecoview capture` writes for other tools: an MP4 of the colour frames (--video), float
+// AOVs in OpenEXR (--aov-format exr), and one capture split across processes with GNU parallel.
 #include "exr_channel.hpp"
 #include "test_support.hpp"
 #include "video_frames.hpp"
@@ -191,6 +191,24 @@ TEST(CaptureExr, FloatAovsHoldWhatThePngsQuantise) {
     }
     EXPECT_GT(shadowed, 100) << aov << ": the box casts no shadow";
   }
+}
+
+// The README's recipe for a capture split across jobs, small and on a light scene: GNU parallel runs
+// one capture per frame range into one --out; the frames are the bytes one serial capture writes
+// (the PSM takes its near plane from the frame before: Renderer::start_after).
+TEST(CaptureSplit, ParallelJobsIntoOneFolderWriteTheFramesOfOneSerialCapture) {
+  if (run_shell("command -v parallel").exit_code != 0) GTEST_SKIP() << "GNU parallel is not on PATH";
+  const TempDir dir;
+  const std::string options = "--scene courtyard --path courtyard --method psm --fps 5 --size 160x90 --aov color,shadow";
+  const CommandResult serial = run_shell("ecoview capture " + options + " --frames 0:6 --out " + shell_quote((dir / "serial").string()));
+  ASSERT_EQ(serial.exit_code, 0) << serial.err;
+  const CommandResult split = run_shell("parallel --will-cite -j3 \"$ecoview_binary\" capture " + options + " --out " +
+                                        shell_quote((dir / "split").string()) + " --frames {} ::: 0:2 2:4 4:6");
+  ASSERT_EQ(split.exit_code, 0) << split.err;
+  const std::vector<std::string> files = files_in(dir / "serial");
+  ASSERT_EQ(files.size(), 12u);
+  ASSERT_EQ(files_in(dir / "split"), files);
+  for (const std::string& file : files) EXPECT_TRUE(read_bytes(dir / "split" / file) == read_bytes(dir / "serial" / file)) << file;
 }
 
 }  // namespace
