@@ -79,6 +79,7 @@ class H264Mp4File : public VideoEncoder {
   void open_file(const char* file);
   void make_frame(int width, int height);
   void write_packets();
+  void release();
 };
 
 H264Mp4File::H264Mp4File(const char* file, int width, int height, double fps) {
@@ -86,19 +87,28 @@ H264Mp4File::H264Mp4File(const char* file, int width, int height, double fps) {
   av_log_set_level(AV_LOG_ERROR);  // the encoder's statistics are not the capture's lines
   const AVCodec* h264 = h264_encoder();
   if (h264 == nullptr) throw RuntimeFailure(ecoview_why_no_h264());
-  check(avformat_alloc_output_context2(&format_, nullptr, "mp4", file), "make an MP4 file");
-  open_codec(*h264, width, height, fps);
-  open_file(file);
-  make_frame(width, height);
+  try {
+    check(avformat_alloc_output_context2(&format_, nullptr, "mp4", file), "make an MP4 file");
+    open_codec(*h264, width, height, fps);
+    open_file(file);
+    make_frame(width, height);
+  } catch (...) {
+    release();  // no destructor runs for an object whose constructor throws
+    throw;
+  }
 }
 
-H264Mp4File::~H264Mp4File() {
+H264Mp4File::~H264Mp4File() { release(); }
+
+void H264Mp4File::release() {
   av_packet_free(&packet_);
   av_frame_free(&frame_);
   sws_freeContext(to_yuv_);
+  to_yuv_ = nullptr;
   avcodec_free_context(&codec_);
   if (format_ && format_->pb) avio_closep(&format_->pb);
   avformat_free_context(format_);
+  format_ = nullptr;
 }
 
 void H264Mp4File::open_codec(const AVCodec& h264, int width, int height, double fps) {
