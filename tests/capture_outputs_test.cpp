@@ -151,6 +151,8 @@ TEST(CaptureExr, FloatAovsHoldWhatThePngsQuantise) {
   EXPECT_EQ(files_in(dir / "exr"),
             (std::vector<std::string>{"color_00000.png", "depth_00000.exr", "reference_00000.exr", "shadow_00000.exr"}));
   EXPECT_TRUE(read_bytes(dir / "exr" / "color_00000.png") == read_bytes(dir / "png" / "color_00000.png"));
+  const CommandResult again = run_ecoview(with(args, {"--aov-format", "exr", "--out", (dir / "exr").string()}));
+  EXPECT_NE(again.out.find("all 1 frames already"), std::string::npos) << "the EXRs were not taken as finished: " << again.out;
 
   const ExrChannel depth = read_exr_channel(dir / "exr" / "depth_00000.exr");
   const std::vector<std::uint16_t> depth_png = load_png16(dir / "png" / "depth_00000.png");
