@@ -22,16 +22,45 @@ std::filesystem::path temporary_name(const std::filesystem::path& path) {
   return temporary;
 }
 
-// The temporary file in flight, for the signal handler: a fixed buffer it may read, and a flag
-// set only while the name in it is whole.
+// A temporary file's name for the signal handler: a fixed buffer it may read, and a flag set only
+// while the name in it is whole.
+struct SignalRemovedName {
+  char name[4096];
+  volatile std::sig_atomic_t held = 0;
+
+  // A name too long for the buffer is not held: remove_stale_temporaries takes its file.
+  void hold(const std::filesystem::path& path) {
+    const std::string& native = path.native();
+    if (native.size() >= sizeof name) return;
+    std::memcpy(name, native.c_str(), native.size() + 1);
+    held = 1;
+  }
+  void release() { held = 0; }
+  void remove() const {
+    if (held) ::unlink(name);
+  }
+};
+
+// The file write_file_atomically has in flight, and the FileInProgress open.
 std::mutex one_write_at_a_time;
-char in_flight_name[4096];
-volatile std::sig_atomic_t in_flight = 0;
+SignalRemovedName in_flight;
+SignalRemovedName in_progress;
 
 extern "C" void remove_in_flight_and_end(int signal) {
-  if (in_flight) ::unlink(in_flight_name);
+  in_flight.remove();
+  in_progress.remove();
   std::signal(signal, SIG_DFL);
   std::raise(signal);
+}
+
+void rename_into_place(const std::filesystem::path& temporary, const std::filesystem::path& path) {
+  std::error_code ec;
+  std::filesystem::rename(temporary, path, ec);
+  if (ec) {
+    const std::string reason = ec.message();
+    std::filesystem::remove(temporary, ec);
+    throw RuntimeFailure(path.string() + ": cannot rename into place (" + reason + ")");
+  }
 }
 
 void write_temporary(const std::filesystem::path& temporary, const std::filesystem::path& path, std::string_view bytes) {
@@ -51,23 +80,30 @@ void write_temporary(const std::filesystem::path& temporary, const std::filesyst
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
   const std::lock_guard lock(one_write_at_a_time);
   const std::filesystem::path temporary = temporary_name(path);
-  const std::string& name = temporary.native();
-  const bool signal_removes = name.size() < sizeof in_flight_name;
-  if (signal_removes) {
-    std::memcpy(in_flight_name, name.c_str(), name.size() + 1);
-    in_flight = 1;
-  }
+  in_flight.hold(temporary);
   struct Landed {  // the flag is cleared however this ends
-    ~Landed() { in_flight = 0; }
+    ~Landed() { in_flight.release(); }
   } landed;
   write_temporary(temporary, path, bytes);
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    const std::string reason = ec.message();
-    std::filesystem::remove(temporary, ec);
-    throw RuntimeFailure(path.string() + ": cannot rename into place (" + reason + ")");
-  }
+  rename_into_place(temporary, path);
+}
+
+FileInProgress::FileInProgress(std::filesystem::path path) : path_(std::move(path)), temporary_(temporary_name(path_)) {
+  if (in_progress.held) throw std::logic_error("one FileInProgress at a time");
+  in_progress.hold(temporary_);
+}
+
+FileInProgress::~FileInProgress() {
+  in_progress.release();
+  if (finished_) return;
+  std::error_code ignored;
+  std::filesystem::remove(temporary_, ignored);
+}
+
+void FileInProgress::finish() {
+  rename_into_place(temporary_, path_);
+  finished_ = true;
+  in_progress.release();
 }
 
 void remove_temporary_on_signals() {

@@ -12,8 +12,29 @@ namespace ecoview {
 // One file is in flight at a time; a SIGINT or SIGTERM removes it (remove_temporary_on_signals).
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 
-// From now on SIGINT and SIGTERM remove the temporary file in flight before the process ends as
-// the signal would end it.
+// A file written over a long time by a library that opens it by name (a video, frame by frame): it
+// is made at temporary() (`path` + ".tmp" + the process id) and renamed to `path` by finish(), so
+// `path` is either absent or complete. Destroyed unfinished, or on SIGINT or SIGTERM
+// (remove_temporary_on_signals), the temporary file is removed. One is open at a time.
+class FileInProgress {
+ public:
+  explicit FileInProgress(std::filesystem::path path);
+  ~FileInProgress();
+  FileInProgress(const FileInProgress&) = delete;
+  FileInProgress& operator=(const FileInProgress&) = delete;
+
+  const std::filesystem::path& temporary() const { return temporary_; }
+  // Renames the temporary file into place; throws RuntimeFailure naming the file.
+  void finish();
+
+ private:
+  std::filesystem::path path_;
+  std::filesystem::path temporary_;
+  bool finished_ = false;
+};
+
+// From now on SIGINT and SIGTERM remove the temporary file in flight, and that of the
+// FileInProgress open, before the process ends as the signal would end it.
 void remove_temporary_on_signals();
 
 // Removes the temporary files write_file_atomically would leave in `folder` for the files named

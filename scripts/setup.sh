@@ -7,7 +7,8 @@ cd "$(dirname "$0")/.."
 packages="build-essential cmake pkg-config python3 python3-glad
   libglfw3-dev libglm-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libosmesa6-dev
   libopenmesh-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libcli11-dev libgtest-dev libembree-dev libimgui-dev
-  xvfb xauth xdotool
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libopenexr-dev
+  xvfb xauth xdotool parallel
   python3-matplotlib"
 
 if [ "${ECOVIEW_SKIP_APT:-0}" != 1 ]; then

@@ -81,5 +81,49 @@ TEST(FileIo, AFolderThatCannotTakeAFileIsSaidSo) {
   EXPECT_TRUE(cannot_write_in(dir / "missing"));
 }
 
+// A file written over a long time (a video) is at its own name only once finished; left
+// unfinished, its temporary file goes.
+TEST(FileIo, AFileInProgressLandsWhenFinishedAndVanishesOtherwise) {
+  const TempDir dir;
+  {
+    FileInProgress video(dir / "done.mp4");
+    write_text(video.temporary(), "frames");
+    EXPECT_EQ(files_in(dir.path()), std::vector<std::string>{"done.mp4.tmp" + std::to_string(::getpid())});
+    video.finish();
+  }
+  {
+    FileInProgress video(dir / "failed.mp4");
+    write_text(video.temporary(), "half");
+  }
+  EXPECT_EQ(files_in(dir.path()), std::vector<std::string>{"done.mp4"});
+  EXPECT_EQ(read_bytes(dir / "done.mp4"), "frames");
+}
+
+// A process stopped with a file in progress takes its temporary file with it.
+TEST(FileIo, ASignalRemovesTheFileInProgress) {
+  const TempDir dir;
+  int ready[2];
+  ASSERT_EQ(::pipe(ready), 0);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    remove_temporary_on_signals();
+    FileInProgress video(dir / "video.mp4");
+    write_text(video.temporary(), "frames");
+    if (::write(ready[1], "r", 1) != 1) std::_Exit(10);
+    ::pause();
+    std::_Exit(11);
+  }
+  ::close(ready[1]);  // a child that ends early ends the read below
+  char byte = 0;
+  const bool child_ready = ::read(ready[0], &byte, 1) == 1;
+  ::kill(child, SIGINT);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(child_ready);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << "status " << status;
+  EXPECT_TRUE(files_in(dir.path()).empty()) << "left behind: " << files_in(dir.path()).front();
+}
+
 }  // namespace
 }  // namespace ecoview::test

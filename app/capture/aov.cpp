@@ -1,12 +1,15 @@
 #include "app/capture/aov.hpp"
 
 #include "app/capture/aliasing_colours.hpp"
+#include "app/capture/exr_file.hpp"
 #include "app/capture/png.hpp"
 #include "app/errors.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <stdexcept>
 #include <sstream>
 
 namespace ecoview {
@@ -41,9 +44,23 @@ std::vector<Aov> parse_aov_list(const std::string& list) {
   return aovs;
 }
 
-std::filesystem::path aov_file(const std::filesystem::path& out, Aov aov, int frame) {
+AovFormat parse_aov_format(const std::string& name) {
+  if (name == "png") return AovFormat::png;
+  if (name == "exr") return AovFormat::exr;
+  throw InputError("--aov-format: expected png or exr, got '" + name + "'");
+}
+
+bool has_float_form(Aov aov) { return aov == Aov::depth || aov == Aov::shadow || aov == Aov::reference; }
+
+namespace {
+
+bool as_exr(Aov aov, AovFormat format) { return format == AovFormat::exr && has_float_form(aov); }
+
+}  // namespace
+
+std::filesystem::path aov_file(const std::filesystem::path& out, Aov aov, int frame, AovFormat format) {
   char name[64];
-  std::snprintf(name, sizeof name, "%s_%05d.png", aov_name(aov).c_str(), frame);
+  std::snprintf(name, sizeof name, "%s_%05d.%s", aov_name(aov).c_str(), frame, as_exr(aov, format) ? "exr" : "png");
   return out / name;
 }
 
@@ -57,9 +74,36 @@ Image8 depth_gray(const Image<float>& depth) {
   return image;
 }
 
+// Visibility 0..255 as 0..1. The renderer keeps it in 8 bits (an R8 target; the reference traces
+// lit or not), so these are its own values, in float.
+Image<float> visibility_fraction(const Image8& visibility) {
+  Image<float> fraction{visibility.width, visibility.height, 1, {}};
+  fraction.samples.reserve(visibility.samples.size());
+  for (std::uint8_t v : visibility.samples) fraction.samples.push_back(static_cast<float>(v) / 255.0f);
+  return fraction;
+}
+
+// Linear view depth in metres, +inf where no surface was drawn (negative in the frame's depth).
+Image<float> depth_metres(Image<float> depth) {
+  for (float& d : depth.samples) {
+    if (d < 0.0f) d = std::numeric_limits<float>::infinity();
+  }
+  return depth;
+}
+
+std::string encode_float_aov(Aov aov, Renderer& renderer) {
+  switch (aov) {
+    case Aov::depth: return encode_exr(depth_metres(renderer.frame().read_depth()), "Z");
+    case Aov::shadow: return encode_exr(visibility_fraction(renderer.frame().read_visibility()), "Y");
+    case Aov::reference: return encode_exr(visibility_fraction(renderer.exact_visibility()), "Y");
+    default: throw std::logic_error("encode_float_aov: " + aov_name(aov) + " has no float form");
+  }
+}
+
 }  // namespace
 
-std::string encode_aov(Aov aov, Renderer& renderer, float far) {
+std::string encode_aov(Aov aov, Renderer& renderer, float far, AovFormat format) {
+  if (as_exr(aov, format)) return encode_float_aov(aov, renderer);
   const FramePass& frame = renderer.frame();
   switch (aov) {
     case Aov::color: return encode_png(frame.read_color());

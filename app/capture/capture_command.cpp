@@ -3,6 +3,7 @@
 #include "app/bench/shadow_figures.hpp"
 #include "app/capture/aliasing_colours.hpp"
 #include "app/capture/aov.hpp"
+#include "app/capture/frame_video.hpp"
 #include "app/capture/png.hpp"
 #include "app/cli/options.hpp"
 #include "app/cli/progress.hpp"
@@ -50,10 +51,11 @@ bool finished(const fs::path& file) {
 }
 
 // The names of the files these frames write in `out`.
-std::set<std::string> frame_files(const fs::path& out, const std::vector<Aov>& aovs, const std::vector<int>& frames) {
+std::set<std::string> frame_files(const fs::path& out, const std::vector<Aov>& aovs, AovFormat format,
+                                  const std::vector<int>& frames) {
   std::set<std::string> names;
   for (int frame : frames) {
-    for (Aov aov : aovs) names.insert(aov_file(out, aov, frame).filename().string());
+    for (Aov aov : aovs) names.insert(aov_file(out, aov, frame, format).filename().string());
   }
   return names;
 }
@@ -104,6 +106,9 @@ CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
                                   "(heat map of shadow-map texels per pixel), shadowmap (the map itself), reference (exact "
                                   "visibility by ray tracing, encoded as shadow); or none, with --stats, to time frames "
                                   "without writing images (a GPU left idle while a PNG is encoded clocks down)")->capture_default_str();
+  cmd->add_option("--aov-format", o.aov_format, "png, or exr: depth, shadow and reference as 32-bit float OpenEXR")
+      ->capture_default_str();
+  cmd->add_option("--video", o.video, "Also write the color frames as H.264 in this MP4 file, at --fps");
   cmd->add_flag("--force", o.force, "Render frames again even where their files exist (by default a capture "
                                     "resumes, skipping finished frames)");
   cmd->add_option("--stats", o.stats, "Also write each rendered frame's figures as JSON to this file: alias_p95, "
@@ -117,6 +122,7 @@ int run_capture(const CaptureOptions& o) {
   RenderSettings settings = render_settings(o.render);
   const double fps = check_fps(o.fps);
   const std::vector<Aov> aovs = parse_aov_list(o.aov);
+  const AovFormat aov_format = parse_aov_format(o.aov_format);
   if (aovs.empty() && o.stats.empty()) throw InputError("--aov none writes no images: give --stats for the frames' figures");
   settings.aliasing = !o.stats.empty() || std::find(aovs.begin(), aovs.end(), Aov::aliasing) != aovs.end();
   if (std::find(aovs.begin(), aovs.end(), Aov::shadowmap) != aovs.end() &&
@@ -132,6 +138,8 @@ int run_capture(const CaptureOptions& o) {
   const FrameRange asked_frames = frames_asked ? parse_frames(o.frames) : FrameRange{};
   check_out_folder(o.out);
   check_output_file("--stats", o.stats, o.out);
+  const glm::ivec2 size(settings.width, settings.height);
+  check_video_option(o.video, o.out, size, std::find(aovs.begin(), aovs.end(), Aov::color) != aovs.end());
   const auto load_start = std::chrono::steady_clock::now();
   const Scene scene = load_scene_option(o.scene.name, o.scene.memory_budget_gib);
   std::cout << describe_scene(scene, std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count())
@@ -145,12 +153,20 @@ int run_capture(const CaptureOptions& o) {
   std::vector<int> todo;
   for (int frame = frames.begin; frame < frames.end; ++frame) {
     bool done = !aovs.empty();
-    for (Aov aov : aovs) done = finished(aov_file(out, aov, frame)) && done;
+    for (Aov aov : aovs) done = finished(aov_file(out, aov, frame, aov_format)) && done;
     if (o.force || !done) todo.push_back(frame);
   }
+  if (!o.video.empty()) check_skipped_frames(out, frames, todo, size);
+  const auto write_video = [&] {
+    if (o.video.empty()) return;
+    remove_stale_temporaries(fs::absolute(o.video).parent_path(), {fs::path(o.video).filename().string()});
+    write_frame_video(o.video, out, frames, size, fps);
+    std::cout << "capture: wrote " << frames.end - frames.begin << " frame(s) as a video to " << o.video << "\n";
+  };
   const int total = frames.end - frames.begin;
   if (todo.empty()) {
     std::cout << "capture: all " << total << " frames already in " << o.out << " (--force renders them again)\n";
+    write_video();
     return 0;
   }
 
@@ -163,7 +179,7 @@ int run_capture(const CaptureOptions& o) {
   }
   // A process killed while writing a file left its temporary one; the files written again here
   // take theirs away.
-  remove_stale_temporaries(out, frame_files(out, aovs, todo));
+  remove_stale_temporaries(out, frame_files(out, aovs, aov_format, todo));
   if (!o.stats.empty()) remove_stale_temporaries(fs::absolute(o.stats).parent_path(), {fs::path(o.stats).filename().string()});
   Progress progress("capture: frame", todo.size());
   nlohmann::json stats = nlohmann::json::array();
@@ -182,7 +198,7 @@ int run_capture(const CaptureOptions& o) {
     glFinish();
     const double render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - render_start).count();
     for (Aov aov : aovs) {
-      write_file_atomically(aov_file(out, aov, frame), encode_aov(aov, renderer, camera.far));
+      write_file_atomically(aov_file(out, aov, frame, aov_format), encode_aov(aov, renderer, camera.far, aov_format));
     }
     if (!o.stats.empty()) stats.push_back(frame_stats(frame, t, render_ms, o.render, renderer));
     progress.step();
@@ -198,6 +214,7 @@ int run_capture(const CaptureOptions& o) {
     std::cout << "capture: the last frame chose " << left_out << " points more than this driver's buffers hold; "
               << "they were not drawn (fewer plants, or a smaller --shadow-size or --k, draw them all)\n";
   }
+  write_video();
   return 0;
 }
 

@@ -15,9 +15,11 @@ struct CaptureOptions {
   std::string frames;
   double fps = 30.0;
   std::string aov = "color";
+  std::string aov_format = "png";
   bool force = false;
   std::string stats;  // per-frame figures as JSON, when not empty
   std::string out;
+  std::string video;  // an MP4 of the color frames, when not empty
 };
 
 // Registers `ecoview capture` and its options on `app`.

@@ -1,6 +1,7 @@
 // A PNG encoder for both sample sizes (stb_image_write has no 16-bit output); stb does the deflate.
 #include "app/capture/png.hpp"
 
+#include <stb/stb_image.h>
 
 #include <array>
 #include <cstdlib>
@@ -88,6 +89,23 @@ std::string encode_png(const Image16& image) {
     rows.push_back(static_cast<char>(v & 0xFF));
   }
   return encode(image.width, image.height, image.channels, 16, rows);
+}
+
+std::optional<Image8> read_png_rgb(const std::filesystem::path& file) {
+  Image8 image{0, 0, 3, {}};
+  int channels = 0;
+  unsigned char* pixels = stbi_load(file.c_str(), &image.width, &image.height, &channels, 3);
+  if (pixels == nullptr) return std::nullopt;
+  image.samples.assign(pixels, pixels + static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 3);
+  stbi_image_free(pixels);
+  return image;
+}
+
+std::optional<glm::ivec2> read_png_size(const std::filesystem::path& file) {
+  glm::ivec2 size;
+  int channels = 0;
+  if (!stbi_info(file.c_str(), &size.x, &size.y, &channels)) return std::nullopt;
+  return size;
 }
 
 }  // namespace ecoview
