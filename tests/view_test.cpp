@@ -228,6 +228,18 @@ TEST(View, OrbitCirclesTheSurfaceInViewAndPWritesTheFrame) {
   EXPECT_EQ(frame.height, 240);
 }
 
+// Esc ends the run before --exit-after's count: the screenshot is the frame Esc closed, the same
+// as a frame counted out (the camera stays where the scene puts it).
+TEST(View, EscWritesTheScreenshotOfTheFrameItCloses) {
+  const TempDir dir;
+  const CommandResult r = view_with_keys(dir, "--exit-after 100000 --screenshot " + shell_quote((dir / "esc.png").string()), "");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const CommandResult counted = run_ecoview({"view", "--scene", (dir / "box.json").string(), "--size", "320x240", "--no-hud",
+                                             "--exit-after", "2", "--screenshot", (dir / "counted.png").string()});
+  ASSERT_EQ(counted.exit_code, 0) << counted.err;
+  EXPECT_EQ(read_bytes(dir / "esc.png"), read_bytes(dir / "counted.png"));
+}
+
 // The HUD draws its panel, the shadow-map inset and the aliasing overlay where they belong: each
 // changes its part of the window and leaves the rest as the frame alone shows it.
 TEST(View, HudDrawsThePanelTheInsetAndTheOverlay) {

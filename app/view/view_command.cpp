@@ -26,8 +26,8 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
   cmd->add_option("--fps", o.fps, "Step time by 1/fps per frame, as capture does, instead of the clock "
                                   "(a path then replays frame for frame as in capture)");
   cmd->add_option("--exit-after", o.exit_after, "Close after this many frames (0: when the window is closed)");
-  cmd->add_option("--screenshot", o.screenshot, "After the last frame, write the window as shown (HUD included) "
-                                                "to this PNG file");
+  cmd->add_option("--screenshot", o.screenshot, "Write the window as shown (HUD included) in the last frame, the "
+                                                "--exit-after Nth or the one Esc closes, to this PNG file");
   cmd->add_option("--out", o.out, "Folder P writes frames to, named as capture names them (color_<frame>.png)")
       ->capture_default_str();
   cmd->add_flag("--no-hud", o.no_hud, "Start with the HUD hidden (H shows it)");
@@ -49,6 +49,7 @@ int run_view(const ViewOptions& o) {
   if (!o.play.empty()) settings.play = CameraPath::load(open_input(o.play, "paths"));
   settings.record_file = o.record;
   settings.out = o.out;
+  settings.screenshot = o.screenshot;
   settings.hud = !o.no_hud;
   settings.shadow_map_inset = o.shadow_map_inset;
   settings.aliasing_overlay = o.aliasing_overlay;
@@ -64,7 +65,7 @@ int run_view(const ViewOptions& o) {
   Viewer viewer(scene, settings, window);
   try {
     for (int frame = 0; !window.should_close() && (o.exit_after == 0 || frame < o.exit_after); ++frame) {
-      viewer.frame(frame + 1 == o.exit_after ? o.screenshot : "");
+      viewer.frame(frame + 1 == o.exit_after);
       if (frame == 0) {
         std::cout << "view: first frame after " << static_cast<int>(ms_since(load_start) / 100.0) / 10.0
                   << " s; WASD and Q/E fly, drag to look, O orbits, R records, P writes the frame, Esc quits" << std::endl;

@@ -33,7 +33,7 @@ double Viewer::scene_time(Clock::time_point now) const {
   return std::chrono::duration<double>(now - origin_).count();
 }
 
-void Viewer::frame(const std::string& screenshot) {
+void Viewer::frame(bool last) {
   const auto start = Clock::now();
   const double seconds = std::chrono::duration<double>(start - last_frame_start_).count();
   last_frame_start_ = start;
@@ -53,7 +53,7 @@ void Viewer::frame(const std::string& screenshot) {
   renderer_.frame().present(size.x, size.y);
   if (write_frame_) write_capture_frame();
   if (hud_shown_) hud_.draw(status(), renderer_, controls_);
-  if (!screenshot.empty()) write_window(screenshot);
+  if (!settings_.screenshot.empty() && (last || window_.should_close())) write_window(settings_.screenshot);
   window_.swap_and_poll();
   frame_ms_.push_back(ms_since(start));
   ++frame_;
