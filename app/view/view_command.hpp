@@ -18,6 +18,7 @@ struct ViewOptions {
   std::string screenshot;            // the window as shown in the last frame
   std::string out = ".";             // where P writes frames as capture does
   bool no_hud = false;
+  bool full_hud = false;
   bool shadow_map_inset = false;
   bool aliasing_overlay = false;
 };

@@ -19,7 +19,7 @@ Viewer::Viewer(const Scene& scene, Settings settings, GlfwWindow& window)
       renderer_(scene, settings_.render),
       hud_(window),
       controls_{settings_.render.method, settings_.render.shadow_size, settings_.render.k, settings_.light,
-                settings_.shadow_map_inset, settings_.aliasing_overlay},
+                settings_.shadow_map_inset, settings_.aliasing_overlay, settings_.full_hud},
       flight_(scene.camera),
       camera_(scene.camera),
       following_path_(settings_.play.has_value()),
@@ -78,6 +78,7 @@ void Viewer::handle_keys() {
     switch (key) {
       case GLFW_KEY_ESCAPE: window_.close(); break;
       case GLFW_KEY_H: hud_shown_ = !hud_shown_; break;
+      case GLFW_KEY_TAB: toggle_full_panel(); break;
       case GLFW_KEY_O: toggle_orbit(); break;
       case GLFW_KEY_R: toggle_recording(); break;
       case GLFW_KEY_P: write_frame_ = true; break;
@@ -86,6 +87,12 @@ void Viewer::handle_keys() {
       default: break;
     }
   }
+}
+
+// Tab unfolds the panel, or folds it again; on a hidden HUD it shows the panel unfolded.
+void Viewer::toggle_full_panel() {
+  controls_.full_panel = !(hud_shown_ && controls_.full_panel);
+  hud_shown_ = true;
 }
 
 FlightInput Viewer::flight_input() {

@@ -26,6 +26,7 @@ class Viewer {
     std::string out;  // folder of P's frames
     std::string screenshot;  // file the last frame's window goes to, if any
     bool hud = true;
+    bool full_hud = false;  // the HUD's panel unfolded
     bool shadow_map_inset = false;
     bool aliasing_overlay = false;
   };
@@ -43,6 +44,7 @@ class Viewer {
   // Scene time: seconds since the start (or since recording started), or frames / fps.
   double scene_time(Clock::time_point now) const;
   void handle_keys();
+  void toggle_full_panel();
   FlightInput flight_input();
   shadow::Camera place_camera(double t, double seconds);
   void toggle_orbit();
