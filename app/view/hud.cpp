@@ -54,6 +54,13 @@ bool has_map(const Renderer& renderer) {
          renderer.shadow_setup().selection != shadow::ViewSelection::screen_mask;
 }
 
+// Whether the frame's shadows come from a map, paged or not, made at the settings' size: not
+// without shadows, nor from shadow volumes' screen mask.
+bool uses_shadow_size(const Renderer& renderer) {
+  return shadow::technique(renderer.settings().method).lookup != shadow::Lookup::none &&
+         renderer.shadow_setup().selection != shadow::ViewSelection::screen_mask;
+}
+
 }  // namespace
 
 Hud::Hud(GlfwWindow& window) {
@@ -114,7 +121,7 @@ void Hud::draw_panel(const ViewStatus& status, const Renderer& renderer, ViewCon
 void Hud::draw_summary(const ViewStatus& status, const Renderer& renderer, bool folded) {
   const RenderSettings& settings = renderer.settings();
   const FrameStats& s = renderer.stats();
-  const std::string map = has_map(renderer) ? ", map " + std::to_string(settings.shadow_size) : "";
+  const std::string map = uses_shadow_size(renderer) ? ", map " + std::to_string(settings.shadow_size) : "";
   ImGui::Text("frame %.0f ms (%.1f fps), %s%s", status.frame_ms, status.frame_ms > 0.0 ? 1000.0 / status.frame_ms : 0.0,
               shadow::technique(settings.method).name.c_str(), map.c_str());
   ImGui::Text("points %s, triangles %s", millions(s.points).c_str(), millions(s.triangles).c_str());
