@@ -70,6 +70,19 @@ Rgb load_rgb(const std::filesystem::path& png) {
   return image;
 }
 
+// The share of pixels in [x0, x1) x [y0, y1) (rows from the top) where two shots of one size differ.
+double changed(const Rgb& a, const Rgb& b, int x0, int y0, int x1, int y1) {
+  int n = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      const std::size_t i = 3 * (static_cast<std::size_t>(y) * a.width + x);
+      n += a.pixels[i] != b.pixels[i] || a.pixels[i + 1] != b.pixels[i + 1] || a.pixels[i + 2] != b.pixels[i + 2];
+    }
+  }
+  return static_cast<double>(n) / ((x1 - x0) * (y1 - y0));
+}
+double changed(const Rgb& a, const Rgb& b) { return changed(a, b, 0, 0, a.width, a.height); }
+
 // A box over the plane, the camera above looking down at a slant, the light from the side.
 FloatingBox box_scene() {
   FloatingBox s;
@@ -153,13 +166,13 @@ glm::vec3 summary_point(const std::string& out, const std::string& label) {
 glm::vec3 final_position(const std::string& out) { return summary_point(out, "camera at"); }
 glm::vec3 final_target(const std::string& out) { return summary_point(out, "looking at"); }
 
-// Runs the viewer on the box scene at 320x240 with `options`, and once it shows its first frame,
-// the xdotool commands of `keys` (one per line, in its window); returns the viewer's output.
+// Runs the viewer on the box scene with `options`, and once it shows its first frame, the xdotool
+// commands of `keys` (one per line, in its window); returns the viewer's output.
 CommandResult view_with_keys(const TempDir& dir, const std::string& options, const std::string& keys) {
   write_text(dir / "box.json", box_scene().scene_json());
   const std::string out = (dir / "out.txt").string();
   return run_shell("timeout 120 \"$ecoview_binary\" view --scene " + shell_quote((dir / "box.json").string()) +
-                   " --size 320x240 --no-hud " + options + " >" + shell_quote(out) + " & pid=$!\n"
+                   " " + options + " >" + shell_quote(out) + " & pid=$!\n"
                    "for i in $(seq 600); do grep -q 'first frame' " + shell_quote(out) + " && break; sleep 0.1; done\n"
                    "grep -q 'first frame' " + shell_quote(out) + " || { kill $pid; echo 'no first frame in 60 s' >&2; exit 4; }\n"
                    "window=$(timeout 30 xdotool search --sync --name '^ecoview') || { kill $pid; exit 3; }\n"
@@ -174,7 +187,7 @@ TEST(View, KeysFlyTheCameraAndRecordAPath) {
   const TempDir dir;
   const FloatingBox scene = box_scene();
   const std::string path = (dir / "recorded.json").string();
-  const CommandResult r = view_with_keys(dir, "--record " + shell_quote(path),
+  const CommandResult r = view_with_keys(dir, "--size 320x240 --no-hud --record " + shell_quote(path),
                                          "xdotool key r && sleep 0.3 && xdotool keydown w && sleep 1 && xdotool keyup w && "
                                          "sleep 0.3 && xdotool key r");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -208,7 +221,7 @@ TEST(View, KeysFlyTheCameraAndRecordAPath) {
 TEST(View, OrbitCirclesTheSurfaceInViewAndPWritesTheFrame) {
   const TempDir dir;
   const FloatingBox scene = box_scene();
-  const CommandResult r = view_with_keys(dir, "--out " + shell_quote(dir.path().string()),
+  const CommandResult r = view_with_keys(dir, "--size 320x240 --no-hud --out " + shell_quote(dir.path().string()),
                                          "xdotool key o && sleep 0.3 && xdotool keydown d && sleep 0.5 && xdotool keyup d && "
                                          "sleep 0.3 && xdotool key p && sleep 0.5");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -228,39 +241,82 @@ TEST(View, OrbitCirclesTheSurfaceInViewAndPWritesTheFrame) {
   EXPECT_EQ(frame.height, 240);
 }
 
-// The HUD draws its panel, the shadow-map inset and the aliasing overlay where they belong: each
-// changes its part of the window and leaves the rest as the frame alone shows it.
+// Esc ends the run before --exit-after's count: the screenshot is the frame Esc closed, the same
+// as a frame counted out (the camera stays where the scene puts it).
+TEST(View, EscWritesTheScreenshotOfTheFrameItCloses) {
+  const TempDir dir;
+  const CommandResult r = view_with_keys(dir, "--size 320x240 --no-hud --exit-after 100000 --screenshot " +
+                                                  shell_quote((dir / "esc.png").string()), "");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const CommandResult counted = run_ecoview({"view", "--scene", (dir / "box.json").string(), "--size", "320x240", "--no-hud",
+                                             "--exit-after", "2", "--screenshot", (dir / "counted.png").string()});
+  ASSERT_EQ(counted.exit_code, 0) << counted.err;
+  EXPECT_EQ(read_bytes(dir / "esc.png"), read_bytes(dir / "counted.png"));
+}
+
+// The box scene's window of `size` after two frames with `options`, shot into `dir`/`name`.
+Rgb window_shot(const TempDir& dir, const std::string& name, const std::string& size, const std::vector<std::string>& options) {
+  write_text(dir / "box.json", box_scene().scene_json());
+  std::vector<std::string> args = {"view", "--scene", (dir / "box.json").string(), "--size", size, "--exit-after", "2",
+                                   "--screenshot", (dir / name).string()};
+  args.insert(args.end(), options.begin(), options.end());
+  const CommandResult r = run_ecoview(args);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return load_rgb(dir / name);
+}
+
+// The HUD draws its full panel, the shadow-map inset and the aliasing overlay where they belong:
+// each changes its part of the window and leaves the rest as the frame alone shows it.
 TEST(View, HudDrawsThePanelTheInsetAndTheOverlay) {
   const TempDir dir;
-  write_text(dir / "box.json", box_scene().scene_json());
-  auto shot = [&](const std::string& name, std::vector<std::string> options) {
-    std::vector<std::string> args = {"view", "--scene", (dir / "box.json").string(), "--size", "640x480", "--exit-after", "2",
-                                     "--screenshot", (dir / name).string()};
-    args.insert(args.end(), options.begin(), options.end());
-    const CommandResult r = run_ecoview(args);
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    return load_rgb(dir / name);
-  };
-  const Rgb bare = shot("bare.png", {"--no-hud"}), panel = shot("panel.png", {});
-  const Rgb inset = shot("inset.png", {"--shadow-map-inset"}), overlay = shot("overlay.png", {"--aliasing-overlay"});
+  auto shot = [&](const std::string& name, const std::vector<std::string>& options) { return window_shot(dir, name, "640x480", options); };
+  const Rgb bare = shot("bare.png", {"--no-hud"}), panel = shot("panel.png", {"--full-hud"});
+  const Rgb inset = shot("inset.png", {"--full-hud", "--shadow-map-inset"});
+  const Rgb overlay = shot("overlay.png", {"--full-hud", "--aliasing-overlay"});
   for (const Rgb* shot : {&bare, &panel, &inset, &overlay}) ASSERT_EQ(shot->pixels.size(), 640u * 480u * 3u);
-  // The share of pixels in [x0, x1) x [y0, y1) (rows from the top) where two shots differ.
-  auto changed = [](const Rgb& a, const Rgb& b, int x0, int y0, int x1, int y1) {
-    int n = 0;
-    for (int y = y0; y < y1; ++y) {
-      for (int x = x0; x < x1; ++x) {
-        const std::size_t i = 3 * (static_cast<std::size_t>(y) * 640 + x);
-        n += a.pixels[i] != b.pixels[i] || a.pixels[i + 1] != b.pixels[i + 1] || a.pixels[i + 2] != b.pixels[i + 2];
-      }
-    }
-    return static_cast<double>(n) / ((x1 - x0) * (y1 - y0));
-  };
   EXPECT_GT(changed(bare, panel, 10, 10, 300, 100), 0.9) << "no panel at the top left";
   EXPECT_EQ(changed(bare, panel, 0, 440, 640, 480), 0.0) << "the panel reaches the bottom";
   EXPECT_GT(changed(panel, inset, 520, 40, 630, 260), 0.9) << "no inset at the top right";
   EXPECT_EQ(changed(panel, inset, 0, 440, 640, 480), 0.0);
   // The overlay tints every surface below the panel; the sky above the horizon keeps its colour.
   EXPECT_GT(changed(panel, overlay, 0, 440, 640, 480), 0.9) << "no aliasing overlay";
+}
+
+// The HUD's tests' window: the size the issue measured it at.
+Rgb hud_shot(const TempDir& dir, const std::string& name, const std::vector<std::string>& options) {
+  return window_shot(dir, name, "960x540", options);
+}
+
+// The HUD starts folded to its summary lines, a small part of the window; unfolded (--full-hud)
+// it covers many times that.
+TEST(ViewerHud, TheFoldedPanelCoversUnderATwentiethOfTheWindow) {
+  const TempDir dir;
+  const Rgb bare = hud_shot(dir, "bare.png", {"--no-hud"}), folded = hud_shot(dir, "folded.png", {});
+  const Rgb full = hud_shot(dir, "full.png", {"--full-hud"});
+  for (const Rgb* shot : {&folded, &full}) ASSERT_EQ(shot->pixels.size(), bare.pixels.size());
+  ASSERT_EQ(bare.pixels.size(), 960u * 540u * 3u);
+  EXPECT_GT(changed(bare, folded, 8, 8, 200, 30), 0.9) << "no summary at the top left";
+  EXPECT_LT(changed(bare, folded), 0.05);
+  EXPECT_GT(changed(bare, full), 4 * changed(bare, folded));
+}
+
+// Keys typed into a window of the box scene at 960x540 (the folded HUD at first); the window as
+// it was when Esc closed it, from `dir`/`name`.
+Rgb shot_after_keys(const TempDir& dir, const std::string& name, const std::string& keys) {
+  const CommandResult r = view_with_keys(dir, "--size 960x540 --exit-after 100000 --screenshot " + shell_quote((dir / name).string()), keys);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  return load_rgb(dir / name);
+}
+
+// Tab unfolds the full panel; H hides it and the rest of the HUD, leaving the frame alone.
+TEST(ViewerHud, TabUnfoldsTheFullPanelAndHHidesEverything) {
+  const TempDir dir;
+  const Rgb bare = hud_shot(dir, "bare.png", {"--no-hud"}), folded = hud_shot(dir, "folded.png", {});
+  const Rgb unfolded = shot_after_keys(dir, "tab.png", "xdotool key Tab && sleep 0.5");
+  const Rgb hidden = shot_after_keys(dir, "tab_h.png", "xdotool key Tab && sleep 0.3 && xdotool key h && sleep 0.5");
+  for (const Rgb* shot : {&folded, &unfolded, &hidden}) ASSERT_EQ(shot->pixels.size(), bare.pixels.size());
+  EXPECT_GT(changed(bare, unfolded), 4 * changed(bare, folded));
+  EXPECT_EQ(changed(bare, hidden), 0.0);
 }
 
 TEST(View, WithoutADisplayPointsToCapture) {

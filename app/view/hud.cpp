@@ -48,6 +48,19 @@ std::vector<std::uint8_t> translucent(const Image8& heat_map, std::uint8_t alpha
   return rgba;
 }
 
+// Whether the method looks its shadows up in a map the inset and the overlay can show.
+bool has_map(const Renderer& renderer) {
+  return shadow::technique(renderer.settings().method).lookup == shadow::Lookup::map &&
+         renderer.shadow_setup().selection != shadow::ViewSelection::screen_mask;
+}
+
+// Whether the frame's shadows come from a map, paged or not, made at the settings' size: not
+// without shadows, nor from shadow volumes' screen mask.
+bool uses_shadow_size(const Renderer& renderer) {
+  return shadow::technique(renderer.settings().method).lookup != shadow::Lookup::none &&
+         renderer.shadow_setup().selection != shadow::ViewSelection::screen_mask;
+}
+
 }  // namespace
 
 Hud::Hud(GlfwWindow& window) {
@@ -76,35 +89,62 @@ void Hud::draw(const ViewStatus& status, const Renderer& renderer, ViewControls&
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
-  const bool has_map = shadow::technique(renderer.settings().method).lookup == shadow::Lookup::map &&
-                       renderer.shadow_setup().selection != shadow::ViewSelection::screen_mask;
-  if (controls.aliasing_overlay && has_map) draw_aliasing_overlay(renderer);
+  if (controls.aliasing_overlay && has_map(renderer)) draw_aliasing_overlay(renderer);
   draw_panel(status, renderer, controls);
-  if (controls.shadow_map_inset && has_map) draw_shadow_map_inset(renderer);
+  if (controls.shadow_map_inset && has_map(renderer)) draw_shadow_map_inset(renderer);
   ImGui::Render();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
+// Folded, the panel is the summary alone and lets the mouse through to fly the camera.
 void Hud::draw_panel(const ViewStatus& status, const Renderer& renderer, ViewControls& controls) {
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.75f);
-  ImGui::Begin("ecoview", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_AlwaysAutoResize;
+  if (!controls.full_panel) flags |= ImGuiWindowFlags_NoInputs;
+  ImGui::Begin("ecoview", nullptr, flags);
+  draw_summary(status, renderer, !controls.full_panel);
+  if (controls.full_panel) {
+    draw_details(status, renderer);
+    ImGui::Separator();
+    draw_controls(renderer, controls);
+    ImGui::Separator();
+    ImGui::TextDisabled("WASD move, Q/E down/up, drag to look, wheel or +/- speed, O orbit,");
+    ImGui::TextDisabled("R record path, P write frame, Tab fold this, H hide all, Esc quit");
+  }
+  ImGui::End();
+}
+
+// What a glance needs: the frame rate, the method and its map, the geometry drawn, and what the
+// viewer is doing (recording, playing, a file written or an error).
+void Hud::draw_summary(const ViewStatus& status, const Renderer& renderer, bool folded) {
+  const RenderSettings& settings = renderer.settings();
   const FrameStats& s = renderer.stats();
-  ImGui::Text("frame %.0f ms (%.1f fps)", status.frame_ms, status.frame_ms > 0.0 ? 1000.0 / status.frame_ms : 0.0);
-  ImGui::Text("shadow pass %.0f ms, frame pass %.0f ms, sampling %.0f ms, host %.0f ms", s.shadow_pass_ms, s.frame_pass_ms,
-              s.sample_ms, s.host_ms);
-  ImGui::Text("points %s, triangles %s, shadow points %s", millions(s.points).c_str(), millions(s.triangles).c_str(),
-              millions(s.shadow_points).c_str());
+  const std::string map = uses_shadow_size(renderer) ? ", map " + std::to_string(settings.shadow_size) : "";
+  ImGui::Text("frame %.0f ms (%.1f fps), %s%s", status.frame_ms, status.frame_ms > 0.0 ? 1000.0 / status.frame_ms : 0.0,
+              shadow::technique(settings.method).name.c_str(), map.c_str());
+  ImGui::Text("points %s, triangles %s", millions(s.points).c_str(), millions(s.triangles).c_str());
+  if (folded) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(Tab: more)");
+  }
+  if (!status.activity.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", status.activity.c_str());
+}
+
+void Hud::draw_details(const ViewStatus& status, const Renderer& renderer) {
+  const FrameStats& s = renderer.stats();
+  ImGui::Text("shadow pass %.0f ms (points %s), frame pass %.0f ms, sampling %.0f ms, host %.0f ms", s.shadow_pass_ms,
+              millions(s.shadow_points).c_str(), s.frame_pass_ms, s.sample_ms, s.host_ms);
   // A fixed wrap width: wrapping at the window's own in an auto-sized window takes frames to settle.
   ImGui::PushTextWrapPos(ImGui::GetFontSize() * 34.0f);
   ImGui::TextUnformatted(status.scene.c_str());
   ImGui::PopTextWrapPos();
   ImGui::Text("camera (%.1f, %.1f, %.1f), %s, speed %.1f m/s", status.position.x, status.position.y, status.position.z,
               status.orbiting ? "orbit" : "flight", status.speed);
-  if (!status.activity.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", status.activity.c_str());
-  ImGui::Separator();
+}
 
+void Hud::draw_controls(const Renderer& renderer, ViewControls& controls) {
   if (ImGui::BeginCombo("method", shadow::technique(controls.method).name.c_str())) {
     for (const shadow::Technique& t : shadow::techniques()) {
       if (ImGui::Selectable(t.name.c_str(), t.method == controls.method)) controls.method = t.method;
@@ -124,10 +164,6 @@ void Hud::draw_panel(const ViewStatus& status, const Renderer& renderer, ViewCon
   ImGui::SameLine();
   ImGui::Checkbox("aliasing overlay", &controls.aliasing_overlay);
   if (shadow::technique(renderer.settings().method).lookup != shadow::Lookup::none) ImGui::TextDisabled("%s", renderer.shadow_setup().description.c_str());
-  ImGui::Separator();
-  ImGui::TextDisabled("WASD move, Q/E down/up, drag to look, wheel or +/- speed, O orbit,");
-  ImGui::TextDisabled("R record path, P write frame, H hide this, Esc quit");
-  ImGui::End();
 }
 
 // A view of the map's first layer, read as plain depth (no comparison) shown in gray: no copy.

@@ -16,6 +16,7 @@ struct ViewControls {
   shadow::Light light;
   bool shadow_map_inset;
   bool aliasing_overlay;
+  bool full_panel;  // the panel's details and controls, or its summary lines alone
 };
 
 // What the HUD shows besides the renderer's own figures.
@@ -28,8 +29,9 @@ struct ViewStatus {
   std::string activity;       // recording, playing, the last file written, an error
 };
 
-// The heads-up display of ecoview view (Dear ImGui): figures of the last frame, the live controls,
-// an inset of the shadow map and the aliasing heat map over the frame.
+// The heads-up display of ecoview view (Dear ImGui): a panel of the last frame's figures, folded to
+// its summary lines or unfolded with the rest and the live controls; an inset of the shadow map and
+// the aliasing heat map over the frame.
 class Hud {
  public:
   // Installs ImGui's input callbacks on the window, chained to the window's own.
@@ -46,6 +48,9 @@ class Hud {
 
  private:
   void draw_panel(const ViewStatus& status, const Renderer& renderer, ViewControls& controls);
+  void draw_summary(const ViewStatus& status, const Renderer& renderer, bool folded);
+  void draw_details(const ViewStatus& status, const Renderer& renderer);
+  void draw_controls(const Renderer& renderer, ViewControls& controls);
   void draw_shadow_map_inset(const Renderer& renderer);
   void draw_aliasing_overlay(const Renderer& renderer);
 

@@ -15,7 +15,7 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "view", "Fly through a scene in a window. WASD move, Q/E down/up, drag the mouse to look, wheel or +/- "
               "change the speed, O orbits the point in view, R starts and stops recording a camera path, P writes "
-              "the frame as capture does, H hides the HUD, Esc quits");
+              "the frame as capture does, Tab unfolds the HUD's full panel (or folds it), H hides the HUD, Esc quits");
   add_scene_options(*cmd, o.scene);
   add_render_options(*cmd, o.render);
   cmd->add_option("--play", o.play, "Camera path (file or shipped name) to follow from t = 0; flight is free after "
@@ -26,11 +26,13 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
   cmd->add_option("--fps", o.fps, "Step time by 1/fps per frame, as capture does, instead of the clock "
                                   "(a path then replays frame for frame as in capture)");
   cmd->add_option("--exit-after", o.exit_after, "Close after this many frames (0: when the window is closed)");
-  cmd->add_option("--screenshot", o.screenshot, "After the last frame, write the window as shown (HUD included) "
-                                                "to this PNG file");
+  cmd->add_option("--screenshot", o.screenshot, "Write the window as shown (HUD included) in the last frame, the "
+                                                "--exit-after Nth or the one Esc closes, to this PNG file");
   cmd->add_option("--out", o.out, "Folder P writes frames to, named as capture names them (color_<frame>.png)")
       ->capture_default_str();
   cmd->add_flag("--no-hud", o.no_hud, "Start with the HUD hidden (H shows it)");
+  cmd->add_flag("--full-hud", o.full_hud, "Start with the HUD's full panel: pass times, scene, camera and the live "
+                                          "settings (Tab folds it to its summary lines)");
   cmd->add_flag("--shadow-map-inset", o.shadow_map_inset, "Start with the HUD's inset of the shadow map (its first view) on");
   cmd->add_flag("--aliasing-overlay", o.aliasing_overlay, "Start with the aliasing heat map over the frame (as the aliasing "
                                                           "AOV: blue 1/8 texel per pixel, green 1, red 8 and more)");
@@ -49,7 +51,9 @@ int run_view(const ViewOptions& o) {
   if (!o.play.empty()) settings.play = CameraPath::load(open_input(o.play, "paths"));
   settings.record_file = o.record;
   settings.out = o.out;
+  settings.screenshot = o.screenshot;
   settings.hud = !o.no_hud;
+  settings.full_hud = o.full_hud;
   settings.shadow_map_inset = o.shadow_map_inset;
   settings.aliasing_overlay = o.aliasing_overlay;
 
@@ -64,10 +68,11 @@ int run_view(const ViewOptions& o) {
   Viewer viewer(scene, settings, window);
   try {
     for (int frame = 0; !window.should_close() && (o.exit_after == 0 || frame < o.exit_after); ++frame) {
-      viewer.frame(frame + 1 == o.exit_after ? o.screenshot : "");
+      viewer.frame(frame + 1 == o.exit_after);
       if (frame == 0) {
         std::cout << "view: first frame after " << static_cast<int>(ms_since(load_start) / 100.0) / 10.0
-                  << " s; WASD and Q/E fly, drag to look, O orbits, R records, P writes the frame, Esc quits" << std::endl;
+                  << " s; WASD and Q/E fly, drag to look, O orbits, R records, P writes the frame, Tab shows the full "
+                     "HUD, H hides it, Esc quits" << std::endl;
       }
     }
   } catch (...) {

@@ -15,9 +15,10 @@ struct ViewOptions {
   std::string play;                 // camera path to follow from t = 0
   std::string record = "path.json";  // where R writes the recorded path
   std::optional<double> fps;         // none: real time; otherwise frame i is at time i / fps, as in capture
-  std::string screenshot;            // the window as shown after the last frame
+  std::string screenshot;            // the window as shown in the last frame
   std::string out = ".";             // where P writes frames as capture does
   bool no_hud = false;
+  bool full_hud = false;
   bool shadow_map_inset = false;
   bool aliasing_overlay = false;
 };

@@ -19,7 +19,7 @@ Viewer::Viewer(const Scene& scene, Settings settings, GlfwWindow& window)
       renderer_(scene, settings_.render),
       hud_(window),
       controls_{settings_.render.method, settings_.render.shadow_size, settings_.render.k, settings_.light,
-                settings_.shadow_map_inset, settings_.aliasing_overlay},
+                settings_.shadow_map_inset, settings_.aliasing_overlay, settings_.full_hud},
       flight_(scene.camera),
       camera_(scene.camera),
       following_path_(settings_.play.has_value()),
@@ -33,7 +33,7 @@ double Viewer::scene_time(Clock::time_point now) const {
   return std::chrono::duration<double>(now - origin_).count();
 }
 
-void Viewer::frame(const std::string& screenshot) {
+void Viewer::frame(bool last) {
   const auto start = Clock::now();
   const double seconds = std::chrono::duration<double>(start - last_frame_start_).count();
   last_frame_start_ = start;
@@ -53,7 +53,7 @@ void Viewer::frame(const std::string& screenshot) {
   renderer_.frame().present(size.x, size.y);
   if (write_frame_) write_capture_frame();
   if (hud_shown_) hud_.draw(status(), renderer_, controls_);
-  if (!screenshot.empty()) write_window(screenshot);
+  if (!settings_.screenshot.empty() && (last || window_.should_close())) write_window(settings_.screenshot);
   window_.swap_and_poll();
   frame_ms_.push_back(ms_since(start));
   ++frame_;
@@ -78,6 +78,7 @@ void Viewer::handle_keys() {
     switch (key) {
       case GLFW_KEY_ESCAPE: window_.close(); break;
       case GLFW_KEY_H: hud_shown_ = !hud_shown_; break;
+      case GLFW_KEY_TAB: toggle_full_panel(); break;
       case GLFW_KEY_O: toggle_orbit(); break;
       case GLFW_KEY_R: toggle_recording(); break;
       case GLFW_KEY_P: write_frame_ = true; break;
@@ -86,6 +87,12 @@ void Viewer::handle_keys() {
       default: break;
     }
   }
+}
+
+// Tab unfolds the panel, or folds it again; on a hidden HUD it shows the panel unfolded.
+void Viewer::toggle_full_panel() {
+  controls_.full_panel = !(hud_shown_ && controls_.full_panel);
+  hud_shown_ = true;
 }
 
 FlightInput Viewer::flight_input() {

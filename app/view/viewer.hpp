@@ -24,14 +24,17 @@ class Viewer {
     std::optional<CameraPath> play;
     std::string record_file;
     std::string out;  // folder of P's frames
+    std::string screenshot;  // file the last frame's window goes to, if any
     bool hud = true;
+    bool full_hud = false;  // the HUD's panel unfolded
     bool shadow_map_inset = false;
     bool aliasing_overlay = false;
   };
   Viewer(const Scene& scene, Settings settings, GlfwWindow& window);
 
-  // One frame, from input to swap; with `screenshot`, the window as shown goes to that file.
-  void frame(const std::string& screenshot = "");
+  // One frame, from input to swap. The last one (`last`, or the one in which Esc closes the window)
+  // writes the window as shown to the screenshot file, if there is one.
+  void frame(bool last);
   // Writes the path being recorded, if any.
   void finish();
   // Frames shown, their median time, and where the camera is.
@@ -41,6 +44,7 @@ class Viewer {
   // Scene time: seconds since the start (or since recording started), or frames / fps.
   double scene_time(Clock::time_point now) const;
   void handle_keys();
+  void toggle_full_panel();
   FlightInput flight_input();
   shadow::Camera place_camera(double t, double seconds);
   void toggle_orbit();
