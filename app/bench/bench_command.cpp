@@ -210,9 +210,10 @@ class ShadowBench {
 
   void finish(const std::string& renderer_name) {
     results_.machine = machine_info(renderer_name, o_.run.backend);
+    results_.quick = o_.run.quick;
     write_results(out_, results_);
     draw_charts(out_, "bench_charts.py");
-    write_report(out_, "ecoview bench", report_body(), results_, o_.run.quick);
+    write_report(out_, "ecoview bench", "", report_body(), results_);
   }
 
  private:
