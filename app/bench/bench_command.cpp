@@ -1,9 +1,11 @@
 #include "app/bench/bench_command.hpp"
 
+#include "app/bench/bench_report.hpp"
 #include "app/bench/charts.hpp"
 #include "app/bench/equal_error.hpp"
 #include "app/bench/measured_view.hpp"
 #include "app/bench/paper_suite.hpp"
+#include "app/bench/pareto_front.hpp"
 #include "app/bench/frame_timing.hpp"
 #include "app/bench/results.hpp"
 #include "app/bench/shadow_figures.hpp"
@@ -211,9 +213,10 @@ class ShadowBench {
   void finish(const std::string& renderer_name) {
     results_.machine = machine_info(renderer_name, o_.run.backend);
     results_.quick = o_.run.quick;
+    results_.sections["pareto_front"] = pareto_fronts(results_.runs);
     write_results(out_, results_);
     draw_charts(out_, "bench_charts.py");
-    write_report(out_, "ecoview bench", "", report_body(), results_);
+    write_report(out_, "ecoview bench", pareto_summary_html(results_.sections["pareto_front"]), report_body(), results_);
   }
 
  private:

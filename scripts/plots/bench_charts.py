@@ -41,16 +41,6 @@ def plot_lines(ax, lines, note=lambda ys: ""):
         drawn[m] = ys
 
 
-def pareto(points):
-    """The points no other point beats in both time and error."""
-    front, best = [], float("inf")
-    for ms, err in sorted(points):
-        if err < best:
-            front.append((ms, err))
-            best = err
-    return front
-
-
 def tradeoff_chart(results, out):
     scenes = sorted({r["params"]["scene"] for r in runs(results, "tradeoff")})
     fig, axes = plt.subplots(1, len(scenes), figsize=(6 * len(scenes), 4.5), squeeze=False)
@@ -65,8 +55,10 @@ def tradeoff_chart(results, out):
                     ax.annotate(str(r["params"]["shadow_size"]), (r["figures"]["frame_ms"], 100 * r["figures"]["err"]),
                                 fontsize=6)
         plot_lines(ax, lines)
-        front = pareto([(r["figures"]["frame_ms"], 100 * r["figures"]["err"]) for r in rs])
-        ax.plot([p[0] for p in front], [p[1] for p in front], color="gray", lw=6, alpha=0.25, label="Pareto front")
+        # The front bench's summary lists (results.json's pareto_front), of this sweep's runs.
+        front = [p for p in results["pareto_front"].get(scene, []) if p["sweep"] == "tradeoff"]
+        ax.plot([p["frame_ms"] for p in front], [100 * p["err"] for p in front], color="gray", lw=6, alpha=0.25,
+                label="Pareto front")
         ax.set(xscale="log", xlabel="frame_ms", ylabel="err (%)", title=f"Speed against accuracy: {scene}")
         ax.legend(fontsize=7)
     fig.tight_layout()
