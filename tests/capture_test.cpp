@@ -257,10 +257,13 @@ std::set<std::string> pareto_front_of(const nlohmann::json& runs) {
 }
 
 // Also: the report opens with the quick run's mark and the summary of each scene's Pareto front,
-// and results.json says the run is quick and names the machine.
+// results.json says the run is quick, names the machine and, against a baseline with no runs,
+// counts every run as new.
 TEST(Bench, QuickRunWritesResultsChartsCropsAndReportAndVolumesMatchTheReference) {
   const TempDir dir;
-  const CommandResult r = run_ecoview({"bench", "--quick", "--size", "320x180", "--out", (dir / "out").string()});
+  write_text(dir / "empty_baseline.json", R"({"machine": {"git": "before"}, "runs": []})");
+  const CommandResult r = run_ecoview({"bench", "--quick", "--size", "320x180", "--baseline", (dir / "empty_baseline.json").string(),
+                                       "--out", (dir / "out").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* file : {"results.json", "results.csv", "chart_tradeoff.png", "chart_equal_err.png", "chart_scenes.png", "chart_stability.png",
                            "chart_flythrough.png", "report.html", "images/crop_field_psm.png", "images/crop_field_reference.png",
@@ -303,13 +306,34 @@ TEST(Bench, QuickRunWritesResultsChartsCropsAndReportAndVolumesMatchTheReference
     for (const auto& p : points) front.insert(scene + " " + p["method"].get<std::string>() + " " + std::to_string(p["shadow_size"].get<int>()));
   }
   EXPECT_EQ(front, pareto_front_of(results["runs"]));
+  EXPECT_EQ(results["baseline"]["runs_only_here"], results["runs"].size());
+  EXPECT_EQ(results["baseline"]["git"], "before");
+  EXPECT_TRUE(results["baseline"]["changes"].empty());
 
   const std::string report = read_bytes(dir / "out" / "report.html");
   const std::size_t quick = report.find("(quick run)"), summary = report.find("Summary: the best at each cost"),
-                    charts = report.find("<img");
+                    baseline = report.find("Against the baseline"), charts = report.find("<img");
   ASSERT_NE(summary, std::string::npos);
   EXPECT_LT(quick, summary);
-  EXPECT_LT(summary, charts);
+  EXPECT_LT(summary, baseline);
+  EXPECT_LT(baseline, charts);
+}
+
+// A baseline that is not a bench's results.json is refused before any run, naming the file and
+// the field, and nothing is written.
+TEST(Bench, ABaselineThatIsNotBenchResultsIsRefusedNamingTheFileAndTheField) {
+  const TempDir dir;
+  write_text(dir / "scene.json", R"({"machine": {}, "runs": [{"params": {}, "figures": {"err": "low"}}]})");
+  const CommandResult r = run_ecoview({"bench", "--quick", "--baseline", (dir / "scene.json").string(), "--out", (dir / "out").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find((dir / "scene.json").string() + ": runs[0].figures.err: expected a number"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  // The paper suite has no runs to compare.
+  const CommandResult paper = run_ecoview({"bench", "--suite", "paper", "--quick", "--baseline", (dir / "scene.json").string(),
+                                           "--out", (dir / "out").string()});
+  EXPECT_EQ(paper.exit_code, 2) << paper.err;
+  EXPECT_NE(paper.err.find("--baseline"), std::string::npos) << paper.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
 TEST(Capture, RendersARealGltfFile) {

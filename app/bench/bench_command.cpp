@@ -1,5 +1,6 @@
 #include "app/bench/bench_command.hpp"
 
+#include "app/bench/baseline.hpp"
 #include "app/bench/bench_report.hpp"
 #include "app/bench/charts.hpp"
 #include "app/bench/equal_error.hpp"
@@ -88,7 +89,8 @@ constexpr int crop_size = 1024;           // the trade-off map size whose frames
 
 class ShadowBench {
  public:
-  ShadowBench(const BenchOptions& o, const Plan& plan) : o_(o), plan_(plan), out_(o.run.out), base_(benchmark_settings(o.run)) {
+  ShadowBench(const BenchOptions& o, const Plan& plan, std::optional<BenchResults> baseline)
+      : o_(o), plan_(plan), out_(o.run.out), base_(benchmark_settings(o.run)), baseline_(std::move(baseline)) {
     fs::create_directories(out_ / "images");
   }
 
@@ -214,9 +216,12 @@ class ShadowBench {
     results_.machine = machine_info(renderer_name, o_.run.backend);
     results_.quick = o_.run.quick;
     results_.sections["pareto_front"] = pareto_fronts(results_.runs);
+    if (baseline_) {
+      results_.sections["baseline"] = baseline_section(o_.baseline, *baseline_, compare_to_baseline(baseline_->runs, results_.runs));
+    }
     write_results(out_, results_);
     draw_charts(out_, "bench_charts.py");
-    write_report(out_, "ecoview bench", pareto_summary_html(results_.sections["pareto_front"]), report_body(), results_);
+    write_report(out_, "ecoview bench", summary(), report_body(), results_);
   }
 
  private:
@@ -273,6 +278,11 @@ class ShadowBench {
     crops_[scene_name].push_back(method);
   }
 
+  std::string summary() const {
+    const auto baseline = results_.sections.find("baseline");
+    return pareto_summary_html(results_.sections["pareto_front"]) + (baseline == results_.sections.end() ? "" : baseline_html(*baseline));
+  }
+
   std::string report_body() const {
     std::ostringstream html;
     html << "<h2>Speed against accuracy</h2><img src=\"chart_tradeoff.png\">\n"
@@ -295,6 +305,7 @@ class ShadowBench {
   Plan plan_;
   fs::path out_;
   RenderSettings base_;
+  std::optional<BenchResults> baseline_;
   BenchResults results_;
   std::map<std::string, std::vector<std::string>> crops_;
 };
@@ -313,6 +324,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
                                       "uniform, DPSM and IPSM table of Vanek et al. 2011, an overhead light at 128² and "
                                       "the inverted light's depth-bias sweep, each timed and against the exact reference")
       ->capture_default_str();
+  cmd->add_option("--baseline", o.baseline, "An earlier bench's results.json: each figure's change, flagged beyond the spread");
   return cmd;
 }
 
@@ -321,9 +333,13 @@ int run_bench(const BenchOptions& o) {
   check_backend(o.run.backend);
   if (o.suite != "methods" && o.suite != "paper") throw InputError("--suite: expected methods or paper, got '" + o.suite + "'");
   if (o.suite == "paper") {
+    if (!o.baseline.empty()) throw InputError("--baseline: compares the methods suite's runs; the paper suite has none to compare");
     run_paper_suite(o.run);
     return 0;
   }
+  // The baseline is read first: a wrong file is refused before minutes of runs.
+  std::optional<BenchResults> baseline;
+  if (!o.baseline.empty()) baseline = read_results(o.baseline);
   make_out_folder(o.run.out);
   const Plan plan = plan_for(o.run.quick);
   const Scene field = load_scene_option("field", o.run.memory_budget_gib);
@@ -332,7 +348,7 @@ int run_bench(const BenchOptions& o) {
 
   const std::unique_ptr<GlContext> context = create_headless_context(o.run.backend);
   ExactVisibility field_exact(field.meshes, field.groups), big_exact(big.meshes, big.groups);
-  ShadowBench bench(o, plan);
+  ShadowBench bench(o, plan, std::move(baseline));
   const std::size_t angles = (field.lights.size() + static_cast<std::size_t>(plan.angle_step) - 1) / static_cast<std::size_t>(plan.angle_step);
   const std::size_t methods = directional_methods.size(), point_light_methods = point_methods.size();
   std::vector<Scene> polygon_scenes;
