@@ -3,6 +3,7 @@
 #include "app/bench/baseline.hpp"
 #include "app/bench/bench_report.hpp"
 #include "app/bench/charts.hpp"
+#include "app/bench/crop.hpp"
 #include "app/bench/equal_error.hpp"
 #include "app/bench/measured_view.hpp"
 #include "app/bench/paper_suite.hpp"
@@ -85,6 +86,7 @@ Plan plan_for(bool quick) {
 
 constexpr int favourable_light = 6;       // field: 90° between light and view
 constexpr int crop_size = 1024;           // the trade-off map size whose frames are cropped
+constexpr int crop_magnification = 3;     // each frame pixel of a crop drawn as 3 × 3
 
 
 class ShadowBench {
@@ -263,18 +265,15 @@ class ShadowBench {
     return run;
   }
 
-  // The middle third of the frame's lower half: near ground, where shadows differ most.
+  // A quarter of the frame's width and height, magnified so that one texel's stair step is seen:
+  // for every method of a scene the place where its first method's shadows have the most edges.
   void crop(const Renderer& renderer, const std::string& scene_name, const std::string& method) {
     const Image8 color = renderer.frame().read_color();
-    const int w = color.width / 3, h = color.height / 2, x0 = color.width / 3, y0 = color.height / 2;
-    Image8 part{w, h, 3, {}};
-    part.samples.reserve(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3);
-    for (int y = y0; y < y0 + h; ++y) {
-      for (int x = x0; x < x0 + w; ++x) {
-        for (int c = 0; c < 3; ++c) part.samples.push_back(color.at(x, y, c));
-      }
+    if (!crop_rects_.count(scene_name)) {
+      crop_rects_[scene_name] = busiest_shadow_edges(renderer.frame().read_visibility(), color.width / 4, color.height / 4);
     }
-    write_file_atomically(out_ / "images" / ("crop_" + scene_name + "_" + method + ".png"), encode_png(part));
+    write_file_atomically(out_ / "images" / ("crop_" + scene_name + "_" + method + ".png"),
+                          encode_png(magnified_crop(color, crop_rects_[scene_name], crop_magnification)));
     crops_[scene_name].push_back(method);
   }
 
@@ -290,14 +289,7 @@ class ShadowBench {
          << "<h2>The polygon scenes, every method at " << crop_size << "²</h2><img src=\"chart_scenes.png\">\n"
          << "<h2>Stability</h2><img src=\"chart_stability.png\">\n"
          << "<h2>Flythrough</h2><img src=\"chart_flythrough.png\">\n"
-         << "<h2>Crops (" << crop_size << "² maps, the middle of the lower half)</h2>\n";
-    for (const auto& [scene_name, methods] : crops_) {
-      html << "<h3>" << scene_name << "</h3><table><tr>";
-      for (const std::string& m : methods) html << "<th>" << m << "</th>";
-      html << "</tr><tr>";
-      for (const std::string& m : methods) html << "<td><img src=\"images/crop_" << scene_name << "_" << m << ".png\"></td>";
-      html << "</tr></table>\n";
-    }
+         << crops_html(crops_, crop_size);
     return html.str();
   }
 
@@ -308,6 +300,7 @@ class ShadowBench {
   std::optional<BenchResults> baseline_;
   BenchResults results_;
   std::map<std::string, std::vector<std::string>> crops_;
+  std::map<std::string, PixelRect> crop_rects_;  // where each scene's crops are taken
 };
 
 }  // namespace

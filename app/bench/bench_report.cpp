@@ -83,4 +83,19 @@ std::string baseline_html(const nlohmann::json& section) {
   return html.str();
 }
 
+std::string crops_html(const std::map<std::string, std::vector<std::string>>& methods_by_scene, int map_size) {
+  std::ostringstream html;
+  html << "<h2>Crops (" << map_size << "² maps, where the first method's shadows have the most edges; pixels magnified)</h2>\n";
+  for (const auto& [scene, methods] : methods_by_scene) {
+    html << "<h3>" << escaped(scene) << "</h3><table><tr><th>method</th><th>its crop</th><th>the reference's</th></tr>\n";
+    for (const std::string& m : methods) {
+      if (m == "reference") continue;
+      html << "<tr><th>" << escaped(m) << "</th><td><img src=\"images/crop_" << scene << "_" << m
+           << ".png\"></td><td><img src=\"images/crop_" << scene << "_reference.png\"></td></tr>\n";
+    }
+    html << "</table>\n";
+  }
+  return html.str();
+}
+
 }  // namespace ecoview
