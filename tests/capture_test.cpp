@@ -235,16 +235,42 @@ TEST(Density, ASizeWhoseReferenceIsTooLargeIsRefused) {
   EXPECT_FALSE(std::filesystem::exists(dir / "results.json"));
 }
 
+// The runs that no other run of their scene's timed sweeps beats in both frame_ms and err, by
+// comparing every pair: "scene method shadow_size".
+std::set<std::string> pareto_front_of(const nlohmann::json& runs) {
+  std::set<std::string> front;
+  const auto timed = [](const nlohmann::json& run) { return run["params"]["sweep"] == "tradeoff" || run["params"]["sweep"] == "scenes"; };
+  for (const auto& run : runs) {
+    if (!timed(run)) continue;
+    const double ms = run["figures"]["frame_ms"], err = run["figures"]["err"];
+    const bool beaten = std::any_of(runs.begin(), runs.end(), [&](const nlohmann::json& other) {
+      const double other_ms = other["figures"].value("frame_ms", 0.0), other_err = other["figures"].value("err", 0.0);
+      return timed(other) && other["params"]["scene"] == run["params"]["scene"] && other_ms <= ms && other_err <= err &&
+             (other_ms < ms || other_err < err);
+    });
+    if (!beaten) {
+      front.insert(run["params"]["scene"].get<std::string>() + " " + run["params"]["method"].get<std::string>() + " " +
+                   std::to_string(run["params"]["shadow_size"].get<int>()));
+    }
+  }
+  return front;
+}
+
+// Also: the report opens with the quick run's mark and the summary of each scene's Pareto front,
+// results.json says the run is quick, names the machine and, against a baseline with no runs,
+// counts every run as new.
 TEST(Bench, QuickRunWritesResultsChartsCropsAndReportAndVolumesMatchTheReference) {
   const TempDir dir;
-  const CommandResult r = run_ecoview({"bench", "--quick", "--size", "320x180", "--out", dir.path().string()});
+  write_text(dir / "empty_baseline.json", R"({"machine": {"git": "before"}, "runs": []})");
+  const CommandResult r = run_ecoview({"bench", "--quick", "--size", "320x180", "--baseline", (dir / "empty_baseline.json").string(),
+                                       "--out", (dir / "out").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* file : {"results.json", "results.csv", "chart_tradeoff.png", "chart_equal_err.png", "chart_scenes.png", "chart_stability.png",
                            "chart_flythrough.png", "report.html", "images/crop_field_psm.png", "images/crop_field_reference.png",
                            "images/crop_chess_psm+silhouette.png"}) {
-    EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / file)) << file;
   }
-  const nlohmann::json results = nlohmann::json::parse(read_bytes(dir / "results.json"));
+  const nlohmann::json results = nlohmann::json::parse(read_bytes(dir / "out" / "results.json"));
   std::set<std::string> sweeps;
   int volumes = 0;
   for (const auto& run : results["runs"]) {
@@ -269,6 +295,45 @@ TEST(Bench, QuickRunWritesResultsChartsCropsAndReportAndVolumesMatchTheReference
   EXPECT_GT((*reference)["figures"]["frame_ms"].get<double>(), 0.0);
   EXPECT_LT((*reference)["figures"]["err"].get<double>(), 1e-4);
   EXPECT_EQ(sweeps, (std::set<std::string>{"tradeoff", "equal_err", "scenes", "stability", "crossing", "flythrough", "flicker"}));
+
+  EXPECT_EQ(results["quick"], true);
+  for (const char* field : {"cpu", "renderer", "gl_version", "backend", "compiler", "git"}) {
+    EXPECT_FALSE(results["machine"][field].get<std::string>().empty()) << field;
+  }
+  EXPECT_GT(results["machine"]["cores"].get<int>(), 0);
+  std::set<std::string> front;
+  for (const auto& [scene, points] : results["pareto_front"].items()) {
+    for (const auto& p : points) front.insert(scene + " " + p["method"].get<std::string>() + " " + std::to_string(p["shadow_size"].get<int>()));
+  }
+  EXPECT_EQ(front, pareto_front_of(results["runs"]));
+  EXPECT_EQ(results["baseline"]["runs_only_here"], results["runs"].size());
+  EXPECT_EQ(results["baseline"]["git"], "before");
+  EXPECT_TRUE(results["baseline"]["changes"].empty());
+
+  const std::string report = read_bytes(dir / "out" / "report.html");
+  const std::size_t quick = report.find("(quick run)"), summary = report.find("Summary: the best at each cost"),
+                    baseline = report.find("Against the baseline"), charts = report.find("<img");
+  ASSERT_NE(summary, std::string::npos);
+  EXPECT_LT(quick, summary);
+  EXPECT_LT(summary, baseline);
+  EXPECT_LT(baseline, charts);
+}
+
+// A baseline that is not a bench's results.json is refused before any run, naming the file and
+// the field, and nothing is written.
+TEST(Bench, ABaselineThatIsNotBenchResultsIsRefusedNamingTheFileAndTheField) {
+  const TempDir dir;
+  write_text(dir / "scene.json", R"({"machine": {}, "runs": [{"params": {}, "figures": {"err": "low"}}]})");
+  const CommandResult r = run_ecoview({"bench", "--quick", "--baseline", (dir / "scene.json").string(), "--out", (dir / "out").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find((dir / "scene.json").string() + ": runs[0].figures.err: expected a number"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  // The paper suite has no runs to compare.
+  const CommandResult paper = run_ecoview({"bench", "--suite", "paper", "--quick", "--baseline", (dir / "scene.json").string(),
+                                           "--out", (dir / "out").string()});
+  EXPECT_EQ(paper.exit_code, 2) << paper.err;
+  EXPECT_NE(paper.err.find("--baseline"), std::string::npos) << paper.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
 TEST(Capture, RendersARealGltfFile) {

@@ -65,5 +65,22 @@ TEST(EqualError, OtherScenesAndMethodsAreLeftOut) {
   EXPECT_EQ(equal_error_runs(runs, "field", "lispsm").size(), 1u);
 }
 
+// The derived times carry the spreads of the times they come from, so that bench --baseline
+// flags them no sooner than those: the uniform map's the larger of the two sizes it lies between,
+// the speed-up's relative spread the sum of the two times' relative spreads.
+TEST(EqualError, TheDerivedTimesCarryTheSpreadsOfTheTimesTheyComeFrom) {
+  std::vector<BenchRun> runs = uniform_maps();
+  for (BenchRun& run : runs) run.figures["frame_ms_spread"] = run.params["shadow_size"] == 1024 ? 2.0 : 4.0;
+  BenchRun psm = tradeoff("psm", 1024, 0.03, 25);  // between the uniform 1024² (4 %) and 2048² (2 %)
+  psm.figures["frame_ms_spread"] = 1.0;
+  runs.push_back(psm);
+  const std::vector<BenchRun> found = equal_error_runs(runs, "field", "psm");
+  ASSERT_EQ(found.size(), 1u);
+  const nlohmann::json& f = found[0].figures;
+  EXPECT_EQ(f["uniform_frame_ms_spread"].get<double>(), 4.0);
+  const double uniform_ms = f["uniform_frame_ms"].get<double>();
+  EXPECT_NEAR(f["equal_err_speedup_spread"].get<double>(), uniform_ms / 25.0 * (4.0 / uniform_ms + 1.0 / 25.0), 1e-9);
+}
+
 }  // namespace
 }  // namespace ecoview

@@ -59,5 +59,36 @@ TEST(Results, CsvQuotesCommasQuotesAndLineBreaks) {
   EXPECT_EQ(records[2], (std::vector<std::string>{"a \"quoted\" name", "two\nlines\r\nhere", "0.5", ""}));
 }
 
+// The machine block's CPU: x86 kernels name it "model name" once a core, ARM kernels
+// "Hardware" or "Processor".
+TEST(Results, CpuModelIsTheFirstModelNameInCpuinfo) {
+  EXPECT_EQ(cpu_model("processor\t: 0\nvendor_id\t: AuthenticAMD\nmodel name\t: AMD EPYC 7B13 64-Core Processor\n\n"
+                      "processor\t: 1\nmodel name\t: another\n"),
+            "AMD EPYC 7B13 64-Core Processor");
+  EXPECT_EQ(cpu_model("processor\t: 0\nBogoMIPS\t: 48.00\n\nHardware\t: BCM2835\n"), "BCM2835");
+  EXPECT_EQ(cpu_model(""), "unknown");
+}
+
+// results.json says whether the run was quick, and reads back as written.
+TEST(Results, JsonReadsBackWithItsQuickFlagMachineAndRuns) {
+  const TempDir dir;
+  BenchResults results;
+  results.quick = true;
+  results.machine = {{"cores", 2}};
+  BenchRun run;
+  run.params = {{"scene", "field"}};
+  run.figures = {{"err", 0.25}};
+  results.runs = {run};
+  results.sections["extra"] = {{"note", 1}};
+  write_results(dir.path(), results);
+  const BenchResults read = read_results(dir / "results.json");
+  EXPECT_TRUE(read.quick);
+  EXPECT_EQ(read.machine, results.machine);
+  ASSERT_EQ(read.runs.size(), 1u);
+  EXPECT_EQ(read.runs[0].params, run.params);
+  EXPECT_EQ(read.runs[0].figures, run.figures);
+  EXPECT_EQ(nlohmann::json::parse(read_bytes(dir / "results.json"))["extra"]["note"], 1);
+}
+
 }  // namespace
 }  // namespace ecoview::test

@@ -1,9 +1,13 @@
 #include "app/bench/bench_command.hpp"
 
+#include "app/bench/baseline.hpp"
+#include "app/bench/bench_report.hpp"
 #include "app/bench/charts.hpp"
+#include "app/bench/crop.hpp"
 #include "app/bench/equal_error.hpp"
 #include "app/bench/measured_view.hpp"
 #include "app/bench/paper_suite.hpp"
+#include "app/bench/pareto_front.hpp"
 #include "app/bench/frame_timing.hpp"
 #include "app/bench/results.hpp"
 #include "app/bench/shadow_figures.hpp"
@@ -82,11 +86,13 @@ Plan plan_for(bool quick) {
 
 constexpr int favourable_light = 6;       // field: 90° between light and view
 constexpr int crop_size = 1024;           // the trade-off map size whose frames are cropped
+constexpr int crop_magnification = 3;     // each frame pixel of a crop drawn as 3 × 3
 
 
 class ShadowBench {
  public:
-  ShadowBench(const BenchOptions& o, const Plan& plan) : o_(o), plan_(plan), out_(o.run.out), base_(benchmark_settings(o.run)) {
+  ShadowBench(const BenchOptions& o, const Plan& plan, std::optional<BenchResults> baseline)
+      : o_(o), plan_(plan), out_(o.run.out), base_(benchmark_settings(o.run)), baseline_(std::move(baseline)) {
     fs::create_directories(out_ / "images");
   }
 
@@ -210,9 +216,14 @@ class ShadowBench {
 
   void finish(const std::string& renderer_name) {
     results_.machine = machine_info(renderer_name, o_.run.backend);
+    results_.quick = o_.run.quick;
+    results_.sections["pareto_front"] = pareto_fronts(results_.runs);
+    if (baseline_) {
+      results_.sections["baseline"] = baseline_section(o_.baseline, *baseline_, compare_to_baseline(baseline_->runs, results_.runs));
+    }
     write_results(out_, results_);
     draw_charts(out_, "bench_charts.py");
-    write_report(out_, "ecoview bench", report_body(), results_, o_.run.quick);
+    write_report(out_, "ecoview bench", summary(), report_body(), results_);
   }
 
  private:
@@ -254,19 +265,21 @@ class ShadowBench {
     return run;
   }
 
-  // The middle third of the frame's lower half: near ground, where shadows differ most.
+  // A quarter of the frame's width and height, magnified so that one texel's stair step is seen:
+  // for every method of a scene the place where its first method's shadows have the most edges.
   void crop(const Renderer& renderer, const std::string& scene_name, const std::string& method) {
     const Image8 color = renderer.frame().read_color();
-    const int w = color.width / 3, h = color.height / 2, x0 = color.width / 3, y0 = color.height / 2;
-    Image8 part{w, h, 3, {}};
-    part.samples.reserve(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3);
-    for (int y = y0; y < y0 + h; ++y) {
-      for (int x = x0; x < x0 + w; ++x) {
-        for (int c = 0; c < 3; ++c) part.samples.push_back(color.at(x, y, c));
-      }
+    if (!crop_rects_.count(scene_name)) {
+      crop_rects_[scene_name] = busiest_shadow_edges(renderer.frame().read_visibility(), color.width / 4, color.height / 4);
     }
-    write_file_atomically(out_ / "images" / ("crop_" + scene_name + "_" + method + ".png"), encode_png(part));
+    write_file_atomically(out_ / "images" / ("crop_" + scene_name + "_" + method + ".png"),
+                          encode_png(magnified_crop(color, crop_rects_[scene_name], crop_magnification)));
     crops_[scene_name].push_back(method);
+  }
+
+  std::string summary() const {
+    const auto baseline = results_.sections.find("baseline");
+    return pareto_summary_html(results_.sections["pareto_front"]) + (baseline == results_.sections.end() ? "" : baseline_html(*baseline));
   }
 
   std::string report_body() const {
@@ -276,14 +289,7 @@ class ShadowBench {
          << "<h2>The polygon scenes, every method at " << crop_size << "²</h2><img src=\"chart_scenes.png\">\n"
          << "<h2>Stability</h2><img src=\"chart_stability.png\">\n"
          << "<h2>Flythrough</h2><img src=\"chart_flythrough.png\">\n"
-         << "<h2>Crops (" << crop_size << "² maps, the middle of the lower half)</h2>\n";
-    for (const auto& [scene_name, methods] : crops_) {
-      html << "<h3>" << scene_name << "</h3><table><tr>";
-      for (const std::string& m : methods) html << "<th>" << m << "</th>";
-      html << "</tr><tr>";
-      for (const std::string& m : methods) html << "<td><img src=\"images/crop_" << scene_name << "_" << m << ".png\"></td>";
-      html << "</tr></table>\n";
-    }
+         << crops_html(crops_, crop_size);
     return html.str();
   }
 
@@ -291,8 +297,10 @@ class ShadowBench {
   Plan plan_;
   fs::path out_;
   RenderSettings base_;
+  std::optional<BenchResults> baseline_;
   BenchResults results_;
   std::map<std::string, std::vector<std::string>> crops_;
+  std::map<std::string, PixelRect> crop_rects_;  // where each scene's crops are taken
 };
 
 }  // namespace
@@ -309,6 +317,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
                                       "uniform, DPSM and IPSM table of Vanek et al. 2011, an overhead light at 128² and "
                                       "the inverted light's depth-bias sweep, each timed and against the exact reference")
       ->capture_default_str();
+  cmd->add_option("--baseline", o.baseline, "An earlier bench's results.json: each figure's change, flagged beyond the spread");
   return cmd;
 }
 
@@ -317,9 +326,13 @@ int run_bench(const BenchOptions& o) {
   check_backend(o.run.backend);
   if (o.suite != "methods" && o.suite != "paper") throw InputError("--suite: expected methods or paper, got '" + o.suite + "'");
   if (o.suite == "paper") {
+    if (!o.baseline.empty()) throw InputError("--baseline: compares the methods suite's runs; the paper suite has none to compare");
     run_paper_suite(o.run);
     return 0;
   }
+  // The baseline is read first: a wrong file is refused before minutes of runs.
+  std::optional<BenchResults> baseline;
+  if (!o.baseline.empty()) baseline = read_results(o.baseline);
   make_out_folder(o.run.out);
   const Plan plan = plan_for(o.run.quick);
   const Scene field = load_scene_option("field", o.run.memory_budget_gib);
@@ -328,7 +341,7 @@ int run_bench(const BenchOptions& o) {
 
   const std::unique_ptr<GlContext> context = create_headless_context(o.run.backend);
   ExactVisibility field_exact(field.meshes, field.groups), big_exact(big.meshes, big.groups);
-  ShadowBench bench(o, plan);
+  ShadowBench bench(o, plan, std::move(baseline));
   const std::size_t angles = (field.lights.size() + static_cast<std::size_t>(plan.angle_step) - 1) / static_cast<std::size_t>(plan.angle_step);
   const std::size_t methods = directional_methods.size(), point_light_methods = point_methods.size();
   std::vector<Scene> polygon_scenes;

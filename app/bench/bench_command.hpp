@@ -10,6 +10,7 @@ namespace ecoview {
 struct BenchOptions {
   BenchmarkOptions run{"640x360"};  // --quick: small scenes and a few configurations
   std::string suite = "methods";    // or "paper" (app/bench/paper_suite.hpp)
+  std::string baseline;             // an earlier run's results.json to compare with (app/bench/baseline.hpp)
 };
 
 // Registers `ecoview bench`: shadow methods, speed against accuracy against the exact reference

@@ -214,9 +214,10 @@ class DensityBench {
     std::ostringstream defaults;
     defaults << "k = " << base_.k << ", " << base_.splat_size << "-pixel splats";
     results_.machine = machine_info(renderer_name, o_.run.backend);
+    results_.quick = o_.run.quick;
     write_results(out_, results_);
     draw_charts(out_, "density_charts.py");
-    write_report(out_, "ecoview density",
+    write_report(out_, "ecoview density", "",
                  "<h2>Charts</h2><img src=\"chart_quality.png\"><img src=\"chart_scale.png\"><img src=\"chart_thirds.png\">\n"
                  "<h2>Images (" + defaults.str() + ": the defaults)</h2>"
                  "<table><tr><th>reference: polygons, 4 × 4 samples a pixel</th><th>polygons, 1 sample a pixel</th><th>points</th></tr>"
@@ -225,7 +226,7 @@ class DensityBench {
                  "<table><tr><th>the objects drawn as points: polygons</th><th>points</th><th>difference × 4</th><th>measured pixels (holes red)</th></tr>"
                  "<tr><td><img src=\"images/polygons.png\"></td><td><img src=\"images/points.png\"></td>"
                  "<td><img src=\"images/difference.png\"></td><td><img src=\"images/coverage.png\"></td></tr></table>\n",
-                 results_, o_.run.quick);
+                 results_);
   }
 
  private:

@@ -10,6 +10,14 @@ double median(std::vector<double> v) {
   return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// The quartiles as the medians of the lower and upper halves (the middle value of an odd count
+// left out of both), so that the spread is a median's kind of figure too.
+double interquartile_range(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const auto half = static_cast<std::ptrdiff_t>(v.size() / 2);
+  return median(std::vector<double>(v.end() - half, v.end())) - median(std::vector<double>(v.begin(), v.begin() + half));
+}
+
 FrameTiming time_frames(Renderer& renderer, const shadow::Camera& camera, const shadow::Light& light, double t,
                         int warmup, int frames) {
   return time_frames_in_turn({&renderer}, camera, light, t, warmup, frames).front();
@@ -36,7 +44,11 @@ std::vector<FrameTiming> time_frames_in_turn(const std::vector<Renderer*>& rende
     }
   }
   std::vector<FrameTiming> timings;
-  for (Times& m : times) timings.push_back({median(m.wall), median(m.sample), median(m.host), median(m.shadow), median(m.frame), frames});
+  for (Times& m : times) {
+    timings.push_back({median(m.wall), median(m.sample), median(m.host), median(m.shadow), median(m.frame), frames,
+                       interquartile_range(m.wall), interquartile_range(m.sample), interquartile_range(m.host),
+                       interquartile_range(m.shadow), interquartile_range(m.frame)});
+  }
   return timings;
 }
 

@@ -8,6 +8,10 @@ namespace ecoview {
 // The median of some timings (0 for none).
 double median(std::vector<double> v);
 
+// Their interquartile range (0 for fewer than two): how far one time's repeats stray from one
+// another, which a median taken from them may do too from one run to the next.
+double interquartile_range(std::vector<double> v);
+
 // frame_ms and its parts as DESIGN.md defines them: medians over `frames` frames after `warmup`
 // frames, each frame finished with glFinish.
 struct FrameTiming {
@@ -17,6 +21,13 @@ struct FrameTiming {
   double shadow_pass_ms = 0.0;
   double frame_pass_ms = 0.0;
   int frames = 0;
+  // The interquartile range of each time's repeats over the timed frames: the spread that bench
+  // --baseline allows a time before it flags a change.
+  double frame_ms_spread = 0.0;
+  double sample_ms_spread = 0.0;
+  double host_ms_spread = 0.0;
+  double shadow_pass_ms_spread = 0.0;
+  double frame_pass_ms_spread = 0.0;
 };
 
 FrameTiming time_frames(Renderer& renderer, const shadow::Camera& camera, const shadow::Light& light, double t,

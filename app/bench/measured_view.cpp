@@ -9,7 +9,10 @@ BenchRun measure_view(Renderer& renderer, const MeasuredView& view, const std::o
   BenchRun run;
   if (timing) {
     run.figures.update({{"frame_ms", timing->frame_ms}, {"sample_ms", timing->sample_ms}, {"host_ms", timing->host_ms},
-                        {"shadow_pass_ms", timing->shadow_pass_ms}, {"frame_pass_ms", timing->frame_pass_ms}});
+                        {"shadow_pass_ms", timing->shadow_pass_ms}, {"frame_pass_ms", timing->frame_pass_ms},
+                        {"frame_ms_spread", timing->frame_ms_spread}, {"sample_ms_spread", timing->sample_ms_spread},
+                        {"host_ms_spread", timing->host_ms_spread}, {"shadow_pass_ms_spread", timing->shadow_pass_ms_spread},
+                        {"frame_pass_ms_spread", timing->frame_pass_ms_spread}});
     run.params["frames"] = timing->frames;
   } else {
     renderer.render(view.camera, view.light, view.t);

@@ -23,7 +23,8 @@ struct MeasuredView {
 };
 
 // The figures of one frame of the view (DESIGN.md): err, err_near, acne, leak against the exact
-// reference, alias_p95, the points and triangles drawn, and the times where `timing` is given
+// reference, alias_p95, the points and triangles drawn, and the times, each with its spread
+// beside it ("frame_ms_spread"), where `timing` is given
 // (else a frame at the same place first: the PSM takes its near plane from the last frame).
 // Params: the renderer's shadow_setup, and the timed frames.
 BenchRun measure_view(Renderer& renderer, const MeasuredView& view, const std::optional<FrameTiming>& timing = std::nullopt);

@@ -187,9 +187,10 @@ class PaperSuite {
 
   void finish(const std::string& renderer_name) {
     results_.machine = machine_info(renderer_name, o_.backend);
+    results_.quick = quick_;
     write_results(out_, results_);
     draw_charts(out_, "paper_charts.py");
-    write_report(out_, "ecoview bench --suite paper", report_body(), results_, quick_);
+    write_report(out_, "ecoview bench --suite paper", "", report_body(), results_);
   }
 
  private:

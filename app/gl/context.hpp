@@ -26,4 +26,8 @@ bool osmesa_available();
 using GetProc = void* (*)(void* user, const char* name);
 std::string load_gl_functions(GetProc get_proc, void* user, const std::string& backend);
 
+// The current context's GL_VERSION string, which names the driver's own version too ("4.5
+// (Core Profile) Mesa 24.2.8").
+std::string gl_version();
+
 }  // namespace ecoview

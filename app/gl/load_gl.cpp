@@ -25,4 +25,9 @@ std::string load_gl_functions(GetProc get_proc, void* user, const std::string& b
   return renderer ? renderer : "unknown renderer";
 }
 
+std::string gl_version() {
+  const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  return version ? version : "unknown";
+}
+
 }  // namespace ecoview

@@ -8,6 +8,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.transforms import Bbox  # noqa: E402
 
 MARKERS = {"uniform": "o", "psm": "s", "lispsm": "^", "cascades": "v", "dpsm": "D", "ipsm": "P", "silhouette": "<",
            "psm+silhouette": ">", "adaptive": "8", "volumes": "*", "hybrid": "p", "reference": "h", "auto": "X"}
@@ -41,14 +42,34 @@ def plot_lines(ax, lines, note=lambda ys: ""):
         drawn[m] = ys
 
 
-def pareto(points):
-    """The points no other point beats in both time and error."""
-    front, best = [], float("inf")
-    for ms, err in sorted(points):
-        if err < best:
-            front.append((ms, err))
-            best = err
-    return front
+# Where a label may sit beside its point, in points from it: nearest first, then further out.
+LABEL_OFFSETS = [(3, 3), (3, -9), (-3, 3), (-3, -9), (3, 12), (3, -18), (-3, 12), (-3, -18), (10, -3), (-10, -3),
+                 (3, 21), (3, -27), (-3, 21), (-3, -27), (3, 30), (3, -36), (-3, 30), (-3, -36)]
+
+
+def place_labels(ax, labels, fontsize=6):
+    """Labels (x, y, text) beside their points, placed greedily in turn: each at the first offset
+    where it stays inside the axes and covers no point and no label placed before it; where none is
+    free, at the last offset tried, with a line to its point. Call it once the axes' limits and layout are final:
+    it measures in the figure's pixels."""
+    ax.figure.canvas.draw()
+    renderer = ax.figure.canvas.get_renderer()
+    taken = []
+    for x, y in ((x, y) for x, y, _ in labels):  # the points' markers, a few pixels each way
+        px, py = ax.transData.transform((x, y))
+        taken.append(Bbox([[px - 3, py - 3], [px + 3, py + 3]]))
+    for x, y, text in labels:
+        for i, (dx, dy) in enumerate(LABEL_OFFSETS):
+            last = i == len(LABEL_OFFSETS) - 1
+            note = ax.annotate(text, (x, y), xytext=(dx, dy), textcoords="offset points", fontsize=fontsize,
+                               ha="left" if dx >= 0 else "right",
+                               arrowprops=dict(arrowstyle="-", lw=0.4, color="gray") if last else None)
+            box = note.get_window_extent(renderer)
+            inside = ax.bbox.x0 <= box.x0 and box.x1 <= ax.bbox.x1 and ax.bbox.y0 <= box.y0 and box.y1 <= ax.bbox.y1
+            if last or (inside and not any(box.overlaps(t) for t in taken)):
+                taken.append(box)
+                break
+            note.remove()
 
 
 def tradeoff_chart(results, out):
@@ -60,16 +81,18 @@ def tradeoff_chart(results, out):
         for m in methods(rs):
             line = sorted((r for r in rs if r["params"]["method"] == m), key=lambda r: r["params"]["shadow_size"])
             lines[m] = ([r["figures"]["frame_ms"] for r in line], [100 * r["figures"]["err"] for r in line])
-            for r in line:
-                if r["params"]["shadow_size"]:
-                    ax.annotate(str(r["params"]["shadow_size"]), (r["figures"]["frame_ms"], 100 * r["figures"]["err"]),
-                                fontsize=6)
         plot_lines(ax, lines)
-        front = pareto([(r["figures"]["frame_ms"], 100 * r["figures"]["err"]) for r in rs])
-        ax.plot([p[0] for p in front], [p[1] for p in front], color="gray", lw=6, alpha=0.25, label="Pareto front")
+        # The front bench's summary lists (results.json's pareto_front), of this sweep's runs.
+        front = [p for p in results["pareto_front"].get(scene, []) if p["sweep"] == "tradeoff"]
+        ax.plot([p["frame_ms"] for p in front], [100 * p["err"] for p in front], color="gray", lw=6, alpha=0.25,
+                label="Pareto front")
         ax.set(xscale="log", xlabel="frame_ms", ylabel="err (%)", title=f"Speed against accuracy: {scene}")
         ax.legend(fontsize=7)
     fig.tight_layout()
+    for ax, scene in zip(axes[0], scenes):  # each map's size beside its point; the unsized methods' names
+        place_labels(ax, [(r["figures"]["frame_ms"], 100 * r["figures"]["err"],
+                           str(r["params"]["shadow_size"]) if r["params"]["shadow_size"] else r["params"]["method"])
+                          for r in runs(results, "tradeoff", scene=scene)])
     fig.savefig(f"{out}/chart_tradeoff.png", dpi=100)
 
 
@@ -78,6 +101,7 @@ def equal_err_chart(results, out):
     open markers where the uniform map's sizes only bound them."""
     rs = runs(results, "equal_err")
     fig, (speed_ax, texel_ax) = plt.subplots(1, 2, figsize=(12, 4.5))
+    labels = {speed_ax: [], texel_ax: []}
     for scene in sorted({r["params"]["scene"] for r in rs}):
         for m in methods([r for r in rs if r["params"]["scene"] == scene]):
             line = sorted((r for r in rs if r["params"]["scene"] == scene and r["params"]["method"] == m),
@@ -89,8 +113,8 @@ def equal_err_chart(results, out):
                     exact = r["params"]["bound"] == "equal"
                     ax.plot([e], [r["figures"][key]], marker=MARKERS.get(m, "o"), color=drawn[0].get_color(),
                             mfc=None if exact else "none")
-                    ax.annotate(str(r["params"]["shadow_size"]) + ("" if exact else " (" + r["params"]["bound"] + ")"),
-                                (e, r["figures"][key]), fontsize=6)
+                    labels[ax].append((e, r["figures"][key], str(r["params"]["shadow_size"]) +
+                                       ("" if exact else " (" + r["params"]["bound"] + ")")))
     speed_ax.axhline(1, color="gray", ls=":", label="target: 1 (as fast as uniform)")
     texel_ax.axhline(16, color="gray", ls=":", label="target on the field: 16")
     speed_ax.set(xscale="log", yscale="log", xlabel="err (%) the method reaches (its map size marked)",
@@ -101,6 +125,8 @@ def equal_err_chart(results, out):
         ax.invert_xaxis()
         ax.legend(fontsize=6)
     fig.tight_layout()
+    for ax, ax_labels in labels.items():
+        place_labels(ax, ax_labels)
     fig.savefig(f"{out}/chart_equal_err.png", dpi=100)
 
 
