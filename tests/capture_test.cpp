@@ -46,6 +46,15 @@ TEST(Capture, DefaultSceneFrameIsLitAndShadowed) {
   EXPECT_GT(static_cast<long>(shadow.pixels.size()) - dark, 320 * 180 / 4) << "too little light in the default frame";
 }
 
+// Without --method a frame gets the perspective shadow map, the method this project is about.
+TEST(Capture, TheDefaultMethodIsThePerspectiveShadowMap) {
+  const TempDir dir;
+  const CommandResult r = run_ecoview({"capture", "--scene", "courtyard", "--size", "64x36", "--aov", "none", "--stats",
+                                       (dir / "stats.json").string(), "--out", (dir / "out").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(read_bytes(dir / "stats.json")).at(0).at("method"), "psm");
+}
+
 TEST(Capture, SameFrameGivesSameBytes) {
   for (const char* backend : {"egl", "osmesa"}) {
     const TempDir a, b;

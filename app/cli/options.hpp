@@ -38,7 +38,7 @@ void add_scene_options(CLI::App& command, SceneOptions& options);
 struct RenderOptions {
   std::string size = "1280x720";
   int shadow_size = 2048;
-  std::string method = "uniform";
+  std::string method = "psm";  // the perspective shadow map, the project's core
   std::string geometry = "points";
   std::string sampler = "gpu";
   double k = RenderSettings{}.k;
