@@ -300,6 +300,69 @@ TEST(Capture, HelpExitsZero) {
   EXPECT_NE(r.out.find("--shadow-size"), std::string::npos);
 }
 
+// The commands `ecoview --help` lists, and ecoview itself (""), each as the help names it.
+std::vector<std::string> commands_and_ecoview() {
+  const CommandResult r = run_ecoview({"--help"});
+  std::vector<std::string> commands = {""};
+  std::istringstream lines(r.out);
+  bool listed = false;
+  for (std::string line; std::getline(lines, line);) {
+    if (listed && line.rfind("  ", 0) == 0) commands.push_back(line.substr(2, line.find(' ', 2) - 2));
+    listed = listed ? !line.empty() : line == "Subcommands:";
+  }
+  return commands;
+}
+
+// Each command's help is read at a glance: no line longer than 100 characters, and each option on
+// its own line (a description wrapped onto the next line would start with spaces, not a dash).
+TEST(Help, EveryOptionIsOneLineOfAtMost100Characters) {
+  const std::vector<std::string> commands = commands_and_ecoview();
+  for (const char* expected : {"capture", "view", "density", "bench", "help"}) {
+    EXPECT_NE(std::find(commands.begin(), commands.end(), expected), commands.end()) << expected;
+  }
+  for (const std::string& command : commands) {
+    const CommandResult r = run_ecoview(command.empty() ? std::vector<std::string>{"--help"} : std::vector<std::string>{command, "--help"});
+    ASSERT_EQ(r.exit_code, 0) << command << ": " << r.err;
+    std::istringstream lines(r.out);
+    int options = 0;
+    bool in_options = false;
+    for (std::string line; std::getline(lines, line);) {
+      EXPECT_LE(line.size(), 100u) << command << ": " << line;
+      if (in_options && !line.empty()) {
+        EXPECT_EQ(line.rfind("  -", 0), 0u) << command << ": not an option's line: " << line;
+        ++options;
+      }
+      in_options = in_options ? !line.empty() : line == "Options:";
+    }
+    EXPECT_GE(options, 1) << command;
+  }
+}
+
+// `ecoview help` and `ecoview help COMMAND` print what --help prints; an unknown command is bad input.
+TEST(Help, TheHelpCommandPrintsWhatHelpPrints) {
+  for (const std::string& command : commands_and_ecoview()) {
+    const CommandResult asked = run_ecoview(command.empty() ? std::vector<std::string>{"help"} : std::vector<std::string>{"help", command});
+    const CommandResult option = run_ecoview(command.empty() ? std::vector<std::string>{"--help"} : std::vector<std::string>{command, "--help"});
+    EXPECT_EQ(asked.exit_code, 0) << command << ": " << asked.err;
+    EXPECT_EQ(asked.out, option.out) << command;
+  }
+  const CommandResult unknown = run_ecoview({"help", "paint"});
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("'paint'"), std::string::npos) << unknown.err;
+  EXPECT_NE(unknown.err.find("capture"), std::string::npos) << unknown.err;
+}
+
+// A mistyped option sends the reader to the help of the command it was given to.
+TEST(Help, AnUnknownOptionPointsToItsCommandsHelp) {
+  for (const std::string& command : commands_and_ecoview()) {
+    const CommandResult r = run_ecoview(command.empty() ? std::vector<std::string>{"--colour", "red"}
+                                                        : std::vector<std::string>{command, "--colour", "red"});
+    EXPECT_EQ(r.exit_code, 2) << command;
+    const std::string help = command.empty() ? "see ecoview --help" : "see ecoview " + command + " --help";
+    EXPECT_NE(r.err.find(help), std::string::npos) << command << ": " << r.err;
+  }
+}
+
 // Output paths: a file where the --out folder would go, a folder where a frame's file goes, and
 // --stats in the --out folder a first run makes; an empty file in a frame's place is no frame.
 TEST(Capture, OutputPathsAreCheckedBeforeAnyWork) {

@@ -89,25 +89,18 @@ nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOp
 }  // namespace
 
 CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
-  CLI::App* cmd = app.add_subcommand("capture", "Render frames headless and write them as PNG files: "
-                                                "DIR/<aov>_<frame, 5 digits>.png");
+  CLI::App* cmd = app.add_subcommand("capture", "Render frames headless to PNG files DIR/<aov>_<frame, 5 digits>.png");
   add_scene_options(*cmd, o.scene);
-  cmd->add_option("--path", o.path, "Camera path JSON file, or the name of a shipped path; without one every "
-                                    "frame uses the scene's camera");
+  cmd->add_option("--path", o.path, "Camera path JSON file or shipped path (default: the scene's camera)");
   add_render_options(*cmd, o.render);
-  cmd->add_option("--backend", o.backend, "GL context: egl (default; GPU device or Mesa surfaceless) or osmesa")
+  cmd->add_option("--backend", o.backend, "GL context: egl (GPU device or Mesa surfaceless) or osmesa")
       ->capture_default_str();
-  cmd->add_option("--frames", o.frames, "Frames A:B renders frames A to B-1 (default: the whole path at --fps, "
-                                        "or frame 0 without a path)");
+  cmd->add_option("--frames", o.frames, "A:B renders frames A to B-1 (default: all the path at --fps, or 0)");
   cmd->add_option("--fps", o.fps, "Frames per second: frame i is at time i / fps")->capture_default_str();
-  cmd->add_option("--aov", o.aov, "Comma-separated images per frame: color, shadow, depth, aliasing "
-                                  "(heat map of shadow-map texels per pixel), shadowmap (the map itself), reference (exact "
-                                  "visibility by ray tracing, encoded as shadow); or none, with --stats, to time frames "
-                                  "without writing images (a GPU left idle while a PNG is encoded clocks down)")->capture_default_str();
-  cmd->add_flag("--force", o.force, "Render frames again even where their files exist (by default a capture "
-                                    "resumes, skipping finished frames)");
-  cmd->add_option("--stats", o.stats, "Also write each rendered frame's figures as JSON to this file: alias_p95, "
-                                      "pass times, points, triangles");
+  cmd->add_option("--aov", o.aov, "Images a frame: color,shadow,depth,aliasing,shadowmap,reference; none")
+      ->capture_default_str();
+  cmd->add_flag("--force", o.force, "Render frames again where their files exist (default: resume)");
+  cmd->add_option("--stats", o.stats, "Also write each frame's figures (alias_p95, times) to this JSON file");
   cmd->add_option("--out", o.out, "Output folder, created if missing (required)");
   return cmd;
 }

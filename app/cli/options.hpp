@@ -13,6 +13,9 @@
 // the option.
 namespace ecoview {
 
+// The longest line the help gives an option, a command or a footer.
+constexpr std::size_t max_help_line = 100;
+
 glm::ivec2 parse_size(const std::string& text);  // "WxH"
 
 struct FrameRange {

@@ -12,28 +12,19 @@
 namespace ecoview {
 
 CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
-  CLI::App* cmd = app.add_subcommand(
-      "view", "Fly through a scene in a window. WASD move, Q/E down/up, drag the mouse to look, wheel or +/- "
-              "change the speed, O orbits the point in view, R starts and stops recording a camera path, P writes "
-              "the frame as capture does, H hides the HUD, Esc quits");
+  CLI::App* cmd = app.add_subcommand("view", "Fly through a scene in a window (it prints its keys when it opens)");
   add_scene_options(*cmd, o.scene);
   add_render_options(*cmd, o.render);
-  cmd->add_option("--play", o.play, "Camera path (file or shipped name) to follow from t = 0; flight is free after "
-                                    "its last key");
-  cmd->add_option("--record", o.record, "File R writes the recorded camera path to (the path format capture --path "
-                                        "reads; written when recording stops or the window closes)")
+  cmd->add_option("--play", o.play, "Camera path (file or shipped name) to follow from t = 0");
+  cmd->add_option("--record", o.record, "File R writes the recorded camera path to (as --path reads it)")
       ->capture_default_str();
-  cmd->add_option("--fps", o.fps, "Step time by 1/fps per frame, as capture does, instead of the clock "
-                                  "(a path then replays frame for frame as in capture)");
+  cmd->add_option("--fps", o.fps, "Step time by 1/fps a frame, as capture does, not by the clock");
   cmd->add_option("--exit-after", o.exit_after, "Close after this many frames (0: when the window is closed)");
-  cmd->add_option("--screenshot", o.screenshot, "After the last frame, write the window as shown (HUD included) "
-                                                "to this PNG file");
-  cmd->add_option("--out", o.out, "Folder P writes frames to, named as capture names them (color_<frame>.png)")
-      ->capture_default_str();
+  cmd->add_option("--screenshot", o.screenshot, "After the last frame, write the window (HUD included) to this PNG");
+  cmd->add_option("--out", o.out, "Folder P writes frames to, named as capture names them")->capture_default_str();
   cmd->add_flag("--no-hud", o.no_hud, "Start with the HUD hidden (H shows it)");
-  cmd->add_flag("--shadow-map-inset", o.shadow_map_inset, "Start with the HUD's inset of the shadow map (its first view) on");
-  cmd->add_flag("--aliasing-overlay", o.aliasing_overlay, "Start with the aliasing heat map over the frame (as the aliasing "
-                                                          "AOV: blue 1/8 texel per pixel, green 1, red 8 and more)");
+  cmd->add_flag("--shadow-map-inset", o.shadow_map_inset, "Start with the HUD's inset of the shadow map on");
+  cmd->add_flag("--aliasing-overlay", o.aliasing_overlay, "Start with the aliasing heat map (the aliasing AOV) on");
   return cmd;
 }
 
