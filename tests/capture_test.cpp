@@ -486,6 +486,52 @@ TEST(CommandLine, UnknownCommandsAndOptionsAreNamedFirst) {
   }
 }
 
+// Output names the system would refuse: a name longer than the file system takes (in a folder
+// that is there, and below one that is not), and a folder inside a file. Every command with
+// --out says so as bad input, one line naming the option, the path and the reason, before it
+// loads a scene, and makes nothing.
+TEST(CommandLine, OutputNamesTheSystemRefusesAreBadInputForEveryCommand) {
+  const TempDir dir;
+  write_text(dir / "file", "x");
+  const std::string long_name(300, 'a');
+  const std::vector<std::pair<std::string, std::string>> refused = {  // the path, and the reason
+      {(dir / long_name).string(), "too long"},
+      {(dir / "new" / long_name / "x").string(), "too long"},
+      {(dir / "file" / "x").string(), "ot a"}};  // "not a folder", "Not a directory"
+  const std::vector<std::vector<std::string>> commands = {{"capture", "--scene", "courtyard"}, {"view", "--scene", "courtyard"},
+                                                          {"bench", "--quick"}, {"bench", "--quick", "--suite", "paper"},
+                                                          {"density", "--quick", "--scene", "courtyard"}};
+  for (const std::vector<std::string>& command : commands) {
+    for (const auto& [out, reason] : refused) {
+      std::vector<std::string> args = command;
+      args.insert(args.end(), {"--out", out});
+      const CommandResult r = run_shell("unset DISPLAY WAYLAND_DISPLAY; ecoview " + [&] {
+        std::string quoted;
+        for (const std::string& a : args) quoted += shell_quote(a) + " ";
+        return quoted;
+      }());
+      EXPECT_EQ(r.exit_code, 2) << command[0] << " " << out << ": " << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_NE(r.err.find("--out: " + out), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
+      EXPECT_EQ(r.out.find("scene:"), std::string::npos) << "loaded a scene first: " << r.out;
+    }
+  }
+  // --stats: the same, and a name the folder takes whose temporary name (the name and ".tmp" and
+  // the process id) it would not.
+  const std::string nearly_long = std::string(250, 'a') + ".json";
+  write_text(dir / nearly_long, "x");
+  std::filesystem::remove(dir / nearly_long);
+  for (const auto& [stats, reason] : {refused[0], refused[1], refused[2], std::pair{(dir / nearly_long).string(), std::string("too long")}}) {
+    const CommandResult r = run_ecoview({"capture", "--scene", "courtyard", "--size", "64x36", "--stats", stats,
+                                         "--out", (dir / "out").string()});
+    EXPECT_EQ(r.exit_code, 2) << stats << ": " << r.err;
+    EXPECT_NE(r.err.find("--stats: " + stats), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(files_in(dir.path()), std::vector<std::string>{"file"});
+}
+
 // The commit is the one the binary was built from: one of this repository's (when it is a git
 // checkout), "-dirty" after it when the tree had changes.
 TEST(CommandLine, VersionGivesTheVersionAndTheCommit) {

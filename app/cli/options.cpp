@@ -215,6 +215,7 @@ void check_output_file(const std::string& option, const std::string& file, const
   if (!out_folder.empty() && normal_folder(file) == normal_folder(out_folder)) {
     throw InputError(option + ": " + file + " is the --out folder; name a file (in it or elsewhere)");
   }
+  if (const auto reason = refused_file_name(file)) throw InputError(option + ": " + file + ": " + *reason);
   const fs::path folder = fs::absolute(file).lexically_normal().parent_path();
   if (fs::is_directory(folder, ec)) {
     if (const auto reason = cannot_write_in(folder)) throw InputError(option + ": " + file + ": cannot be written there (" + *reason + ")");
@@ -232,10 +233,11 @@ void check_out_folder(const std::string& out) {
     if (fs::exists(p, ec)) {
       if (!fs::is_directory(p, ec)) throw InputError("--out: " + out + ": " + p.string() + " is a file, not a folder");
       if (const auto reason = cannot_write_in(p)) throw InputError("--out: " + out + ": cannot write in " + p.string() + " (" + *reason + ")");
-      return;
+      break;
     }
-    if (p == p.parent_path()) return;
+    if (p == p.parent_path()) break;
   }
+  if (const auto reason = refused_name(out)) throw InputError("--out: " + out + ": " + *reason);
 }
 
 void make_out_folder(const std::string& out) {

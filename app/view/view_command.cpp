@@ -3,6 +3,7 @@
 #include "app/cli/scene_info.hpp"
 #include "app/clock.hpp"
 #include "app/errors.hpp"
+#include "app/file_io.hpp"
 #include "app/gl/glfw_window.hpp"
 #include "app/view/viewer.hpp"
 
@@ -34,6 +35,7 @@ int run_view(const ViewOptions& o) {
   if (o.exit_after < 0) throw InputError("--exit-after: must be 0 or more");
   if (!o.screenshot.empty() && o.exit_after == 0) throw InputError("--screenshot: needs --exit-after N (the frame it shows)");
   if (o.fps) settings.fps = check_fps(*o.fps);
+  if (const auto reason = refused_name(o.out)) throw InputError("--out: " + o.out + ": " + *reason);
   if (!std::filesystem::is_directory(o.out)) throw InputError("--out: " + o.out + ": not a folder");
   check_output_file("--record", o.record);
   check_output_file("--screenshot", o.screenshot);
