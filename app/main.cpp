@@ -2,6 +2,7 @@
 #include "app/bench/bench_command.hpp"
 #include "app/bench/density_command.hpp"
 #include "app/capture/capture_command.hpp"
+#include "app/cli/scenes_command.hpp"
 #include "app/view/view_command.hpp"
 #include "app/errors.hpp"
 #include "app/file_io.hpp"
@@ -88,6 +89,7 @@ int main(int argc, char** argv) {
   CLI::App* view_command = add_view_command(app, view);
   CLI::App* density_command = add_density_command(app, density);
   CLI::App* bench_command = add_bench_command(app, bench);
+  CLI::App* scenes_command = add_scenes_command(app);
   std::string help_topic;
   CLI::App* help_command = app.add_subcommand("help", "Print this help, or a command's: ecoview help capture");
   help_command->add_option("command", help_topic, "The command whose options to list");
@@ -117,6 +119,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (help_command->parsed()) return print_help(app, help_topic);
+  if (scenes_command->parsed()) return run_scenes();
   remove_temporary_on_signals();
 
   try {

@@ -532,6 +532,44 @@ TEST(CommandLine, OutputNamesTheSystemRefusesAreBadInputForEveryCommand) {
   EXPECT_EQ(files_in(dir.path()), std::vector<std::string>{"file"});
 }
 
+// `ecoview scenes` has a line for each scene and each camera path in data/ (the binary embeds
+// them): the name, whether it is a scene, a path or both, and a scene's lights, objects and comment.
+TEST(Scenes, ListsEveryShippedSceneAndPathWithWhatItHolds) {
+  std::map<std::string, std::pair<bool, bool>> shipped;  // scene, path
+  for (const char* folder : {"scenes", "paths"}) {
+    for (const std::string& file : files_in(source_dir() / "data" / folder)) {
+      if (file.size() <= 5 || file.substr(file.size() - 5) != ".json") continue;
+      auto& [scene, path] = shipped[file.substr(0, file.size() - 5)];
+      (std::string(folder) == "scenes" ? scene : path) = true;
+    }
+  }
+  ASSERT_GE(shipped.size(), 2u);
+  const CommandResult r = run_ecoview({"scenes"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::map<std::string, std::string> listed;  // name: the rest of its line
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);) {
+    std::smatch m;
+    if (std::regex_match(line, m, std::regex(R"(  (\S+) +(.*))"))) listed[m[1]] = m[2];
+  }
+  ASSERT_EQ(listed.size(), shipped.size()) << r.out;
+  for (const auto& [name, kinds] : shipped) {
+    const auto& [scene, path] = kinds;
+    ASSERT_TRUE(listed.count(name)) << name << " not in " << r.out;
+    const std::string& line = listed[name];
+    EXPECT_EQ(line.rfind(scene && path ? "scene and path" : scene ? "scene " : "path ", 0), 0u) << name << ": " << line;
+    if (!scene) continue;
+    const nlohmann::json json = nlohmann::json::parse(read_bytes(source_dir() / "data" / "scenes" / (name + ".json")));
+    for (const char* counted : {"light", "object"}) {
+      const std::string count = std::to_string(json[std::string(counted) + "s"].size());
+      EXPECT_TRUE(std::regex_search(line, std::regex("\\b" + count + " " + counted))) << line;
+    }
+    if (json.contains("comment")) {
+      EXPECT_NE(line.find(json["comment"].get<std::string>()), std::string::npos) << line;
+    }
+  }
+}
+
 // The commit is the one the binary was built from: one of this repository's (when it is a git
 // checkout), "-dirty" after it when the tree had changes.
 TEST(CommandLine, VersionGivesTheVersionAndTheCommit) {

@@ -51,7 +51,7 @@ int check_shadow_size(int size) {
 }
 
 void add_scene_options(CLI::App& command, SceneOptions& o) {
-  command.add_option("--scene", o.name, "Scene JSON file or the name of a shipped scene");
+  command.add_option("--scene", o.name, "Scene JSON file or shipped scene (ecoview scenes lists them)");
   command.add_option("--light", o.light, "Index of the scene light that shines and casts shadows")->capture_default_str();
   command.add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes that would need more memory than this, in GiB")
       ->capture_default_str();
