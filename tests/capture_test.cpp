@@ -391,6 +391,30 @@ TEST(Capture, OutputPathsAreCheckedBeforeAnyWork) {
   EXPECT_GT(std::filesystem::file_size(fresh / "color_00000.png"), 0u) << "an empty file is rendered again";
 }
 
+// A method that takes only some kinds of light hands the others to the uniform map, and says so
+// in one note: the courtyard's light 0 is directional, 1 a spot and 2 a point light; dpsm takes
+// point and spot lights, lispsm directional ones, psm all.
+TEST(Capture, AMethodSaysInANoteWhenItHandsTheLightToTheUniformMap) {
+  struct Case {
+    const char* method;
+    const char* light;
+    bool handed_over;
+  };
+  for (const Case& c : {Case{"dpsm", "0", true}, Case{"dpsm", "2", false}, Case{"lispsm", "1", true}, Case{"lispsm", "0", false},
+                        Case{"psm", "1", false}}) {
+    const TempDir dir;
+    const CommandResult r = run_ecoview({"capture", "--scene", "courtyard", "--method", c.method, "--light", c.light, "--size", "64x36",
+                                         "--out", dir.path().string()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string note = std::string("ecoview: note: --method ") + c.method + " takes only ";
+    EXPECT_EQ(r.err.find(note) != std::string::npos, c.handed_over) << c.method << " " << c.light << ": " << r.err;
+    if (!c.handed_over) continue;
+    const std::string line = r.err.substr(r.err.find(note), r.err.find('\n', r.err.find(note)) - r.err.find(note));
+    EXPECT_NE(line.find("light " + std::string(c.light)), std::string::npos) << line;
+    EXPECT_NE(line.find("uniform map"), std::string::npos) << line;
+  }
+}
+
 // A frame takes things from the one before (the PSM's near plane, caster culling's receivers):
 // a capture split anywhere gives the same bytes as one run, points and point casters included.
 TEST(Capture, AFrameHasTheSameBytesWhereverACaptureIsSplit) {

@@ -130,6 +130,7 @@ int run_capture(const CaptureOptions& o) {
   std::cout << describe_scene(scene, std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count())
             << std::endl;
   const shadow::Light& light = select_light(scene, o.scene.light);
+  note_light_handed_over(settings.method, light, o.scene.light);
   std::optional<CameraPath> path;
   if (!o.path.empty()) path = CameraPath::load(open_input(o.path, "paths"));
   const FrameRange frames = frames_asked ? asked_frames : default_frames(path, fps);

@@ -77,15 +77,21 @@ std::string wrapped(const std::string& text, std::size_t width) {
   return lines + line;
 }
 
+const char* light_type_name(shadow::LightType type) {
+  return type == shadow::LightType::directional ? "directional" : type == shadow::LightType::point ? "point" : "spot";
+}
+
 // The lights in `lights`: "point and spot".
 std::string light_names(const shadow::Lights& lights) {
   std::string names;
-  for (const auto& [type, name] : {std::pair{shadow::LightType::directional, "directional"},
-                                   std::pair{shadow::LightType::point, "point"}, std::pair{shadow::LightType::spot, "spot"}}) {
-    if (lights.has(type)) names += (names.empty() ? "" : " and ") + std::string(name);
+  for (const shadow::LightType type : {shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot}) {
+    if (lights.has(type)) names += (names.empty() ? "" : " and ") + std::string(light_type_name(type));
   }
   return names;
 }
+
+// A line on stderr beside the output, as the scene file's notes (Scene::notes) are written.
+void note(const std::string& line) { std::cerr << "ecoview: note: " << line << "\n"; }
 
 // The methods whose own setup handles exactly `lights`: "dpsm and ipsm".
 std::string methods_for(const shadow::Lights& lights) {
@@ -256,7 +262,7 @@ Scene load_scene_option(const std::string& scene, double memory_budget_gib) {
   }
   Scene loaded = load_scene(open_input(scene.empty() ? default_scene_name : scene, "scenes"),
                              {memory_budget_gib * 1024.0 * 1024.0 * 1024.0});
-  for (const std::string& note : loaded.notes) std::cerr << "ecoview: note: " << note << "\n";
+  for (const std::string& line : loaded.notes) note(line);
   return loaded;
 }
 
@@ -266,6 +272,13 @@ const shadow::Light& select_light(const Scene& scene, int index) {
                      " light(s), numbered from 0; got " + std::to_string(index));
   }
   return scene.lights[static_cast<std::size_t>(index)];
+}
+
+void note_light_handed_over(shadow::Method method, const shadow::Light& light, int index) {
+  const shadow::Technique& t = shadow::technique(method);
+  if (t.warps.has(light.type)) return;
+  note("--method " + t.name + " takes only " + light_names(t.warps) + " lights; light " + std::to_string(index) + " is a " +
+       light_type_name(light.type) + " light, so its shadows are the uniform map's");
 }
 
 void add_benchmark_options(CLI::App& command, BenchmarkOptions& o, const std::string& quick_help) {

@@ -89,5 +89,8 @@ void make_out_folder(const std::string& out);
 Scene load_scene_option(const std::string& scene, double memory_budget_gib);
 // The light selected by --light.
 const shadow::Light& select_light(const Scene& scene, int index);
+// Says in a note on stderr where --method hands the light (number `index`) to the uniform map
+// (shadow::Technique::warps): the frames then show that map's shadows, not the method's.
+void note_light_handed_over(shadow::Method method, const shadow::Light& light, int index);
 
 }  // namespace ecoview

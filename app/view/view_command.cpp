@@ -52,6 +52,7 @@ int run_view(const ViewOptions& o) {
   settings.scene_line = describe_scene(scene, ms_since(load_start) / 1000.0);
   std::cout << settings.scene_line << std::endl;
   settings.light = select_light(scene, o.scene.light);
+  note_light_handed_over(settings.render.method, settings.light, o.scene.light);
   GlfwWindow window(settings.render.width, settings.render.height, "ecoview — " + scene.name);
 
   Viewer viewer(scene, settings, window);
