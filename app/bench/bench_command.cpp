@@ -299,7 +299,7 @@ class ShadowBench {
 
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
   CLI::App* cmd = app.add_subcommand("bench", "Shadow-method benchmark, speed against accuracy; writes a report");
-  add_benchmark_options(*cmd, o.run, "Small scenes and few configurations, to check everything works");
+  add_benchmark_options(*cmd, o.run, "Small scenes and few configurations (1-1.5 min on 2 busy CPU cores)");
   cmd->add_option("--suite", o.suite, "methods (speed against accuracy) or paper (the PSM paper's figures)")
       ->capture_default_str();
   return cmd;
