@@ -6,9 +6,11 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <climits>
 #include <csignal>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <mutex>
 
 namespace ecoview {
@@ -135,6 +137,42 @@ std::optional<std::string> cannot_write_in(const std::filesystem::path& folder) 
   ::close(fd);
   ::unlink(probe.c_str());
   return std::nullopt;
+}
+
+// refused_name, where the last name is to take `suffix` more characters.
+static std::optional<std::string> refused_name_with(const std::filesystem::path& path, std::size_t suffix) {
+  namespace fs = std::filesystem;
+  const fs::path absolute = fs::absolute(path).lexically_normal();
+  if (absolute.native().size() + suffix >= PATH_MAX) {
+    return "File name too long (the path has " + std::to_string(absolute.native().size()) + " characters, at most " +
+           std::to_string(PATH_MAX - 1 - suffix) + ")";
+  }
+  // The parts there are: the system says what it will not look up. The first that is not there
+  // ends them; the file system of the folder above takes the rest.
+  fs::path existing;
+  auto part = absolute.begin();
+  for (; part != absolute.end(); ++part) {
+    std::error_code ec;
+    static_cast<void>(fs::status(existing / *part, ec));  // the error code is the answer
+    if (ec == std::errc::no_such_file_or_directory) break;
+    if (ec) return ec.message();
+    existing /= *part;
+  }
+  const long name_max = ::pathconf(existing.c_str(), _PC_NAME_MAX);
+  for (; part != absolute.end(); ++part) {
+    const std::size_t length = part->native().size() + (std::next(part) == absolute.end() ? suffix : 0);
+    if (name_max > 0 && length > static_cast<std::size_t>(name_max)) {
+      return "File name too long (" + std::to_string(part->native().size()) + " characters, at most " +
+             std::to_string(static_cast<std::size_t>(name_max) - length + part->native().size()) + " there)";
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> refused_name(const std::filesystem::path& path) { return refused_name_with(path, 0); }
+
+std::optional<std::string> refused_file_name(const std::filesystem::path& path) {
+  return refused_name_with(path, temporary_name(path).filename().native().size() - path.filename().native().size());
 }
 
 }  // namespace ecoview

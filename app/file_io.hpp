@@ -45,4 +45,11 @@ int remove_stale_temporaries(const std::filesystem::path& folder, const std::set
 // the reason it cannot otherwise.
 std::optional<std::string> cannot_write_in(const std::filesystem::path& folder);
 
+// Why the system would refuse to make `path`, a folder, and the folders above it that are not
+// there yet: a part of it that cannot be looked up ("Permission denied", "Not a directory") or a
+// name longer than its file system takes. Nothing where it would make it.
+std::optional<std::string> refused_name(const std::filesystem::path& path);
+// The same for a file write_file_atomically writes: its temporary name is longer.
+std::optional<std::string> refused_file_name(const std::filesystem::path& path);
+
 }  // namespace ecoview

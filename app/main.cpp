@@ -2,6 +2,7 @@
 #include "app/bench/bench_command.hpp"
 #include "app/bench/density_command.hpp"
 #include "app/capture/capture_command.hpp"
+#include "app/cli/scenes_command.hpp"
 #include "app/view/view_command.hpp"
 #include "app/errors.hpp"
 #include "app/file_io.hpp"
@@ -14,6 +15,7 @@
 #include <iostream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace {
 
@@ -46,6 +48,29 @@ std::string command_names(CLI::App& app) {
   return names;
 }
 
+// Where to read about a command line that failed to parse: the help of the command it names, or
+// ecoview's own.
+std::string help_hint(CLI::App& app) {
+  const std::vector<CLI::App*> commands = app.get_subcommands();
+  return "see ecoview " + (commands.empty() ? std::string() : commands.front()->get_name() + " ") + "--help";
+}
+
+// `ecoview help [COMMAND]`: what --help prints, for ecoview or for the command.
+int print_help(CLI::App& app, const std::string& command) {
+  if (command.empty()) {
+    std::cout << app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal);
+    return 0;
+  }
+  for (const CLI::App* known : app.get_subcommands({})) {
+    if (known->get_name() == command) {
+      std::cout << known->help(app.get_name());
+      return 0;
+    }
+  }
+  std::cerr << "ecoview: help: unknown command '" << one_line(command) << "' (commands: " << command_names(app) << ")\n";
+  return 2;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -64,6 +89,10 @@ int main(int argc, char** argv) {
   CLI::App* view_command = add_view_command(app, view);
   CLI::App* density_command = add_density_command(app, density);
   CLI::App* bench_command = add_bench_command(app, bench);
+  CLI::App* scenes_command = add_scenes_command(app);
+  std::string help_topic;
+  CLI::App* help_command = app.add_subcommand("help", "Print this help, or a command's: ecoview help capture");
+  help_command->add_option("command", help_topic, "The command whose options to list");
 
   try {
     app.parse(argc, argv);
@@ -79,16 +108,18 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ExtrasError& e) {
     if (!app.get_subcommands().empty() || app.remaining().empty()) {
-      std::cerr << "ecoview: " << one_line(e.what()) << " (see ecoview --help)\n";
+      std::cerr << "ecoview: " << one_line(e.what()) << " (" << help_hint(app) << ")\n";
     } else {
       std::cerr << "ecoview: unknown command '" << one_line(app.remaining().front()) << "' (commands: " << command_names(app)
                 << "; see ecoview --help)\n";
     }
     return 2;
   } catch (const CLI::ParseError& e) {
-    std::cerr << "ecoview: " << one_line(e.what()) << " (see ecoview --help)\n";
+    std::cerr << "ecoview: " << one_line(e.what()) << " (" << help_hint(app) << ")\n";
     return 2;
   }
+  if (help_command->parsed()) return print_help(app, help_topic);
+  if (scenes_command->parsed()) return run_scenes();
   remove_temporary_on_signals();
 
   try {

@@ -40,6 +40,7 @@ struct Lights {
     return type == LightType::directional ? directional : type == LightType::point ? point : spot;
   }
   bool all() const { return directional && point && spot; }
+  bool operator==(const Lights&) const = default;
 };
 
 struct Technique {

@@ -47,6 +47,15 @@ TEST(Capture, DefaultSceneFrameIsLitAndShadowed) {
   EXPECT_GT(static_cast<long>(shadow.pixels.size()) - dark, 320 * 180 / 4) << "too little light in the default frame";
 }
 
+// Without --method a frame gets the perspective shadow map, the method this project is about.
+TEST(Capture, TheDefaultMethodIsThePerspectiveShadowMap) {
+  const TempDir dir;
+  const CommandResult r = run_ecoview({"capture", "--scene", "courtyard", "--size", "64x36", "--aov", "none", "--stats",
+                                       (dir / "stats.json").string(), "--out", (dir / "out").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(read_bytes(dir / "stats.json")).at(0).at("method"), "psm");
+}
+
 TEST(Capture, SameFrameGivesSameBytes) {
   for (const char* backend : {"egl", "osmesa"}) {
     const TempDir a, b;
@@ -357,6 +366,69 @@ TEST(Capture, HelpExitsZero) {
   EXPECT_NE(r.out.find("--shadow-size"), std::string::npos);
 }
 
+// The commands `ecoview --help` lists, and ecoview itself (""), each as the help names it.
+std::vector<std::string> commands_and_ecoview() {
+  const CommandResult r = run_ecoview({"--help"});
+  std::vector<std::string> commands = {""};
+  std::istringstream lines(r.out);
+  bool listed = false;
+  for (std::string line; std::getline(lines, line);) {
+    if (listed && line.rfind("  ", 0) == 0) commands.push_back(line.substr(2, line.find(' ', 2) - 2));
+    listed = listed ? !line.empty() : line == "Subcommands:";
+  }
+  return commands;
+}
+
+// Each command's help is read at a glance: no line longer than 100 characters, and each option on
+// its own line (a description wrapped onto the next line would start with spaces, not a dash).
+TEST(Help, EveryOptionIsOneLineOfAtMost100Characters) {
+  const std::vector<std::string> commands = commands_and_ecoview();
+  for (const char* expected : {"capture", "view", "density", "bench", "help"}) {
+    EXPECT_NE(std::find(commands.begin(), commands.end(), expected), commands.end()) << expected;
+  }
+  for (const std::string& command : commands) {
+    const CommandResult r = run_ecoview(command.empty() ? std::vector<std::string>{"--help"} : std::vector<std::string>{command, "--help"});
+    ASSERT_EQ(r.exit_code, 0) << command << ": " << r.err;
+    std::istringstream lines(r.out);
+    int options = 0;
+    bool in_options = false;
+    for (std::string line; std::getline(lines, line);) {
+      EXPECT_LE(line.size(), 100u) << command << ": " << line;
+      if (in_options && !line.empty()) {
+        EXPECT_EQ(line.rfind("  -", 0), 0u) << command << ": not an option's line: " << line;
+        ++options;
+      }
+      in_options = in_options ? !line.empty() : line == "Options:";
+    }
+    EXPECT_GE(options, 1) << command;
+  }
+}
+
+// `ecoview help` and `ecoview help COMMAND` print what --help prints; an unknown command is bad input.
+TEST(Help, TheHelpCommandPrintsWhatHelpPrints) {
+  for (const std::string& command : commands_and_ecoview()) {
+    const CommandResult asked = run_ecoview(command.empty() ? std::vector<std::string>{"help"} : std::vector<std::string>{"help", command});
+    const CommandResult option = run_ecoview(command.empty() ? std::vector<std::string>{"--help"} : std::vector<std::string>{command, "--help"});
+    EXPECT_EQ(asked.exit_code, 0) << command << ": " << asked.err;
+    EXPECT_EQ(asked.out, option.out) << command;
+  }
+  const CommandResult unknown = run_ecoview({"help", "paint"});
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("'paint'"), std::string::npos) << unknown.err;
+  EXPECT_NE(unknown.err.find("capture"), std::string::npos) << unknown.err;
+}
+
+// A mistyped option sends the reader to the help of the command it was given to.
+TEST(Help, AnUnknownOptionPointsToItsCommandsHelp) {
+  for (const std::string& command : commands_and_ecoview()) {
+    const CommandResult r = run_ecoview(command.empty() ? std::vector<std::string>{"--colour", "red"}
+                                                        : std::vector<std::string>{command, "--colour", "red"});
+    EXPECT_EQ(r.exit_code, 2) << command;
+    const std::string help = command.empty() ? "see ecoview --help" : "see ecoview " + command + " --help";
+    EXPECT_NE(r.err.find(help), std::string::npos) << command << ": " << r.err;
+  }
+}
+
 // Output paths: a file where the --out folder would go, a folder where a frame's file goes, and
 // --stats in the --out folder a first run makes; an empty file in a frame's place is no frame.
 TEST(Capture, OutputPathsAreCheckedBeforeAnyWork) {
@@ -383,6 +455,30 @@ TEST(Capture, OutputPathsAreCheckedBeforeAnyWork) {
   r = run_ecoview({"capture", "--scene", "courtyard", "--size", "64x36", "--out", fresh.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_GT(std::filesystem::file_size(fresh / "color_00000.png"), 0u) << "an empty file is rendered again";
+}
+
+// A method that takes only some kinds of light hands the others to the uniform map, and says so
+// in one note: the courtyard's light 0 is directional, 1 a spot and 2 a point light; dpsm takes
+// point and spot lights, lispsm directional ones, psm all.
+TEST(Capture, AMethodSaysInANoteWhenItHandsTheLightToTheUniformMap) {
+  struct Case {
+    const char* method;
+    const char* light;
+    bool handed_over;
+  };
+  for (const Case& c : {Case{"dpsm", "0", true}, Case{"dpsm", "2", false}, Case{"lispsm", "1", true}, Case{"lispsm", "0", false},
+                        Case{"psm", "1", false}}) {
+    const TempDir dir;
+    const CommandResult r = run_ecoview({"capture", "--scene", "courtyard", "--method", c.method, "--light", c.light, "--size", "64x36",
+                                         "--out", dir.path().string()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string note = std::string("ecoview: note: --method ") + c.method + " takes only ";
+    EXPECT_EQ(r.err.find(note) != std::string::npos, c.handed_over) << c.method << " " << c.light << ": " << r.err;
+    if (!c.handed_over) continue;
+    const std::string line = r.err.substr(r.err.find(note), r.err.find('\n', r.err.find(note)) - r.err.find(note));
+    EXPECT_NE(line.find("light " + std::string(c.light)), std::string::npos) << line;
+    EXPECT_NE(line.find("uniform map"), std::string::npos) << line;
+  }
 }
 
 // A frame takes things from the one before (the PSM's near plane, caster culling's receivers):
@@ -506,6 +602,90 @@ TEST(CommandLine, UnknownCommandsAndOptionsAreNamedFirst) {
     r = run_ecoview({command});
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("--out is required"), std::string::npos) << command << ": " << r.err;
+  }
+}
+
+// Output names the system would refuse: a name longer than the file system takes (in a folder
+// that is there, and below one that is not), and a folder inside a file. Every command with
+// --out says so as bad input, one line naming the option, the path and the reason, before it
+// loads a scene, and makes nothing.
+TEST(CommandLine, OutputNamesTheSystemRefusesAreBadInputForEveryCommand) {
+  const TempDir dir;
+  write_text(dir / "file", "x");
+  const std::string long_name(300, 'a');
+  const std::vector<std::pair<std::string, std::string>> refused = {  // the path, and the reason
+      {(dir / long_name).string(), "too long"},
+      {(dir / "new" / long_name / "x").string(), "too long"},
+      {(dir / "file" / "x").string(), "ot a"}};  // "not a folder", "Not a directory"
+  const std::vector<std::vector<std::string>> commands = {{"capture", "--scene", "courtyard"}, {"view", "--scene", "courtyard"},
+                                                          {"bench", "--quick"}, {"bench", "--quick", "--suite", "paper"},
+                                                          {"density", "--quick", "--scene", "courtyard"}};
+  for (const std::vector<std::string>& command : commands) {
+    for (const auto& [out, reason] : refused) {
+      std::vector<std::string> args = command;
+      args.insert(args.end(), {"--out", out});
+      const CommandResult r = run_shell("unset DISPLAY WAYLAND_DISPLAY; ecoview " + [&] {
+        std::string quoted;
+        for (const std::string& a : args) quoted += shell_quote(a) + " ";
+        return quoted;
+      }());
+      EXPECT_EQ(r.exit_code, 2) << command[0] << " " << out << ": " << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_NE(r.err.find("--out: " + out), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
+      EXPECT_EQ(r.out.find("scene:"), std::string::npos) << "loaded a scene first: " << r.out;
+    }
+  }
+  // --stats: the same, and a name the folder takes whose temporary name (the name and ".tmp" and
+  // the process id) it would not.
+  const std::string nearly_long = std::string(250, 'a') + ".json";
+  write_text(dir / nearly_long, "x");
+  std::filesystem::remove(dir / nearly_long);
+  for (const auto& [stats, reason] : {refused[0], refused[1], refused[2], std::pair{(dir / nearly_long).string(), std::string("too long")}}) {
+    const CommandResult r = run_ecoview({"capture", "--scene", "courtyard", "--size", "64x36", "--stats", stats,
+                                         "--out", (dir / "out").string()});
+    EXPECT_EQ(r.exit_code, 2) << stats << ": " << r.err;
+    EXPECT_NE(r.err.find("--stats: " + stats), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(files_in(dir.path()), std::vector<std::string>{"file"});
+}
+
+// `ecoview scenes` has a line for each scene and each camera path in data/ (the binary embeds
+// them): the name, whether it is a scene, a path or both, and a scene's lights, objects and comment.
+TEST(Scenes, ListsEveryShippedSceneAndPathWithWhatItHolds) {
+  std::map<std::string, std::pair<bool, bool>> shipped;  // scene, path
+  for (const char* folder : {"scenes", "paths"}) {
+    for (const std::string& file : files_in(source_dir() / "data" / folder)) {
+      if (file.size() <= 5 || file.substr(file.size() - 5) != ".json") continue;
+      auto& [scene, path] = shipped[file.substr(0, file.size() - 5)];
+      (std::string(folder) == "scenes" ? scene : path) = true;
+    }
+  }
+  ASSERT_GE(shipped.size(), 2u);
+  const CommandResult r = run_ecoview({"scenes"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::map<std::string, std::string> listed;  // name: the rest of its line
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);) {
+    std::smatch m;
+    if (std::regex_match(line, m, std::regex(R"(  (\S+) +(.*))"))) listed[m[1]] = m[2];
+  }
+  ASSERT_EQ(listed.size(), shipped.size()) << r.out;
+  for (const auto& [name, kinds] : shipped) {
+    const auto& [scene, path] = kinds;
+    ASSERT_TRUE(listed.count(name)) << name << " not in " << r.out;
+    const std::string& line = listed[name];
+    EXPECT_EQ(line.rfind(scene && path ? "scene and path" : scene ? "scene " : "path ", 0), 0u) << name << ": " << line;
+    if (!scene) continue;
+    const nlohmann::json json = nlohmann::json::parse(read_bytes(source_dir() / "data" / "scenes" / (name + ".json")));
+    for (const char* counted : {"light", "object"}) {
+      const std::string count = std::to_string(json[std::string(counted) + "s"].size());
+      EXPECT_TRUE(std::regex_search(line, std::regex("\\b" + count + " " + counted))) << line;
+    }
+    if (json.contains("comment")) {
+      EXPECT_NE(line.find(json["comment"].get<std::string>()), std::string::npos) << line;
+    }
   }
 }
 

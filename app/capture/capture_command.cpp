@@ -91,28 +91,21 @@ nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOp
 }  // namespace
 
 CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
-  CLI::App* cmd = app.add_subcommand("capture", "Render frames headless and write them as PNG files: "
-                                                "DIR/<aov>_<frame, 5 digits>.png");
+  CLI::App* cmd = app.add_subcommand("capture", "Render frames headless to PNG files DIR/<aov>_<frame, 5 digits>.png");
   add_scene_options(*cmd, o.scene);
-  cmd->add_option("--path", o.path, "Camera path JSON file, or the name of a shipped path; without one every "
-                                    "frame uses the scene's camera");
+  cmd->add_option("--path", o.path, "Camera path JSON file or shipped path (default: the scene's camera)");
   add_render_options(*cmd, o.render);
-  cmd->add_option("--backend", o.backend, "GL context: egl (default; GPU device or Mesa surfaceless) or osmesa")
+  cmd->add_option("--backend", o.backend, "GL context: egl (GPU device or Mesa surfaceless) or osmesa")
       ->capture_default_str();
-  cmd->add_option("--frames", o.frames, "Frames A:B renders frames A to B-1 (default: the whole path at --fps, "
-                                        "or frame 0 without a path)");
+  cmd->add_option("--frames", o.frames, "A:B renders frames A to B-1 (default: all the path at --fps, or 0)");
   cmd->add_option("--fps", o.fps, "Frames per second: frame i is at time i / fps")->capture_default_str();
-  cmd->add_option("--aov", o.aov, "Comma-separated images per frame: color, shadow, depth, aliasing "
-                                  "(heat map of shadow-map texels per pixel), shadowmap (the map itself), reference (exact "
-                                  "visibility by ray tracing, encoded as shadow); or none, with --stats, to time frames "
-                                  "without writing images (a GPU left idle while a PNG is encoded clocks down)")->capture_default_str();
+  cmd->add_option("--aov", o.aov, "Images a frame: color,shadow,depth,aliasing,shadowmap,reference; none")
+      ->capture_default_str();
   cmd->add_option("--aov-format", o.aov_format, "png, or exr: depth, shadow and reference as 32-bit float OpenEXR")
       ->capture_default_str();
   cmd->add_option("--video", o.video, "Also write the color frames as H.264 in this MP4 file, at --fps");
-  cmd->add_flag("--force", o.force, "Render frames again even where their files exist (by default a capture "
-                                    "resumes, skipping finished frames)");
-  cmd->add_option("--stats", o.stats, "Also write each rendered frame's figures as JSON to this file: alias_p95, "
-                                      "pass times, points, triangles");
+  cmd->add_flag("--force", o.force, "Render frames again where their files exist (default: resume)");
+  cmd->add_option("--stats", o.stats, "Also write each frame's figures (alias_p95, times) to this JSON file");
   cmd->add_option("--out", o.out, "Output folder, created if missing (required)");
   return cmd;
 }
@@ -145,6 +138,7 @@ int run_capture(const CaptureOptions& o) {
   std::cout << describe_scene(scene, std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count())
             << std::endl;
   const shadow::Light& light = select_light(scene, o.scene.light);
+  note_light_handed_over(settings.method, light, o.scene.light);
   std::optional<CameraPath> path;
   if (!o.path.empty()) path = CameraPath::load(open_input(o.path, "paths"));
   const FrameRange frames = frames_asked ? asked_frames : default_frames(path, fps);

@@ -3,11 +3,16 @@
 #include "app/errors.hpp"
 #include "app/file_io.hpp"
 #include "app/scene/scene_file.hpp"
+#include "shadow/techniques.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <regex>
+#include <sstream>
+#include <utility>
+#include <vector>
 
 namespace ecoview {
 
@@ -46,8 +51,7 @@ int check_shadow_size(int size) {
 }
 
 void add_scene_options(CLI::App& command, SceneOptions& o) {
-  command.add_option("--scene", o.name, "Scene JSON file, or the name of a shipped scene (default: the embedded default "
-                                        "scene)");
+  command.add_option("--scene", o.name, "Scene JSON file or shipped scene (ecoview scenes lists them)");
   command.add_option("--light", o.light, "Index of the scene light that shines and casts shadows")->capture_default_str();
   command.add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes that would need more memory than this, in GiB")
       ->capture_default_str();
@@ -55,23 +59,62 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
 
 namespace {
 
-// "uniform (focused uniform shadow map), …, auto (…) or none (no shadows)", from the table.
-std::string method_help() {
-  std::string help;
-  const std::vector<shadow::Technique>& all = shadow::techniques();
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    const shadow::Technique& t = all[i];
-    std::string lights;
-    if (!t.warps.all()) {
-      for (const auto& [type, name] : {std::pair{shadow::LightType::directional, "directional"},
-                                       std::pair{shadow::LightType::point, "point"}, std::pair{shadow::LightType::spot, "spot"}}) {
-        if (t.warps.has(type)) lights += (lights.empty() ? "; " : " and ") + std::string(name);
-      }
-      lights += " lights only, others get the uniform map";
+// The words of `text` in lines of at most `width` characters, the lines after the first indented
+// by two spaces.
+std::string wrapped(const std::string& text, std::size_t width) {
+  std::string lines, line;
+  std::istringstream words(text);
+  for (std::string word; words >> word;) {
+    if (line.empty()) {
+      line = word;
+    } else if (line.size() + 1 + word.size() <= width) {
+      line += " " + word;
+    } else {
+      lines += line + "\n";
+      line = "  " + word;
     }
-    help += (i == 0 ? "" : i + 1 == all.size() ? " or " : ", ") + t.name + " (" + t.help + lights + ")";
   }
-  return help;
+  return lines + line;
+}
+
+const char* light_type_name(shadow::LightType type) {
+  return type == shadow::LightType::directional ? "directional" : type == shadow::LightType::point ? "point" : "spot";
+}
+
+// The lights in `lights`: "point and spot".
+std::string light_names(const shadow::Lights& lights) {
+  std::string names;
+  for (const shadow::LightType type : {shadow::LightType::directional, shadow::LightType::point, shadow::LightType::spot}) {
+    if (lights.has(type)) names += (names.empty() ? "" : " and ") + std::string(light_type_name(type));
+  }
+  return names;
+}
+
+// A line on stderr beside the output, as the scene file's notes (Scene::notes) are written.
+void note(const std::string& line) { std::cerr << "ecoview: note: " << line << "\n"; }
+
+// The methods whose own setup handles exactly `lights`: "dpsm and ipsm".
+std::string methods_for(const shadow::Lights& lights) {
+  std::string names;
+  for (const shadow::Technique& t : shadow::techniques()) {
+    if (t.warps == lights) names += (names.empty() ? "" : " and ") + t.name;
+  }
+  return names;
+}
+
+// The methods --method takes, and those that hand some lights to the uniform map, from the table:
+// the help's footer, as the option's own line has no room for them.
+std::string methods_footer() {
+  std::string names, handed_over;
+  std::vector<shadow::Lights> seen;
+  for (const shadow::Technique& t : shadow::techniques()) {
+    names += (names.empty() ? "" : ", ") + t.name;
+    if (t.warps.all() || std::find(seen.begin(), seen.end(), t.warps) != seen.end()) continue;
+    seen.push_back(t.warps);
+    handed_over += methods_for(t.warps) + " take only " + light_names(t.warps) + " lights; ";
+  }
+  return wrapped("Shadow methods (--method): " + names + " (the README's table describes each).", max_help_line) + "\n" +
+         wrapped(handed_over + "they hand other lights to the uniform map.", max_help_line);
 }
 
 shadow::Method parse_method(const std::string& name) {
@@ -97,31 +140,23 @@ ShadowDepth parse_shadow_depth(const std::string& name) {
 
 void add_render_options(CLI::App& command, RenderOptions& o) {
   command.add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
-  command.add_option("--shadow-size", o.shadow_size, "Shadow map size in texels (square); --method adaptive keeps virtual "
-                                                       "maps of 524,288 texels a side whatever this")->capture_default_str();
-  command.add_option("--method", o.method, "Shadow method: " + method_help())->capture_default_str();
-  command.add_option("--geometry", o.geometry, "points: far plants, people and animals as view-adaptive point "
-                                               "splats; polygons: everything as polygons (plants culled to each view as the points are)")->capture_default_str();
-  command.add_option("--sampler", o.sampler, "Where the frame's points and polygons are chosen: gpu (compute passes band by "
-                                             "band of distance, occlusion by a depth pyramid; the shadow map draws the frame's plants and the "
-                                             "casters out of view; the host only sets uniforms and dispatches) or cpu (the view sampler, with "
-                                             "occlusion by coverage, again for each shadow view: the GPU sampler's oracle)")->capture_default_str();
+  command.add_option("--shadow-size", o.shadow_size, "Shadow map texels a side (adaptive's virtual maps keep their size)")
+      ->capture_default_str();
+  command.add_option("--method", o.method, "Shadow method, one of those listed below")->capture_default_str();
+  command.add_option("--geometry", o.geometry, "points (far plants, people, animals as point splats) or polygons")
+      ->capture_default_str();
+  command.add_option("--sampler", o.sampler, "Where the frame's points and polygons are chosen: gpu or cpu")
+      ->capture_default_str();
   command.add_option("--k", o.k, "Point density: points per pixel of projected surface")->capture_default_str();
   command.add_option("--splat", o.splat, "Splat size in pixels (per side)")->capture_default_str();
-  command.add_option("--bias-slope", o.bias_slope, "Shadow maps' depth bias that grows with a polygon's depth slope as the "
-                                                   "light sees it (glPolygonOffset factor): too little leaves acne where the "
-                                                   "light grazes a surface")->capture_default_str();
-  command.add_option("--bias-constant", o.bias_constant, "Shadow maps' constant depth bias, in the depth buffer's smallest "
-                                                         "steps (glPolygonOffset units): too much lifts shadows off their casters")
+  command.add_option("--bias-slope", o.bias_slope, "Depth bias that grows with the depth slope (glPolygonOffset factor)")
       ->capture_default_str();
-  command.add_option("--shadow-depth", o.shadow_depth, "Shadow maps' depth format: 16 or 24 (bits of fixed point, "
-                                                       "steps even over the map's depth range) or 32f (float: as fine "
-                                                       "as 24 bits at the far end, finer towards the near plane)")
+  command.add_option("--bias-constant", o.bias_constant, "Constant depth bias, in depth steps (glPolygonOffset units)")
       ->capture_default_str();
-  command.add_option("--page-pool", o.page_pool, "--method adaptive and adaptive+silhouette: MiB of depths (and silhouette "
-                                                 "points) for the pages it keeps drawn; where the frame asks for more pages, "
-                                                 "the finest go without and a coarser level serves")
+  command.add_option("--shadow-depth", o.shadow_depth, "Shadow maps' depth format: 16, 24 (fixed point) or 32f (float)")
       ->capture_default_str();
+  command.add_option("--page-pool", o.page_pool, "adaptive methods: MiB for the pages they keep drawn")->capture_default_str();
+  command.footer(methods_footer());
 }
 
 RenderSettings render_settings(const RenderOptions& o) {
@@ -186,6 +221,7 @@ void check_output_file(const std::string& option, const std::string& file, const
   if (!out_folder.empty() && normal_folder(file) == normal_folder(out_folder)) {
     throw InputError(option + ": " + file + " is the --out folder; name a file (in it or elsewhere)");
   }
+  if (const auto reason = refused_file_name(file)) throw InputError(option + ": " + file + ": " + *reason);
   const fs::path folder = fs::absolute(file).lexically_normal().parent_path();
   if (fs::is_directory(folder, ec)) {
     if (const auto reason = cannot_write_in(folder)) throw InputError(option + ": " + file + ": cannot be written there (" + *reason + ")");
@@ -203,10 +239,11 @@ void check_out_folder(const std::string& out) {
     if (fs::exists(p, ec)) {
       if (!fs::is_directory(p, ec)) throw InputError("--out: " + out + ": " + p.string() + " is a file, not a folder");
       if (const auto reason = cannot_write_in(p)) throw InputError("--out: " + out + ": cannot write in " + p.string() + " (" + *reason + ")");
-      return;
+      break;
     }
-    if (p == p.parent_path()) return;
+    if (p == p.parent_path()) break;
   }
+  if (const auto reason = refused_name(out)) throw InputError("--out: " + out + ": " + *reason);
 }
 
 void make_out_folder(const std::string& out) {
@@ -225,7 +262,7 @@ Scene load_scene_option(const std::string& scene, double memory_budget_gib) {
   }
   Scene loaded = load_scene(open_input(scene.empty() ? default_scene_name : scene, "scenes"),
                              {memory_budget_gib * 1024.0 * 1024.0 * 1024.0});
-  for (const std::string& note : loaded.notes) std::cerr << "ecoview: note: " << note << "\n";
+  for (const std::string& line : loaded.notes) note(line);
   return loaded;
 }
 
@@ -235,6 +272,13 @@ const shadow::Light& select_light(const Scene& scene, int index) {
                      " light(s), numbered from 0; got " + std::to_string(index));
   }
   return scene.lights[static_cast<std::size_t>(index)];
+}
+
+void note_light_handed_over(shadow::Method method, const shadow::Light& light, int index) {
+  const shadow::Technique& t = shadow::technique(method);
+  if (t.warps.has(light.type)) return;
+  note("--method " + t.name + " takes only " + light_names(t.warps) + " lights; light " + std::to_string(index) + " is a " +
+       light_type_name(light.type) + " light, so its shadows are the uniform map's");
 }
 
 void add_benchmark_options(CLI::App& command, BenchmarkOptions& o, const std::string& quick_help) {

@@ -13,6 +13,9 @@
 // the option.
 namespace ecoview {
 
+// The longest line the help gives an option, a command or a footer.
+constexpr std::size_t max_help_line = 100;
+
 glm::ivec2 parse_size(const std::string& text);  // "WxH"
 
 struct FrameRange {
@@ -38,7 +41,7 @@ void add_scene_options(CLI::App& command, SceneOptions& options);
 struct RenderOptions {
   std::string size = "1280x720";
   int shadow_size = 2048;
-  std::string method = "uniform";
+  std::string method = "psm";  // the perspective shadow map, the project's core
   std::string geometry = "points";
   std::string sampler = "gpu";
   double k = RenderSettings{}.k;
@@ -86,5 +89,8 @@ void make_out_folder(const std::string& out);
 Scene load_scene_option(const std::string& scene, double memory_budget_gib);
 // The light selected by --light.
 const shadow::Light& select_light(const Scene& scene, int index);
+// Says in a note on stderr where --method hands the light (number `index`) to the uniform map
+// (shadow::Technique::warps): the frames then show that map's shadows, not the method's.
+void note_light_handed_over(shadow::Method method, const shadow::Light& light, int index);
 
 }  // namespace ecoview

@@ -3,6 +3,7 @@
 #include "app/cli/scene_info.hpp"
 #include "app/clock.hpp"
 #include "app/errors.hpp"
+#include "app/file_io.hpp"
 #include "app/gl/glfw_window.hpp"
 #include "app/view/viewer.hpp"
 
@@ -12,30 +13,20 @@
 namespace ecoview {
 
 CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
-  CLI::App* cmd = app.add_subcommand(
-      "view", "Fly through a scene in a window. WASD move, Q/E down/up, drag the mouse to look, wheel or +/- "
-              "change the speed, O orbits the point in view, R starts and stops recording a camera path, P writes "
-              "the frame as capture does, Tab unfolds the HUD's full panel (or folds it), H hides the HUD, Esc quits");
+  CLI::App* cmd = app.add_subcommand("view", "Fly through a scene in a window: WASD, drag to look, Tab full HUD, Esc quits");
   add_scene_options(*cmd, o.scene);
   add_render_options(*cmd, o.render);
-  cmd->add_option("--play", o.play, "Camera path (file or shipped name) to follow from t = 0; flight is free after "
-                                    "its last key");
-  cmd->add_option("--record", o.record, "File R writes the recorded camera path to (the path format capture --path "
-                                        "reads; written when recording stops or the window closes)")
+  cmd->add_option("--play", o.play, "Camera path (file or shipped name) to follow from t = 0");
+  cmd->add_option("--record", o.record, "File R writes the recorded camera path to (as --path reads it)")
       ->capture_default_str();
-  cmd->add_option("--fps", o.fps, "Step time by 1/fps per frame, as capture does, instead of the clock "
-                                  "(a path then replays frame for frame as in capture)");
+  cmd->add_option("--fps", o.fps, "Step time by 1/fps a frame, as capture does, not by the clock");
   cmd->add_option("--exit-after", o.exit_after, "Close after this many frames (0: when the window is closed)");
-  cmd->add_option("--screenshot", o.screenshot, "Write the window as shown (HUD included) in the last frame, the "
-                                                "--exit-after Nth or the one Esc closes, to this PNG file");
-  cmd->add_option("--out", o.out, "Folder P writes frames to, named as capture names them (color_<frame>.png)")
-      ->capture_default_str();
+  cmd->add_option("--screenshot", o.screenshot, "Write the window (HUD included) at the last frame to this PNG");
+  cmd->add_option("--out", o.out, "Folder P writes frames to, named as capture names them")->capture_default_str();
   cmd->add_flag("--no-hud", o.no_hud, "Start with the HUD hidden (H shows it)");
-  cmd->add_flag("--full-hud", o.full_hud, "Start with the HUD's full panel: pass times, scene, camera and the live "
-                                          "settings (Tab folds it to its summary lines)");
-  cmd->add_flag("--shadow-map-inset", o.shadow_map_inset, "Start with the HUD's inset of the shadow map (its first view) on");
-  cmd->add_flag("--aliasing-overlay", o.aliasing_overlay, "Start with the aliasing heat map over the frame (as the aliasing "
-                                                          "AOV: blue 1/8 texel per pixel, green 1, red 8 and more)");
+  cmd->add_flag("--full-hud", o.full_hud, "Start with the HUD's full panel unfolded (Tab folds it)");
+  cmd->add_flag("--shadow-map-inset", o.shadow_map_inset, "Start with the HUD's inset of the shadow map on");
+  cmd->add_flag("--aliasing-overlay", o.aliasing_overlay, "Start with the aliasing heat map (the aliasing AOV) on");
   return cmd;
 }
 
@@ -45,6 +36,7 @@ int run_view(const ViewOptions& o) {
   if (o.exit_after < 0) throw InputError("--exit-after: must be 0 or more");
   if (!o.screenshot.empty() && o.exit_after == 0) throw InputError("--screenshot: needs --exit-after N (the frame it shows)");
   if (o.fps) settings.fps = check_fps(*o.fps);
+  if (const auto reason = refused_name(o.out)) throw InputError("--out: " + o.out + ": " + *reason);
   if (!std::filesystem::is_directory(o.out)) throw InputError("--out: " + o.out + ": not a folder");
   check_output_file("--record", o.record);
   check_output_file("--screenshot", o.screenshot);
@@ -63,6 +55,7 @@ int run_view(const ViewOptions& o) {
   settings.scene_line = describe_scene(scene, ms_since(load_start) / 1000.0);
   std::cout << settings.scene_line << std::endl;
   settings.light = select_light(scene, o.scene.light);
+  note_light_handed_over(settings.render.method, settings.light, o.scene.light);
   GlfwWindow window(settings.render.width, settings.render.height, "ecoview — " + scene.name);
 
   Viewer viewer(scene, settings, window);
