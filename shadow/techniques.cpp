@@ -19,48 +19,36 @@ ShadowSetup four_cascades(const ShadowInputs& in) { return cascaded_map(in); }
 
 const std::vector<Technique>& techniques() {
   static const std::vector<Technique> table = {
-      {Method::uniform, "uniform", "focused uniform shadow map", Lookup::map, every_light, LastFrame::nothing, true,
-       focused_uniform_map},
-      {Method::psm, "psm", "perspective shadow map, built in the camera's post-perspective space", Lookup::map, every_light,
-       LastFrame::nearest_depth, true, perspective_shadow_map},
-      {Method::lispsm, "lispsm", "light space perspective shadow map", Lookup::map, directional_lights, LastFrame::nothing,
-       true, light_space_perspective_map},
-      {Method::cascades, "cascades", "4 cascades, practical splits, texel snapping", Lookup::map, directional_lights,
-       LastFrame::nothing, true, four_cascades},
-      {Method::dpsm, "dpsm", "dual paraboloid map", Lookup::map, point_and_spot_lights, LastFrame::nothing, true,
-       dual_paraboloid_map},
-      {Method::ipsm, "ipsm", "improved paraboloid map, turned and cut to the receivers", Lookup::map, point_and_spot_lights,
-       LastFrame::nothing, true, improved_paraboloid_map},
-      {Method::silhouette, "silhouette",
-       "the focused uniform map and its silhouette map: per texel a point of the polygon casters' silhouette edges, "
-       "from which the lookup rebuilds sharp shadow edges (Sen, Cammarano and Hanrahan 2003); point splats cast through the depths alone",
+      {Method::uniform, "uniform", "the plain shadow map fitted to the view: even texels, blocky near the camera",
+       Lookup::map, every_light, LastFrame::nothing, true, focused_uniform_map},
+      {Method::psm, "psm", "perspective shadow map (Stamminger and Drettakis 2002): more texels near the camera",
+       Lookup::map, every_light, LastFrame::nearest_depth, true, perspective_shadow_map},
+      {Method::lispsm, "lispsm", "light space perspective shadow map (Wimmer et al. 2004): a milder warp",
+       Lookup::map, directional_lights, LastFrame::nothing, true, light_space_perspective_map},
+      {Method::cascades, "cascades", "four maps over slices of distance, practical splits, texel snapping",
+       Lookup::map, directional_lights, LastFrame::nothing, true, four_cascades},
+      {Method::dpsm, "dpsm", "dual paraboloid map around a point or spot light",
+       Lookup::map, point_and_spot_lights, LastFrame::nothing, true, dual_paraboloid_map},
+      {Method::ipsm, "ipsm", "improved paraboloid map, turned and cut to the receivers (Vanek et al. 2011)",
+       Lookup::map, point_and_spot_lights, LastFrame::nothing, true, improved_paraboloid_map},
+      {Method::silhouette, "silhouette", "the uniform map and its silhouette map, for sharp edges (Sen et al. 2003)",
        Lookup::map, every_light, LastFrame::nothing, true, focused_uniform_map, true},
-      {Method::psm_silhouette, "psm+silhouette", "the perspective shadow map and its silhouette map, looked up as silhouette's",
+      {Method::psm_silhouette, "psm+silhouette", "the perspective shadow map and its silhouette map",
        Lookup::map, every_light, LastFrame::nearest_depth, true, perspective_shadow_map, true},
-      {Method::adaptive, "adaptive",
-       "adaptive shadow map (Fernando et al. 2001) as a virtual map paged like production engines page theirs: the "
-       "uniform map of the lit scene (the same views whatever the camera) at 524,288 texels a side in 12 levels, the fine ones "
-       "addressed in windows around the camera as clipmaps; each pixel asks for the page whose texels are "
-       "a pixel wide or finer there, and only the pages asked for are drawn, after the frame's surfaces, and kept "
-       "across frames in a pool of layers (--page-pool)",
+      {Method::adaptive, "adaptive", "pages of a huge virtual map drawn where pixels need them (Fernando et al. 2001)",
        Lookup::pages, every_light, LastFrame::nothing, false, lit_scene_map},
-      {Method::adaptive_silhouette, "adaptive+silhouette",
-       "the adaptive map with a silhouette map in each page, looked up as silhouette's: sharper edges for a "
-       "geometry-shader pass over the polygon casters that reach each tile of pages drawn (on llvmpipe 1.1-2 times adaptive's frame)",
+      {Method::adaptive_silhouette, "adaptive+silhouette", "the adaptive map with a silhouette map in each page",
        Lookup::pages, every_light, LastFrame::nothing, false, lit_scene_map, true},
-      {Method::volumes, "volumes", "exact shadows of polygons by stencil shadow volumes from silhouette edges, counted z-pass where the camera stands in no volume and z-fail elsewhere; point splats cast none, and alpha masks do not cut the volumes",
+      {Method::volumes, "volumes", "exact shadows of polygons by stencil shadow volumes",
        Lookup::mask, every_light, LastFrame::nothing, false},
-      {Method::hybrid, "hybrid",
-       "the focused uniform map, and shadow volumes counted only where its test is neither lit nor shadowed, near "
-       "the edges of its shadows (Chan and Durand 2004), or where a caster's silhouette edge crosses the surface's texel "
-       "(shadows thinner than a texel): the volumes' edges at a fraction of their fill; point splats cast through the map",
+      {Method::hybrid, "hybrid", "the uniform map, with shadow volumes only near its edges (Chan and Durand 2004)",
        Lookup::mask, every_light, LastFrame::nothing, false, focused_uniform_map, true},
-      {Method::reference, "reference", "exact: rays to the light against every triangle, plants as meshes, with Embree",
+      {Method::reference, "reference", "exact shadows: rays to the light against every triangle, with Embree",
        Lookup::mask, every_light, LastFrame::nothing, false},
-      {Method::automatic, "auto",
-       "each frame the map whose median aliasing factor, predicted from its matrices on the last frame's surface, is least",
+      {Method::automatic, "auto", "each frame, the map method predicted to alias least",
        Lookup::map, every_light, LastFrame::surface, true},
-      {Method::none, "none", "no shadows", Lookup::none, every_light, LastFrame::nothing, false},
+      {Method::none, "none", "no shadows",
+       Lookup::none, every_light, LastFrame::nothing, false},
   };
   return table;
 }

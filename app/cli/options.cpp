@@ -102,19 +102,19 @@ std::string methods_for(const shadow::Lights& lights) {
   return names;
 }
 
-// The methods --method takes, and those that hand some lights to the uniform map, from the table:
-// the help's footer, as the option's own line has no room for them.
+// The methods --method takes, a line each with what it is, and those that hand some lights to the
+// uniform map, from the table: the help's footer, as the option's own line has no room for them.
 std::string methods_footer() {
-  std::string names, handed_over;
+  std::string lines = "Shadow methods (--method):";
+  std::string handed_over;
   std::vector<shadow::Lights> seen;
   for (const shadow::Technique& t : shadow::techniques()) {
-    names += (names.empty() ? "" : ", ") + t.name;
+    lines += "\n  " + t.name + ": " + t.help;
     if (t.warps.all() || std::find(seen.begin(), seen.end(), t.warps) != seen.end()) continue;
     seen.push_back(t.warps);
     handed_over += methods_for(t.warps) + " take only " + light_names(t.warps) + " lights; ";
   }
-  return wrapped("Shadow methods (--method): " + names + " (the README's table describes each).", max_help_line) + "\n" +
-         wrapped(handed_over + "they hand other lights to the uniform map.", max_help_line);
+  return lines + "\n" + wrapped(handed_over + "they hand other lights to the uniform map.", max_help_line);
 }
 
 shadow::Method parse_method(const std::string& name) {
