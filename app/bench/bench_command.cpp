@@ -310,7 +310,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
   add_benchmark_options(*cmd, o.run, "Small scenes and few configurations (1-1.5 min on 2 busy CPU cores)");
   cmd->add_option("--suite", o.suite, "methods (speed against accuracy) or paper (the PSM paper's figures)")
       ->capture_default_str();
-  cmd->add_option("--baseline", o.baseline, "An earlier bench's results.json: each figure's change, flagged beyond the spread");
+  cmd->add_option("--baseline", o.baseline, "An earlier run's results.json: each change, flagged beyond the spread");
   return cmd;
 }
 

@@ -13,7 +13,7 @@
 namespace ecoview {
 
 CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
-  CLI::App* cmd = app.add_subcommand("view", "Fly through a scene in a window: WASD, drag to look, Tab full HUD, Esc quits");
+  CLI::App* cmd = app.add_subcommand("view", "Fly through a scene in a window (WASD fly, Tab full HUD, Esc quits)");
   add_scene_options(*cmd, o.scene);
   add_render_options(*cmd, o.render);
   cmd->add_option("--play", o.play, "Camera path (file or shipped name) to follow from t = 0");
