@@ -276,8 +276,8 @@ TEST(LandscapeCells, MakesACellAtTheFarCornerOfA100KmLandscapeAloneAndAtOnce) {
   const double start = thread_seconds();
   const std::vector<LandscapePlant> plants = generate_cell(spec, corner);
   // Its 36 sites take microseconds; making first the cells before it in its row takes some 60 ms,
-  // all cells before it hours.
-  EXPECT_LT(thread_seconds() - start, 0.005);
+  // all cells before it hours. The bound leaves room for a machine busy with other work.
+  EXPECT_LT(thread_seconds() - start, 0.02);
   EXPECT_FALSE(plants.empty());
   EXPECT_LE(plants.capacity(), static_cast<std::size_t>(cell_sites(spec.layers[ground]).count())) << "room for its own sites only";
   EXPECT_EQ(cell_bounds(spec, corner).max, 0.5f * spec.size);

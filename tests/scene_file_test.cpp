@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstring>
 #include <map>
 
@@ -402,6 +403,22 @@ TEST(SceneFileErrors, ALandscapeWhoseCellsNearTheCameraPassTheBudgetIsRefusedSay
     EXPECT_GE(needs_gib, plants_gib - 0.005) << message;
     EXPECT_LE(needs_gib, plants_gib + 0.01) << message;
   }
+}
+
+TEST(SceneFileErrors, ALandscapeOfCellsTooManyToListIsRefusedBeforeListingThem) {
+  // 0.1 m cells of no plants over 100 km: 10^12 keys, 12 TB, where nothing would be made.
+  const std::string fine = R"({"type": "landscape", "size": [100000, 100000], "radius": 200000,
+      "layers": [{"cell_size": 0.1, "density": 0, "species": [{"species": "meadow grass"}]}]})";
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    load_scene({"test.json", with_objects(fine), [](const std::string&) { return std::nullopt; }}, {4.0 * 1024.0 * 1024.0 * 1024.0});
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("objects[0]"), std::string::npos) << message;
+    EXPECT_NE(message.find("memory budget of 4.00 GiB"), std::string::npos) << message;
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 
 TEST(SceneFile, EcosystemCrowdTrafficAndSetPiecesLoad) {

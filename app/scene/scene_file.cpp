@@ -207,6 +207,12 @@ class SceneBuilder {
     const glm::vec2 eye(scene_.camera.position.x, scene_.camera.position.z);
     const pointgen::CellBounds ground{glm::max(eye - landscape.radius, -0.5f * spec.size), glm::min(eye + landscape.radius, 0.5f * spec.size)};
     if (glm::any(glm::greaterThan(ground.min, ground.max))) return;  // nothing of it within the radius
+    // The keys of the cells listed are held at once: a layer of fine cells under a wide radius is
+    // refused by their count before the first is listed.
+    for (std::size_t layer = 0; layer < spec.layers.size(); ++layer) {
+      const pointgen::CellRange range = pointgen::cell_range(spec, static_cast<int>(layer), eye, landscape.radius);
+      reserve_memory(object, range.count() * sizeof(pointgen::CellKey));
+    }
     std::vector<std::vector<pointgen::CellKey>> cells;
     double plants = 0.0, triangles = 2.0 * landscape.ground_cells * landscape.ground_cells;
     for (std::size_t layer = 0; layer < spec.layers.size(); ++layer) {

@@ -87,15 +87,19 @@ CellBounds cell_bounds(const LandscapeSpec& spec, const CellKey& key) {
   return {origin + side * glm::vec2(key.x, key.z), origin + side * glm::vec2(key.x + 1, key.z + 1)};
 }
 
-std::vector<CellKey> cells_within(const LandscapeSpec& spec, int layer, glm::vec2 center, float radius) {
+CellRange cell_range(const LandscapeSpec& spec, int layer, glm::vec2 center, float radius) {
   const float side = spec.layers[static_cast<std::size_t>(layer)].cell_size;
   const glm::vec2 origin = -0.5f * spec.size;
   const glm::ivec2 last = cell_count(spec, layer) - 1;
-  const glm::ivec2 lo = glm::clamp(glm::ivec2(glm::floor((center - radius - origin) / side)), glm::ivec2(0), last);
-  const glm::ivec2 hi = glm::clamp(glm::ivec2(glm::floor((center + radius - origin) / side)), glm::ivec2(0), last);
+  return {glm::clamp(glm::ivec2(glm::floor((center - radius - origin) / side)), glm::ivec2(0), last),
+          glm::clamp(glm::ivec2(glm::floor((center + radius - origin) / side)), glm::ivec2(0), last)};
+}
+
+std::vector<CellKey> cells_within(const LandscapeSpec& spec, int layer, glm::vec2 center, float radius) {
+  const CellRange range = cell_range(spec, layer, center, radius);
   std::vector<CellKey> keys;
-  for (int z = lo.y; z <= hi.y; ++z) {
-    for (int x = lo.x; x <= hi.x; ++x) {
+  for (int z = range.lo.y; z <= range.hi.y; ++z) {
+    for (int x = range.lo.x; x <= range.hi.x; ++x) {
       const CellBounds bounds = cell_bounds(spec, {layer, x, z});
       if (glm::distance(glm::clamp(center, bounds.min, bounds.max), center) <= radius) keys.push_back({layer, x, z});
     }

@@ -35,6 +35,14 @@ static_assert(sizeof(LandscapePlant) == 60, "no padding: plants made alike are a
 glm::ivec2 cell_count(const LandscapeSpec& spec, int layer);
 CellBounds cell_bounds(const LandscapeSpec& spec, const CellKey& key);
 
+// The index rectangle of a layer's cells that may reach within `radius` of `center`, clamped to
+// the landscape: its size bounds what cells_within lists before any cell is visited.
+struct CellRange {
+  glm::ivec2 lo, hi;
+  double count() const { return static_cast<double>(hi.x - lo.x + 1) * static_cast<double>(hi.y - lo.y + 1); }
+};
+CellRange cell_range(const LandscapeSpec& spec, int layer, glm::vec2 center, float radius);
+
 // The cells of `layer` that reach within `radius` of `center` (x, z), row by row.
 std::vector<CellKey> cells_within(const LandscapeSpec& spec, int layer, glm::vec2 center, float radius);
 
