@@ -6,6 +6,7 @@
 #include <array>
 #include <cctype>
 #include <filesystem>
+#include <set>
 #include <sstream>
 
 namespace pointgen {
@@ -76,11 +77,13 @@ void check_obj_references(const std::string& path, const std::string& bytes) {
 
 void check_material_libraries(const std::string& path, const std::string& bytes, const ReadFile& read, const Note& note) {
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  bool named = false;
+  // Each library is checked once: a short OBJ naming one large file again and again must not
+  // read it again and again.
+  std::set<std::string> checked;
   for_each_line(bytes, [&](long long number, const std::string&, const std::string& keyword, std::istringstream& fields) {
     if (keyword != "mtllib") return;
     for (std::string library; fields >> library && library[0] != '#';) {
-      named = true;
+      if (!checked.insert(library).second) continue;
       try {
         read((folder / library).string());
       } catch (const FileError& refused) {
@@ -88,7 +91,7 @@ void check_material_libraries(const std::string& path, const std::string& bytes,
       }
     }
   });
-  if (named && note) note(path + ": ignored: material libraries (OBJ materials are not used; vertex colours are)");
+  if (!checked.empty() && note) note(path + ": ignored: material libraries (OBJ materials are not used; vertex colours are)");
 }
 
 std::string without_material_libraries(std::string bytes) {

@@ -12,6 +12,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
 
 #include <gtest/gtest.h>
 
@@ -260,6 +261,21 @@ TEST(MeshFile, AMissingMaterialLibraryIsNotedAsIgnoredAndTheMeshLoads) {
       [&](const std::string& line) { notes.push_back(line); });
   EXPECT_EQ(mesh.triangle_count(), 4u);
   EXPECT_EQ(notes, std::vector<std::string>{"t.obj: ignored: material libraries (OBJ materials are not used; vertex colours are)"});
+}
+
+TEST(MeshFile, AMaterialLibraryNamedManyTimesIsReadOnce) {
+  std::map<std::string, int> reads;
+  std::string obj;
+  for (int i = 0; i < 1000; ++i) obj += "mtllib big.mtl other.mtl\n";
+  pointgen::load_mesh_file(
+      "t.obj",
+      [&](const std::string& path) -> std::optional<std::string> {
+        ++reads[path];
+        if (path == "t.obj") return obj + obj_tetrahedron;
+        return std::string("newmtl a\n");
+      },
+      {});
+  EXPECT_EQ(reads, (std::map<std::string, int>{{"t.obj", 1}, {"big.mtl", 1}, {"other.mtl", 1}}));
 }
 
 TEST(MeshFile, OpenMeshIsGivenNoMaterialLibraryToOpen) {
