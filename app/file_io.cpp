@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <climits>
 #include <csignal>
@@ -35,6 +36,7 @@ struct SignalRemovedName {
     const std::string& native = path.native();
     if (native.size() >= sizeof name) return;
     std::memcpy(name, native.c_str(), native.size() + 1);
+    std::atomic_signal_fence(std::memory_order_release);  // the name is whole before the flag says so
     held = 1;
   }
   void release() { held = 0; }
@@ -95,11 +97,13 @@ FileInProgress::FileInProgress(std::filesystem::path path) : path_(std::move(pat
   in_progress.hold(temporary_);
 }
 
+// The file goes before its name is released, so that a signal in between still removes it.
 FileInProgress::~FileInProgress() {
+  if (!finished_) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary_, ignored);
+  }
   in_progress.release();
-  if (finished_) return;
-  std::error_code ignored;
-  std::filesystem::remove(temporary_, ignored);
 }
 
 void FileInProgress::finish() {
