@@ -270,7 +270,7 @@ std::set<std::string> pareto_front_of(const nlohmann::json& runs) {
 // counts every run as new.
 TEST(Bench, QuickRunWritesResultsChartsCropsAndReportAndVolumesMatchTheReference) {
   const TempDir dir;
-  write_text(dir / "empty_baseline.json", R"({"machine": {"git": "before"}, "runs": []})");
+  write_text(dir / "empty_baseline.json", R"({"machine": {"git": "before"}, "quick": true, "runs": []})");
   const CommandResult r = run_ecoview({"bench", "--quick", "--size", "320x180", "--baseline", (dir / "empty_baseline.json").string(),
                                        "--out", (dir / "out").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -342,6 +342,12 @@ TEST(Bench, ABaselineThatIsNotBenchResultsIsRefusedNamingTheFileAndTheField) {
                                            "--out", (dir / "out").string()});
   EXPECT_EQ(paper.exit_code, 2) << paper.err;
   EXPECT_NE(paper.err.find("--baseline"), std::string::npos) << paper.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  // A full run's figures are not a quick run's: other scenes, sizes and frame counts.
+  write_text(dir / "full.json", R"({"machine": {}, "quick": false, "runs": []})");
+  const CommandResult full = run_ecoview({"bench", "--quick", "--baseline", (dir / "full.json").string(), "--out", (dir / "out").string()});
+  EXPECT_EQ(full.exit_code, 2) << full.err;
+  EXPECT_NE(full.err.find((dir / "full.json").string() + ": quick:"), std::string::npos) << full.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 

@@ -79,7 +79,7 @@ struct Plan {
 
 Plan plan_for(bool quick) {
   if (quick) return {{512, 1024}, 1, 1, 1, 1, 6, {-5.0f, 5.0f}, 2, 2, "courtyard", {"chess"}, 1};
-  // The field's frames as DESIGN.md times them (20 after 3); the big scene's take seconds each.
+  // The field's frames as docs/bench.md says they are timed (20 after 3); the big scene's take seconds each.
   return {{512, 1024, 2048, 4096, 8192}, 3, 20, 1, 2, 1, {-20.0f, -8.0f, -3.0f, -1.0f, -0.25f, 0.25f, 1.0f, 3.0f, 8.0f, 20.0f},
           6, 4, "ecosystem", {"courtyard", "chess", "street"}, 5};
 }
@@ -234,7 +234,7 @@ class ShadowBench {
     return s;
   }
 
-  // flicker (DESIGN.md): the mean share of pixels whose shadow state changes between consecutive
+  // flicker (docs/figures.md): the mean share of pixels whose shadow state changes between consecutive
   // frames at 30 per second from the middle of the path, less the same for the reference.
   BenchRun flicker(Renderer& renderer, const Scene& scene, ExactVisibility& exact, const CameraPath& path,
                    const std::string& scene_name, shadow::Method method) {
@@ -326,6 +326,11 @@ int run_bench(const BenchOptions& o) {
   // The baseline is read first: a wrong file is refused before minutes of runs.
   std::optional<BenchResults> baseline;
   if (!o.baseline.empty()) baseline = read_results(o.baseline);
+  // A quick run has other scenes, sizes and frame counts than a full one: no run would match.
+  if (baseline && baseline->quick != o.run.quick) {
+    throw InputError("--baseline: " + o.baseline + ": quick: the file holds a " + (baseline->quick ? "quick" : "full") +
+                     " run and this one is " + (o.run.quick ? "quick" : "full") + "; compare runs of one kind");
+  }
   make_out_folder(o.run.out);
   const Plan plan = plan_for(o.run.quick);
   const Scene field = load_scene_option("field", o.run.memory_budget_gib);
