@@ -106,7 +106,7 @@ mat2 shadow_jacobian(int layer, vec3 p, vec3 t1, vec3 t2) {
 
 const bool aliasing_wanted = ALIASING;
 
-// The aliasing factor (DESIGN.md): the size in screen pixels of one shadow-map texel projected
+// The aliasing factor (docs/figures.md): the size in screen pixels of one shadow-map texel projected
 // onto the surface at p with normal n; the largest singular value of pixels per texel along the
 // surface. 0 without a shadow map (none, volumes), or when not wanted.
 float aliasing_factor(vec3 p, vec3 n) {

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-// The aliasing factor of DESIGN.md on the CPU, from a setup's matrices alone: what the frame's
+// The aliasing factor of docs/figures.md on the CPU, from a setup's matrices alone: what the frame's
 // shader computes per pixel (shaders/lighting.glsl), for predicting a method's aliasing before it
 // renders (`--method auto`).
 namespace shadow {
@@ -30,7 +30,7 @@ struct SurfacePoint {
 
 // The value `fraction` of the way up some values in rank (0 for none).
 float percentile(std::vector<float> values, float fraction);
-// The fractions of alias_p95 (DESIGN.md) and of the median, which `--method auto` predicts.
+// The fractions of alias_p95 (docs/figures.md) and of the median, which `--method auto` predicts.
 constexpr float p95_fraction = 0.95f, median_fraction = 0.5f;
 
 // A percentile (`fraction`) of the aliasing factor over surface points the light faces, predicted

@@ -170,7 +170,7 @@ class DensityBench {
   // Temporal noise: a still camera twice, and a camera moving slowly along the scene's view. The
   // exact renderer (every plant as polygons) changes pixels on that move too, as foliage finer
   // than a pixel moves under the pixel grid; `moving_noise` is what the points add to that, as
-  // DESIGN.md's flicker measures shadows against the reference.
+  // flicker (docs/figures.md) measures shadows against the reference.
   void temporal(const Scene& scene, const std::string& scene_name, Progress& progress) {
     shadow::Camera moved = scene.camera;
     const glm::vec3 step = 0.05f * moved.forward();  // 5 cm, a slow walk at 30 frames per second

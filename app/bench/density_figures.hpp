@@ -7,7 +7,7 @@
 
 namespace ecoview {
 
-// The point-density figures of DESIGN.md, over the pixels where the frame shows a point-rendered
+// The point-density figures of docs/figures.md, over the pixels where the frame shows a point-rendered
 // object, and the point render's points per pixel there.
 struct DensityFigures {
   double holes = 0.0;            // covered by polygons, not by points, over covered pixels

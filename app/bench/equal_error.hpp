@@ -6,7 +6,7 @@
 
 namespace ecoview {
 
-// What a warped map buys at equal accuracy (DESIGN.md: `equal_err_speedup`): for each size of
+// What a warped map buys at equal accuracy (`equal_err_speedup`, docs/figures.md): for each size of
 // `method`'s map on `scene` in the trade-off runs (sweep "tradeoff": params scene, method,
 // shadow_size; figures err, frame_ms), the uniform map's frame time and size at the same `err`,
 // interpolated between the uniform map's sizes linearly in log err against log size and log time.

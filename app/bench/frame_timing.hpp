@@ -12,7 +12,7 @@ double median(std::vector<double> v);
 // another, which a median taken from them may do too from one run to the next.
 double interquartile_range(std::vector<double> v);
 
-// frame_ms and its parts as DESIGN.md defines them: medians over `frames` frames after `warmup`
+// frame_ms and its parts as docs/figures.md defines them: medians over `frames` frames after `warmup`
 // frames, each frame finished with glFinish.
 struct FrameTiming {
   double frame_ms = 0.0;

@@ -22,7 +22,7 @@ struct MeasuredView {
   double t = 0.0;
 };
 
-// The figures of one frame of the view (DESIGN.md): err, err_near, acne, leak against the exact
+// The figures of one frame of the view (docs/figures.md): err, err_near, acne, leak against the exact
 // reference, alias_p95, the points and triangles drawn, and the times, each with its spread
 // beside it ("frame_ms_spread"), where `timing` is given
 // (else a frame at the same place first: the PSM takes its near plane from the last frame).

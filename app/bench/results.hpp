@@ -8,7 +8,7 @@
 
 namespace ecoview {
 
-// One measured configuration: its parameters and figures, named as in DESIGN.md. A figure
+// One measured configuration: its parameters and figures, named as docs/figures.md names them. A figure
 // measured by repeats (a time: the median of several frames) has its spread beside it, named
 // with spread_suffix ("frame_ms_spread"); any other figure is deterministic, its spread 0.
 struct BenchRun {

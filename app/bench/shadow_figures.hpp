@@ -4,10 +4,10 @@
 namespace ecoview {
 
 // A percentile (`fraction`) of the aliasing factor over the lit receiver pixels (a surface drawn,
-// visibility >= 0.5); 0 where there are none. At shadow::p95_fraction, alias_p95 (DESIGN.md).
+// visibility >= 0.5); 0 where there are none. At shadow::p95_fraction, alias_p95 (docs/figures.md).
 double alias_percentile(const Image<float>& aliasing, const Image8& visibility, float fraction);
 
-// The shadow's errors against the exact reference (DESIGN.md), as fractions of the pixels that
+// The shadow's errors against the exact reference (docs/figures.md), as fractions of the pixels that
 // show a surface (linear view depth > 0): `err` where the binary states (visibility < 0.5)
 // differ, `acne` where the reference is lit and the frame shadowed, `leak` the other way round
 // (err = acne + leak); `err_near` is err over the pixels in the nearest 20 % of the frame's
@@ -18,7 +18,7 @@ struct ShadowErrors {
 ShadowErrors shadow_errors(const Image8& visibility, const Image8& reference, const Image<float>& depth);
 
 // The fraction of surface pixels whose binary shadow state changed from one frame to the next:
-// the part of DESIGN.md's `flicker` of one frame pair (flicker subtracts the reference's).
+// the part of `flicker` (docs/figures.md) of one frame pair (flicker subtracts the reference's).
 double changed_shadow(const Image8& before, const Image8& after, const Image<float>& depth);
 
 // `temporal_err`: the fraction of surface pixels whose shadow state changed from one frame to the

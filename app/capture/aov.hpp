@@ -7,7 +7,7 @@
 
 namespace ecoview {
 
-// The images `capture` writes per frame (DESIGN.md): color (sRGB), shadow (255 × light
+// The images `capture` writes per frame (docs/capture.md): color (sRGB), shadow (255 × light
 // visibility, 255 where no surface), depth (16-bit linear view depth), aliasing (heat map of the
 // aliasing factor), shadowmap (the first layer of the shadow map, depth as gray, for looking at),
 // reference (the exact visibility from ray tracing, encoded as shadow).

@@ -75,7 +75,7 @@ nlohmann::json page_figures(const RenderOptions& options, const FrameStats& s) {
           {"tiles", s.pages.tiles}};
 }
 
-// One frame's figures for --stats (names as DESIGN.md defines them).
+// One frame's figures for --stats (names as docs/figures.md defines them).
 // render_ms: the wall time of this one frame, sampling, passes and read-backs, until glFinish.
 nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOptions& options, const Renderer& renderer) {
   const FrameStats& s = renderer.stats();
@@ -91,7 +91,7 @@ nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOp
 }  // namespace
 
 CLI::App* add_capture_command(CLI::App& app, CaptureOptions& o) {
-  CLI::App* cmd = app.add_subcommand("capture", "Render frames headless to PNG files DIR/<aov>_<frame, 5 digits>.png");
+  CLI::App* cmd = app.add_subcommand("capture", "Render frames headless to DIR/<aov>_<frame>.png or .exr (and an MP4)");
   add_scene_options(*cmd, o.scene);
   cmd->add_option("--path", o.path, "Camera path JSON file or shipped path (default: the scene's camera)");
   add_render_options(*cmd, o.render);

@@ -12,7 +12,7 @@ double thread_cpu_ms();
 double gl_cpu_ms();
 void count_gl_cpu_time();
 
-// The calling thread's CPU time outside the GL driver: what host_ms adds up (DESIGN.md).
+// The calling thread's CPU time outside the GL driver: what host_ms adds up (docs/figures.md).
 inline double host_cpu_ms() { return thread_cpu_ms() - gl_cpu_ms(); }
 
 }  // namespace ecoview

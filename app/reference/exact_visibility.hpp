@@ -11,7 +11,7 @@
 
 namespace ecoview {
 
-// The exact reference of DESIGN.md's `err`: from the surface point seen in each pixel, a ray to
+// The exact reference of `err` (docs/figures.md): from the surface point seen in each pixel, a ray to
 // the light against the scene's full triangle geometry — plants as their meshes, not as their
 // points — with Embree. Each mesh is one Embree scene; the instances reference it, so the whole
 // ecosystem fits in memory.

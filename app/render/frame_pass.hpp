@@ -83,7 +83,7 @@ class FramePass {
   Image<float> read_depth() const;
   // The nearest of those depths, found by the shading pass and read back (4 bytes); 0 where none.
   float nearest_depth() const;
-  // The aliasing factor (DESIGN.md) of the surface in each pixel; negative where no surface was
+  // The aliasing factor (docs/figures.md) of the surface in each pixel; negative where no surface was
   // drawn, 0 without a shadow map.
   Image<float> read_aliasing() const;
   // Binds the frame's surfaces and what finds their positions (frame_surface.glsl,

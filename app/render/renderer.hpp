@@ -40,7 +40,7 @@ struct FrameStats {
   // drawn, in the frame or the maps. 0 but in scenes of millions of plants on such a driver.
   std::size_t points_left_out = 0;
   double sample_ms = 0.0;     // CPU: choosing points or polygons, for both passes
-  // CPU time of the program's own threads outside GL calls (DESIGN.md), for the whole frame:
+  // CPU time of the program's own threads outside GL calls (docs/figures.md), for the whole frame:
   // posing, sampling, setups, uploads' preparation, read-backs' scans.
   double host_ms = 0.0;
   double shadow_pass_ms = 0.0;  // GPU (timer query)

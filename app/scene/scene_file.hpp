@@ -23,7 +23,7 @@ struct LoadLimits {
   double memory_budget_bytes = 4.0 * 1024 * 1024 * 1024;
 };
 
-// Parses the scene JSON (format in README and DESIGN.md), loads the meshes it names and grows
+// Parses the scene JSON (format in docs/scenes.md), loads the meshes it names and grows
 // the procedural objects. Throws InputError naming the file and field.
 Scene load_scene(const InputSource& source, const LoadLimits& limits = {});
 
