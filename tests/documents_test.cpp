@@ -180,5 +180,24 @@ TEST(Documents, NoDocumentPointsOutsideTheRepository) {
   EXPECT_TRUE(mentions.empty()) << "documents name files outside the repository:" << mentions;
 }
 
+// The code's comments send a reader to docs/, never to a design file the repository lacks. (The
+// optional glTF test files beside a checkout are named by the tests that use them.)
+TEST(Documents, NoSourceFilePointsOutsideTheRepository) {
+  std::string mentions;
+  int read = 0;
+  for (const char* folder : {"app", "pointgen", "shadow", "shaders", "scripts", "tests"}) {
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(test::source_dir() / folder)) {
+      if (!entry.is_regular_file() || entry.path().filename() == "documents_test.cpp") continue;  // this file names them
+      ++read;
+      const Document doc = read_document(entry.path());
+      for (const Line& line : doc.lines) {
+        if (line.text.find("DESIGN.md") != std::string::npos) mentions += "\n  " + where(doc, line);
+      }
+    }
+  }
+  EXPECT_GT(read, 100);
+  EXPECT_TRUE(mentions.empty()) << "source files name files outside the repository:" << mentions;
+}
+
 }  // namespace
 }  // namespace ecoview
