@@ -307,7 +307,7 @@ class ShadowBench {
 
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
   CLI::App* cmd = app.add_subcommand("bench", "Shadow-method benchmark, speed against accuracy; writes a report");
-  add_benchmark_options(*cmd, o.run, "Small scenes and few configurations (1-1.5 min on 2 busy CPU cores)");
+  add_benchmark_options(*cmd, o.run, "Small scenes, few configurations (25 s here; 1-1.5 min on busy cores)");
   cmd->add_option("--suite", o.suite, "methods (speed against accuracy) or paper (the PSM paper's figures)")
       ->capture_default_str();
   cmd->add_option("--baseline", o.baseline, "An earlier run's results.json: each change, flagged beyond the spread");
