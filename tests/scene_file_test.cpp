@@ -1,5 +1,6 @@
 // Scene files: every object type loads with the values written; every kind of bad input is an
 // InputError naming the file and the field.
+#include "app/cli/scene_info.hpp"
 #include "app/errors.hpp"
 #include "app/scene/landscape_fields.hpp"
 #include "app/scene/scene_file.hpp"
@@ -324,6 +325,10 @@ TEST(SceneFile, LandscapeHasThePlantsOfItsCellsNearTheCameraOnItsGround) {
   const Scene s = load_objects(small_landscape, {{"tet.obj", tetrahedron_obj}});
   const LandscapeObject landscape = read_small_landscape();
   const pointgen::LandscapeSpec& spec = landscape.spec;
+  // The scene says what the whole landscape stands for, far more than the cells it made.
+  EXPECT_EQ(s.landscape_plants, pointgen::expected_plant_count(spec));
+  EXPECT_GT(s.landscape_plants, 100.0 * static_cast<double>(s.instance_count()));
+  EXPECT_NE(describe_scene(s, 0.0).find(", a landscape of about "), std::string::npos) << describe_scene(s, 0.0);
   // Every species' plants, in order, from the cells reaching within 60 m of (0, 12).
   std::vector<pointgen::InstanceTable> expected;
   for (int layer = 0; layer < 2; ++layer) {

@@ -20,9 +20,13 @@ std::string describe_scene(const Scene& scene, double load_seconds) {
   if (const std::size_t bytes = scene.texture_bytes(); bytes > 0) {
     std::snprintf(textures, sizeof textures, ", %.3g MiB of textures", static_cast<double>(bytes) / (1024.0 * 1024.0));
   }
+  char landscape[64] = "";
+  if (scene.landscape_plants > 0.0) {
+    std::snprintf(landscape, sizeof landscape, ", a landscape of about %.3g plants", scene.landscape_plants);
+  }
   char text[512];
-  std::snprintf(text, sizeof text, "scene: %s: %zu instances, %.3g triangles as polygons, %zu meshes%s; loaded in %.2f s, %.0f MiB resident",
-                scene.name.c_str(), scene.instance_count(), static_cast<double>(scene.triangle_count()), scene.meshes.size(),
+  std::snprintf(text, sizeof text, "scene: %s: %zu instances%s, %.3g triangles as polygons, %zu meshes%s; loaded in %.2f s, %.0f MiB resident",
+                scene.name.c_str(), scene.instance_count(), landscape, static_cast<double>(scene.triangle_count()), scene.meshes.size(),
                 textures, load_seconds, resident_mib());
   return text;
 }

@@ -30,6 +30,8 @@ struct Scene {
   std::vector<bool> point_meshes;
   std::vector<pointgen::InstanceTable> groups;  // each drawn with one instanced call; moving ones posed at t = 0
   std::vector<Animation> animations;
+  // The plants its landscapes stand for, had every cell been made; only those near the camera are.
+  double landscape_plants = 0.0;
   // What the scene's files have that is not used, a line per file, for the user.
   std::vector<std::string> notes;
 

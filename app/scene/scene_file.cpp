@@ -204,6 +204,7 @@ class SceneBuilder {
   void add_landscape(const JsonField& object) {
     LandscapeObject landscape = read_landscape(object, seed_, [this](const JsonField& file) { return load_file(file); });
     const pointgen::LandscapeSpec& spec = landscape.spec;
+    scene_.landscape_plants += pointgen::expected_plant_count(spec);
     const glm::vec2 eye(scene_.camera.position.x, scene_.camera.position.z);
     const pointgen::CellBounds ground{glm::max(eye - landscape.radius, -0.5f * spec.size), glm::min(eye + landscape.radius, 0.5f * spec.size)};
     if (glm::any(glm::greaterThan(ground.min, ground.max))) return;  // nothing of it within the radius

@@ -64,9 +64,9 @@ LandscapePlant make_plant(const LandscapeSpecies& s, int species, const glm::vec
   return {transform, pack_tint(tint), hash32(site.key, seed_draw), static_cast<std::uint32_t>(species)};
 }
 
-// The share of 4 × 4 points spread over `area` where the species grows.
-float growing_share(const LandscapeSpec& spec, const LandscapeTerrain& terrain, int layer, int species, const CellBounds& area) {
-  constexpr int probes = 4;
+// The share of probes × probes points spread over `area` where the species grows.
+float growing_share(const LandscapeSpec& spec, const LandscapeTerrain& terrain, int layer, int species, const CellBounds& area,
+                    int probes) {
   int growing = 0;
   for (int probe = 0; probe < probes * probes; ++probe) {
     const glm::vec2 p = area.min + (area.max - area.min) * (glm::vec2(probe % probes, probe / probes) + 0.5f) / static_cast<float>(probes);
@@ -147,11 +147,30 @@ float expected_surface(const LandscapeSpec& spec, const CellKey& key) {
     const LandscapeSpecies& species = layer.species[s];
     // Over a uniform [a, b], the mean of the scale's square is (a² + ab + b²) / 3.
     const float mean_square_scale = (species.scale.x * species.scale.x + species.scale.x * species.scale.y + species.scale.y * species.scale.y) / 3.0f;
-    per_plant += species.weight / layer.total_weight() * growing_share(spec, terrain, key.layer, static_cast<int>(s), inside) *
+    per_plant += species.weight / layer.total_weight() * growing_share(spec, terrain, key.layer, static_cast<int>(s), inside, 4) *
                  species.surface * mean_square_scale;
   }
   const glm::vec2 extent = inside.max - inside.min;
   return layer.density * extent.x * extent.y * per_plant;
+}
+
+double expected_plant_count(const LandscapeSpec& spec) {
+  // 64 × 64 probes: the share of each species' ground to about a percent, in some milliseconds
+  // however large the landscape.
+  constexpr int probes = 64;
+  const LandscapeTerrain terrain(spec.terrain, spec.seed);
+  const CellBounds area{-0.5f * spec.size, 0.5f * spec.size};
+  double plants = 0.0;
+  for (std::size_t l = 0; l < spec.layers.size(); ++l) {
+    const LandscapeLayer& layer = spec.layers[l];
+    double share = 0.0;
+    for (std::size_t s = 0; s < layer.species.size(); ++s) {
+      share += layer.species[s].weight / layer.total_weight() *
+               growing_share(spec, terrain, static_cast<int>(l), static_cast<int>(s), area, probes);
+    }
+    plants += static_cast<double>(layer.density) * spec.size.x * spec.size.y * share;
+  }
+  return plants;
 }
 
 }  // namespace pointgen

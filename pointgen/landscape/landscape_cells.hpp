@@ -65,4 +65,8 @@ std::vector<LandscapePlant> generate_cell(const LandscapeSpec& spec, const CellK
 // make.
 float expected_surface(const LandscapeSpec& spec, const CellKey& key);
 
+// The plants the whole landscape stands for, had every cell been made: each layer's density over
+// the area, times the share of it where each species grows (probed, not made).
+double expected_plant_count(const LandscapeSpec& spec);
+
 }  // namespace pointgen
