@@ -82,7 +82,8 @@ def tradeoff_chart(results, out):
             line = sorted((r for r in rs if r["params"]["method"] == m), key=lambda r: r["params"]["shadow_size"])
             lines[m] = ([r["figures"]["frame_ms"] for r in line], [100 * r["figures"]["err"] for r in line])
         plot_lines(ax, lines)
-        # The front bench's summary lists (results.json's pareto_front), of this sweep's runs.
+        # The front bench's summary lists (results.json's pareto_front): a scene is timed in one
+        # sweep only (tradeoff or scenes), so its front is this sweep's own.
         front = [p for p in results["pareto_front"].get(scene, []) if p["sweep"] == "tradeoff"]
         ax.plot([p["frame_ms"] for p in front], [100 * p["err"] for p in front], color="gray", lw=6, alpha=0.25,
                 label="Pareto front")
