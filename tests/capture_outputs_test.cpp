@@ -17,22 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Png {
-  int width = 0, height = 0;
-  std::vector<unsigned char> samples;
-};
-
-// A PNG's pixels with `channels` 8-bit samples each.
-Png load_png(const fs::path& file, int channels) {
-  Png png;
-  int in_file = 0;
-  unsigned char* data = stbi_load(file.c_str(), &png.width, &png.height, &in_file, channels);
-  if (data == nullptr) return png;
-  png.samples.assign(data, data + static_cast<std::ptrdiff_t>(png.width) * png.height * channels);
-  stbi_image_free(data);
-  return png;
-}
-
 // A 16-bit gray PNG's samples.
 std::vector<std::uint16_t> load_png16(const fs::path& file) {
   int width = 0, height = 0, channels = 0;
@@ -64,7 +48,7 @@ void expect_the_frames_of(const VideoFrames& video, const fs::path& out, int fra
     double nearest = std::numeric_limits<double>::infinity();
     int nearest_frame = -1;
     for (int j = 0; j < frames; ++j) {
-      const double difference = mean_difference(video.rgb[static_cast<std::size_t>(i)], load_png(out / color_png(j), 3).samples);
+      const double difference = mean_difference(video.rgb[static_cast<std::size_t>(i)], test::load_png(out / color_png(j), 3).samples);
       if (difference < nearest) nearest = difference, nearest_frame = j;
     }
     EXPECT_EQ(nearest_frame, i) << "video frame " << i;
@@ -182,7 +166,7 @@ TEST(CaptureExr, FloatAovsHoldWhatThePngsQuantise) {
 
   for (const char* aov : {"shadow", "reference"}) {
     const ExrChannel visibility = read_exr_channel(dir / "exr" / (std::string(aov) + "_00000.exr"));
-    const Png png = load_png(dir / "png" / (std::string(aov) + "_00000.png"), 1);
+    const test::PngImage png = test::load_png(dir / "png" / (std::string(aov) + "_00000.png"), 1);
     ASSERT_EQ(visibility.name, "Y") << aov;
     ASSERT_TRUE(visibility.is_float) << aov;
     ASSERT_EQ(visibility.samples.size(), png.samples.size()) << aov;

@@ -2,7 +2,6 @@
 #include "test_support.hpp"
 
 #include <nlohmann/json.hpp>
-#include <stb/stb_image.h>
 
 #include <algorithm>
 #include <chrono>
@@ -24,13 +23,8 @@ struct Gray {
 };
 
 Gray load_gray(const std::filesystem::path& png) {
-  Gray g;
-  int channels = 0;
-  unsigned char* data = stbi_load(png.string().c_str(), &g.width, &g.height, &channels, 1);
-  if (data == nullptr) return g;
-  g.pixels.assign(data, data + static_cast<std::ptrdiff_t>(g.width) * g.height);
-  stbi_image_free(data);
-  return g;
+  test::PngImage image = test::load_png(png, 1);
+  return {image.width, image.height, std::move(image.samples)};
 }
 
 TEST(Capture, DefaultSceneFrameIsLitAndShadowed) {

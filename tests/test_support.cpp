@@ -1,5 +1,6 @@
 #include "test_support.hpp"
 
+#include <stb/stb_image.h>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -9,6 +10,16 @@
 #include <stdexcept>
 
 namespace ecoview::test {
+
+PngImage load_png(const std::filesystem::path& file, int channels) {
+  PngImage image;
+  int in_file = 0;
+  unsigned char* data = stbi_load(file.c_str(), &image.width, &image.height, &in_file, channels);
+  if (data == nullptr) return {};
+  image.samples.assign(data, data + static_cast<std::ptrdiff_t>(image.width) * image.height * channels);
+  stbi_image_free(data);
+  return image;
+}
 
 std::string shell_quote(const std::string& s) {
   std::string out = "'";

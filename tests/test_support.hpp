@@ -38,6 +38,14 @@ CommandResult run_shell(const std::string& script);
 // `s` quoted for /bin/sh.
 std::string shell_quote(const std::string& s);
 
+// A PNG's pixels as stb_image (a decoder independent of ecoview's encoder) reads them, `channels`
+// 8-bit samples each; empty where the file cannot be read.
+struct PngImage {
+  int width = 0, height = 0;
+  std::vector<unsigned char> samples;
+};
+PngImage load_png(const std::filesystem::path& file, int channels);
+
 // A scene file's plant object: `count` plants of `species` on the ground in rows of `per_row`,
 // from (x0, z0), `dx` apart along x and `dz` from row to row.
 std::string plant_grid_json(const std::string& species, int count, int per_row, float x0, float dx, float z0, float dz);

@@ -5,7 +5,6 @@
 #include "test_support.hpp"
 
 #include <glm/glm.hpp>
-#include <stb/stb_image.h>
 
 #include <csignal>
 #include <cstdio>
@@ -61,13 +60,8 @@ struct Rgb {
 };
 
 Rgb load_rgb(const std::filesystem::path& png) {
-  Rgb image;
-  int channels = 0;
-  unsigned char* data = stbi_load(png.string().c_str(), &image.width, &image.height, &channels, 3);
-  if (data == nullptr) return image;
-  image.pixels.assign(data, data + static_cast<std::ptrdiff_t>(image.width) * image.height * 3);
-  stbi_image_free(data);
-  return image;
+  test::PngImage image = test::load_png(png, 3);
+  return {image.width, image.height, std::move(image.samples)};
 }
 
 // The share of pixels in [x0, x1) x [y0, y1) (rows from the top) where two shots of one size differ.
