@@ -1,6 +1,8 @@
 #include "app/file_io.hpp"
 
 #include "app/errors.hpp"
+#include "pointgen/file_error.hpp"
+#include "pointgen/input_file.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -90,6 +92,17 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
   } landed;
   write_temporary(temporary, path, bytes);
   rename_into_place(temporary, path);
+}
+
+std::string read_named_file(const std::filesystem::path& path) {
+  std::optional<std::string> text;
+  try {
+    text = pointgen::read_input_file(path);
+  } catch (const pointgen::FileError& e) {
+    throw InputError(e.what());
+  }
+  if (!text) throw InputError(path.string() + ": no such file");
+  return std::move(*text);
 }
 
 FileInProgress::FileInProgress(std::filesystem::path path) : path_(std::move(path)), temporary_(temporary_name(path_)) {

@@ -12,6 +12,10 @@ namespace ecoview {
 // One file is in flight at a time; a SIGINT or SIGTERM removes it (remove_temporary_on_signals).
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 
+// The bytes of a file the user named (a scene, a path, an earlier run's results): as
+// pointgen::read_input_file reads it, a missing or refused file being bad input (InputError).
+std::string read_named_file(const std::filesystem::path& path);
+
 // A file written over a long time by a library that opens it by name (a video, frame by frame): it
 // is made at temporary() (`path` + ".tmp" + the process id) and renamed to `path` by finish(), so
 // `path` is either absent or complete. Destroyed unfinished, or on SIGINT or SIGTERM

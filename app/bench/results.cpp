@@ -5,8 +5,6 @@
 #include "app/gl/context.hpp"
 #include "app/scene/json_input.hpp"
 #include "git_commit.hpp"
-#include "pointgen/file_error.hpp"
-#include "pointgen/input_file.hpp"
 
 #include <fstream>
 #include <limits>
@@ -70,8 +68,8 @@ BenchRun read_run(const nlohmann::json& run, const std::string& file, const std:
   return read;
 }
 
-// /proc/cpuinfo read to its end (/proc gives its files a size of 0, so read_input_file, which
-// reads no more than the size it finds, would read nothing); empty where there is none.
+// /proc/cpuinfo read to its end (/proc gives its files a size of 0, so pointgen::read_input_file,
+// which reads no more than the size it finds, would read nothing); empty where there is none.
 std::string proc_cpuinfo() {
   std::ifstream in("/proc/cpuinfo");
   std::ostringstream text;
@@ -115,14 +113,7 @@ void write_results(const std::filesystem::path& folder, const BenchResults& resu
 
 BenchResults read_results(const std::filesystem::path& file) {
   const std::string name = file.string();
-  std::optional<std::string> text;
-  try {
-    text = pointgen::read_input_file(file);
-  } catch (const pointgen::FileError& e) {
-    throw InputError(e.what());
-  }
-  if (!text) throw InputError(name + ": no such file");
-  const nlohmann::json document = parse_json(*text, name);
+  const nlohmann::json document = parse_json(read_named_file(file), name);
   expect_object(document, name, "");
   BenchResults results;
   results.machine = expect_object(member(document, "machine", name, ""), name, "machine");

@@ -1,6 +1,7 @@
 #include "app/scene/scene_file.hpp"
 
 #include "app/errors.hpp"
+#include "app/file_io.hpp"
 #include "app/resources.hpp"
 #include "app/scene/ecosystem_fields.hpp"
 #include "app/scene/json_input.hpp"
@@ -334,15 +335,9 @@ InputSource open_input(const std::string& name_or_file, const std::string& folde
   const bool is_shipped = resources::find(resource).has_value();
   // A file wins over a shipped name, but a folder (such as a capture's output) does not.
   if (fs::is_regular_file(name_or_file, ec) || (!is_shipped && fs::exists(name_or_file, ec))) {
-    std::optional<std::string> text;
-    try {
-      text = pointgen::read_input_file(name_or_file);
-    } catch (const pointgen::FileError& e) {
-      throw InputError(e.what());
-    }
-    if (!text) throw InputError(name_or_file + ": no such file");
+    std::string text = read_named_file(name_or_file);
     const fs::path base = fs::path(name_or_file).parent_path();
-    return {name_or_file, std::move(*text),
+    return {name_or_file, std::move(text),
             [base](const std::string& relative) { return pointgen::read_input_file(base / relative); }};
   }
   if (const auto text = resources::find(resource)) {
