@@ -114,11 +114,7 @@ pointgen::EcosystemSpec read_ecosystem(const JsonField& field, std::uint64_t sce
       request.species.name = file->string();
       request.mesh = std::make_shared<const pointgen::TriangleMesh>(load_mesh(*file));
       if (auto f = item.optional("layer")) request.layer = read_layer(*f);
-      if (auto f = item.optional("scale")) {
-        const std::vector<double> range = f->numbers(2, 1e-3, 1e3);
-        if (range[0] > range[1]) f->fail("the smallest scale comes first");
-        request.scale = {range[0], range[1]};
-      }
+      if (auto f = item.optional("scale")) request.scale = f->range(1e-3, 1e3);
     } else {
       if (item.has("layer") || item.has("scale")) item["species"].fail("\"layer\" and \"scale\" are for species from a \"file\"");
       request.species = read_species(item["species"], defined);

@@ -157,6 +157,12 @@ std::vector<double> JsonField::numbers(std::size_t count, double min, double max
   return out;
 }
 
+glm::vec2 JsonField::range(double min, double max) const {
+  const std::vector<double> ends = numbers(2, min, max);
+  if (ends[0] > ends[1]) fail("the smaller number comes first");
+  return {ends[0], ends[1]};
+}
+
 glm::vec3 JsonField::vec3(double limit) const {
   const std::vector<double> v = numbers(3, -limit, limit);
   return {v[0], v[1], v[2]};

@@ -41,6 +41,8 @@ class JsonField {
   int integer(int min, int max) const;
   // An array of exactly N numbers, each within [min, max].
   std::vector<double> numbers(std::size_t count, double min, double max) const;
+  // Two numbers within [min, max], the smaller first: a range such as a scale's or an altitude's.
+  glm::vec2 range(double min, double max) const;
   glm::vec3 vec3(double limit = max_coordinate) const;
   glm::vec3 color() const;  // three numbers in 0..1
 

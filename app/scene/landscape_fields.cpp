@@ -21,12 +21,6 @@ pointgen::LandscapeTerrainSpec read_landscape_terrain(const JsonField& field) {
   return terrain;
 }
 
-glm::vec2 read_range(const JsonField& field, double min, double max) {
-  const std::vector<double> range = field.numbers(2, min, max);
-  if (range[0] > range[1]) field.fail("the smaller comes first");
-  return {range[0], range[1]};
-}
-
 // A species of a layer and its mesh: grown from the catalogue (or a species the file defines),
 // varying its colours, or the user's, which has colours of its own.
 pointgen::LandscapeSpecies read_layer_species(const JsonField& item, const std::vector<pointgen::PlantSpecies>& defined,
@@ -45,11 +39,11 @@ pointgen::LandscapeSpecies read_layer_species(const JsonField& item, const std::
   }
   s.surface = pointgen::surface_area(mesh);
   if (auto f = item.optional("weight")) s.weight = f->number_f(0, 1e6);
-  if (auto f = item.optional("altitude")) s.altitude = read_range(*f, -1e6, 1e6);
+  if (auto f = item.optional("altitude")) s.altitude = f->range(-1e6, 1e6);
   if (auto f = item.optional("slope_max_deg")) s.slope_max_deg = f->number_f(0, 90);
   if (auto f = item.optional("grove")) s.grove = f->number_f(0, 1);
   if (auto f = item.optional("grove_size")) s.grove_size = f->number_f(1, 1e6);
-  if (auto f = item.optional("scale")) s.scale = read_range(*f, 1e-3, 1e3);
+  if (auto f = item.optional("scale")) s.scale = f->range(1e-3, 1e3);
   return s;
 }
 
