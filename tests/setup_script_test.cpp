@@ -18,8 +18,11 @@ CommandResult run_setup(const TempDir& dir, const std::string& args) {
                    ":$PATH ECOVIEW_SKIP_APT=1 " + shell_quote((source_dir() / "scripts" / "setup.sh").string()) + " " + args);
 }
 
-// The last line cmake was called with: the build.
-std::string build_call(const TempDir& dir) {
+// The last line setup.sh with `args` called cmake with: the build.
+std::string build_call(const std::string& args) {
+  const TempDir dir;
+  const CommandResult r = run_setup(dir, args);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
   std::istringstream calls(read_bytes(dir / "cmake_calls.txt"));
   std::string line, last;
   while (std::getline(calls, line)) last = line;
@@ -27,19 +30,13 @@ std::string build_call(const TempDir& dir) {
 }
 
 TEST(SetupScript, BuildsOnlyTheEcoviewBinaryByDefault) {
-  const TempDir dir;
-  const CommandResult r = run_setup(dir, "");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string build = build_call(dir);
+  const std::string build = build_call("");
   EXPECT_EQ(build.rfind("--build build ", 0), 0u) << build;
   EXPECT_TRUE(build.ends_with("--target ecoview")) << build;
 }
 
 TEST(SetupScript, BuildsEveryTargetGivenTests) {
-  const TempDir dir;
-  const CommandResult r = run_setup(dir, "tests");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string build = build_call(dir);
+  const std::string build = build_call("tests");
   EXPECT_EQ(build.rfind("--build build ", 0), 0u) << build;
   EXPECT_TRUE(build.ends_with("--target all")) << build;
 }
