@@ -26,6 +26,9 @@ SampledMesh sampled_mesh(uint m) {
   return mesh;
 }
 SampledMesh plant_mesh(uint i) { return sampled_mesh(texelFetch(plant_mesh_texels, int(i)).x); }
+// A place in a landscape's pool that holds no plant this frame (GpuSampler::refill) has this mesh.
+const uint no_plant = 0xFFFFFFFFu;
+bool holds_plant(uint i) { return texelFetch(plant_mesh_texels, int(i)).x != no_plant; }
 float plant_rounding(uint i) { return uintBitsToFloat(texelFetch(plant_mesh_texels, int(i)).y); }
 // Per plant, once counted, in one uint (count_of): its points (bits 0-23; a mesh's list holds at
 // most 2^17 samples), the number of its band from 1 (bits 24-29), whether drawn as polygons (bit

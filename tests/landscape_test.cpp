@@ -4,6 +4,7 @@
 #include "pointgen/landscape/growth_rules.hpp"
 #include "pointgen/landscape/hash32.hpp"
 #include "pointgen/landscape/landscape_cells.hpp"
+#include "pointgen/landscape/landscape_pool.hpp"
 #include "pointgen/landscape/landscape_terrain.hpp"
 #include "pointgen/random.hpp"
 
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <cstring>
 #include <ctime>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -349,6 +351,127 @@ TEST(LandscapeCells, ExpectedPlantCountIsTheCountOfEveryCellMade) {
     }
   }
   EXPECT_NEAR(expected_plant_count(spec), made, 0.02 * made);
+}
+
+// The pool's reach per layer of the forest: trees to 200 m, bushes to 120, ground cover to 40.
+const std::vector<float> forest_reach{200.0f, 120.0f, 40.0f};
+const std::vector<std::size_t> forest_meshes{10, 11, 12, 13, 14};
+
+struct NearCell {
+  float distance;
+  CellKey key;
+  auto operator<=>(const NearCell&) const = default;
+};
+
+// What a pool of `capacity` plants should hold for `eye`, from the cells and nothing else: every
+// layer's cells within reach, nearest first, until the next would not fit; then per species its
+// plants cell by cell in key order.
+std::vector<InstanceTable> expected_pool(const LandscapeSpec& spec, glm::vec2 eye, std::size_t capacity) {
+  std::vector<NearCell> near;
+  for (int layer = 0; layer < 3; ++layer) {
+    const glm::ivec2 cells = cell_count(spec, layer);
+    for (int z = 0; z < cells.y; ++z) {
+      for (int x = 0; x < cells.x; ++x) {
+        const CellBounds b = cell_bounds(spec, {layer, x, z});
+        const float d = glm::length(glm::clamp(eye, b.min, b.max) - eye);
+        if (d <= forest_reach[static_cast<std::size_t>(layer)]) near.push_back({d, {layer, x, z}});
+      }
+    }
+  }
+  std::sort(near.begin(), near.end());
+  std::vector<CellKey> chosen;
+  std::size_t plants = 0;
+  for (const NearCell& cell : near) {
+    plants += generate_cell(spec, cell.key).size();
+    if (plants > capacity) break;
+    chosen.push_back(cell.key);
+  }
+  std::sort(chosen.begin(), chosen.end());
+  std::vector<InstanceTable> tables;
+  for (std::size_t mesh : forest_meshes) tables.push_back({mesh, {}, {}, {}});
+  const std::size_t first_species[] = {0, 2, 3};
+  for (const CellKey& key : chosen) {
+    for (const LandscapePlant& plant : generate_cell(spec, key)) {
+      InstanceTable& table = tables[first_species[key.layer] + plant.species];
+      table.transforms.push_back(plant.transform);
+      table.tints.push_back(plant.tint);
+      table.seeds.push_back(plant.seed);
+    }
+  }
+  return tables;
+}
+
+void expect_same_tables(const std::vector<InstanceTable>& a, const std::vector<InstanceTable>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t t = 0; t < a.size(); ++t) {
+    EXPECT_EQ(a[t].mesh, b[t].mesh);
+    ASSERT_EQ(a[t].size(), b[t].size()) << "table " << t;
+    EXPECT_EQ(std::memcmp(a[t].transforms.data(), b[t].transforms.data(), a[t].size() * sizeof(glm::mat4x3)), 0) << "table " << t;
+    EXPECT_EQ(a[t].tints, b[t].tints) << "table " << t;
+    EXPECT_EQ(a[t].seeds, b[t].seeds) << "table " << t;
+  }
+}
+
+TEST(LandscapePool, HoldsTheCellsWithinReachWhateverItHeldBefore) {
+  const LandscapeSpec spec = forest();
+  const std::size_t capacity = LandscapePool::most_plants_in_reach(spec, forest_reach);
+  const glm::vec2 eye(130.0f, -410.0f);
+  const std::vector<InstanceTable> expected = expected_pool(spec, eye, capacity);
+  std::size_t plants = 0;
+  for (const InstanceTable& table : expected) plants += table.size();
+  ASSERT_GT(plants, 1000u);
+  LandscapePool fresh(spec, forest_reach, forest_meshes, capacity);
+  EXPECT_TRUE(fresh.fill(eye));
+  EXPECT_EQ(fresh.stats().cells_left_out, 0u) << "a pool as large as the reach's sites leaves none out";
+  EXPECT_EQ(fresh.stats().plants, plants);
+  EXPECT_EQ(fresh.stats().plants_made, plants);
+  expect_same_tables(fresh.tables(), expected);
+  // Flown from elsewhere, past the edge and through cells it shares with this eye.
+  LandscapePool flown(spec, forest_reach, forest_meshes, capacity);
+  for (const glm::vec2 before : {glm::vec2(-990.0f, 990.0f), glm::vec2(3000.0f, 0.0f), glm::vec2(100.0f, -380.0f)}) flown.fill(before);
+  EXPECT_TRUE(flown.fill(eye));
+  EXPECT_LT(flown.stats().plants_made, plants) << "cells kept from the eye before are not made again";
+  expect_same_tables(flown.tables(), expected);
+  EXPECT_FALSE(flown.fill(eye)) << "the same eye again changes nothing";
+  EXPECT_EQ(flown.stats().cells_made, 0u);
+}
+
+TEST(LandscapePool, AFullPoolHoldsTheNearestCellsThatFitAndNoMorePlants) {
+  const LandscapeSpec spec = forest();
+  const glm::vec2 eye(-200.0f, 300.0f);
+  LandscapePool all(spec, forest_reach, forest_meshes, LandscapePool::most_plants_in_reach(spec, forest_reach));
+  all.fill(eye);
+  const std::size_t capacity = all.stats().plants / 3;
+  LandscapePool pool(spec, forest_reach, forest_meshes, capacity);
+  pool.fill(eye);
+  EXPECT_LE(pool.stats().plants, capacity);
+  EXPECT_GT(pool.stats().cells_left_out, 0u);
+  EXPECT_EQ(pool.stats().cells + pool.stats().cells_left_out, all.stats().cells);
+  expect_same_tables(pool.tables(), expected_pool(spec, eye, capacity));
+}
+
+// A flight of 2 km over the forest, and the same reach over landscapes of 2, 20 and 100 km: the
+// cells kept made never pass twice the pool, which the reach sets, not the area.
+TEST(LandscapePool, MemoryIsSetByTheReachNotByTheArea) {
+  std::optional<std::size_t> capacity;
+  for (const float size : {2000.0f, 20000.0f, 100000.0f}) {
+    LandscapeSpec spec = forest();
+    spec.size = glm::vec2(size);
+    const std::size_t most = LandscapePool::most_plants_in_reach(spec, forest_reach);
+    if (capacity) {
+      EXPECT_EQ(most, *capacity) << size;
+    }
+    capacity = most;
+    LandscapePool pool(spec, forest_reach, forest_meshes, most / 2);
+    std::size_t most_kept = 0;
+    for (int step = 0; step <= 40; ++step) {
+      pool.fill(glm::vec2(-900.0f + 45.0f * static_cast<float>(step), 20.0f * std::sin(0.3f * static_cast<float>(step))));
+      EXPECT_LE(pool.stats().plants, most / 2);
+      most_kept = std::max(most_kept, pool.stats().plants_kept);
+    }
+    EXPECT_LE(most_kept, most) << size;
+    EXPECT_GT(most_kept, most / 4) << size << ": the flight kept cells";
+  }
 }
 
 TEST(LandscapeSpec, CheckNamesTheFirstFieldOutOfRange) {

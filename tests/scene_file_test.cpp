@@ -321,46 +321,40 @@ LandscapeObject read_small_landscape() {
   return read_landscape(JsonField(document, "test.json"), 1, [](const JsonField&) { return pointgen::TriangleMesh{}; });
 }
 
-TEST(SceneFile, LandscapeHasThePlantsOfItsCellsNearTheCameraOnItsGround) {
+TEST(SceneFile, LandscapeHasAnEmptyTableASpeciesAPoolForItsReachAndItsGroundAroundTheCamera) {
   const Scene s = load_objects(small_landscape, {{"tet.obj", tetrahedron_obj}});
   const LandscapeObject landscape = read_small_landscape();
   const pointgen::LandscapeSpec& spec = landscape.spec;
-  // The scene says what the whole landscape stands for, far more than the cells it made.
+  // The scene says what the whole landscape stands for; the renderer makes its cells.
   EXPECT_EQ(s.landscape_plants, pointgen::expected_plant_count(spec));
-  EXPECT_GT(s.landscape_plants, 100.0 * static_cast<double>(s.instance_count()));
   EXPECT_NE(describe_scene(s, 0.0).find(", a landscape of about "), std::string::npos) << describe_scene(s, 0.0);
-  // Every species' plants, in order, from the cells reaching within 60 m of (0, 12).
-  std::vector<pointgen::InstanceTable> expected;
-  for (int layer = 0; layer < 2; ++layer) {
-    std::vector<pointgen::InstanceTable> tables(spec.layers[static_cast<std::size_t>(layer)].species.size());
-    for (const pointgen::CellKey& key : pointgen::cells_within(spec, layer, {0.0f, 12.0f}, 60.0f)) {
-      for (const pointgen::LandscapePlant& plant : pointgen::generate_cell(spec, key)) {
-        tables[plant.species].transforms.push_back(plant.transform);
-        tables[plant.species].tints.push_back(plant.tint);
-        tables[plant.species].seeds.push_back(plant.seed);
-      }
-    }
-    for (pointgen::InstanceTable& table : tables) {
-      if (table.size() > 0) expected.push_back(std::move(table));
-    }
+  ASSERT_EQ(s.landscapes.size(), 1u);
+  const LandscapeSource& source = s.landscapes[0];
+  EXPECT_EQ(source.reach, (std::vector<float>{60.0f, 60.0f}));
+  ASSERT_EQ(s.groups.size(), 4u) << "the ground, then birches, the user's, grass";
+  EXPECT_EQ(source.first_group, 1u);
+  for (std::size_t g = 1; g < 4; ++g) {
+    EXPECT_EQ(s.groups[g].size(), 0u);
+    EXPECT_TRUE(s.point_meshes[s.groups[g].mesh]) << "plants are drawn as points far away";
   }
-  ASSERT_EQ(expected.size(), 3u) << "birches, the user's, grass";
-  ASSERT_EQ(s.groups.size(), 1u + expected.size()) << "the ground, then each species";
-  for (std::size_t g = 0; g < expected.size(); ++g) {
-    const pointgen::InstanceTable& made = s.groups[g + 1];
-    ASSERT_EQ(made.size(), expected[g].size()) << "species " << g;
-    EXPECT_EQ(std::memcmp(made.transforms.data(), expected[g].transforms.data(), made.size() * sizeof(glm::mat4x3)), 0);
-    EXPECT_EQ(made.tints, expected[g].tints);
-    EXPECT_EQ(made.seeds, expected[g].seeds);
-    EXPECT_TRUE(s.point_meshes[made.mesh]) << "plants are drawn as points far away";
-  }
-  const pointgen::TriangleMesh& ground = s.meshes[s.groups[0].mesh];
-  EXPECT_FALSE(s.point_meshes[s.groups[0].mesh]);
+  // Every site of the cells a 60 m disc can meet: trees' 20 m cells of 2 × 2 sites, grass's 5 m of 3 × 3.
+  EXPECT_EQ(source.capacity, 8u * 8u * 4u + 26u * 26u * 9u);
+  // 32 squares of 3.75 m from the lattice corner at or before 60 m short of the camera at (0, 12).
+  ASSERT_EQ(source.ground_mesh, s.groups[0].mesh);
+  const pointgen::TriangleMesh& ground = s.meshes[source.ground_mesh];
+  EXPECT_FALSE(s.point_meshes[source.ground_mesh]);
   EXPECT_EQ(ground.positions.size(), 33u * 33u);
   const pointgen::LandscapeTerrain terrain(spec.terrain, spec.seed);
   for (const glm::vec3& p : ground.positions) EXPECT_EQ(p.y, terrain.height(p.x, p.z));
-  EXPECT_EQ(ground.bounds().min.x, -60.0f);
-  EXPECT_EQ(ground.bounds().max.z, 72.0f);
+  EXPECT_EQ(ground.bounds().min.x, -1000.0f + 3.75f * std::floor(940.0f / 3.75f));
+  EXPECT_EQ(ground.bounds().min.z, -1000.0f + 3.75f * std::floor(952.0f / 3.75f));
+  EXPECT_EQ(ground.bounds().max.x, ground.bounds().min.x + 120.0f);
+  // The bounds hold the whole landscape, whose ground lies between its lowest and highest hills.
+  const shadow::Box bounds = s.bounds();
+  EXPECT_LE(bounds.min.x, -1000.0f);
+  EXPECT_GE(bounds.max.z, 1000.0f);
+  EXPECT_LE(bounds.min.y, -20.0f);
+  EXPECT_GE(bounds.max.y, 20.0f);
 }
 
 TEST(SceneFileErrors, MalformedLandscapeNamesTheField) {
@@ -383,31 +377,31 @@ TEST(SceneFileErrors, MalformedLandscapeNamesTheField) {
                      {"objects[0].terrain.octaves"});
 }
 
-TEST(SceneFileErrors, ALandscapeWhoseCellsNearTheCameraPassTheBudgetIsRefusedSayingWhatItNeeds) {
+// Within 900 m, trees' 20 m cells of 2 × 2 sites and grass's 5 m cells of 3 × 3: 1.2 million
+// plants, 304 bytes each (their tables, GPU records and the cells kept made), past 64 MiB; a pool
+// of 16 MiB (--plant-pool) holds 91,180 plants, 26 MiB.
+TEST(SceneFileErrors, ALandscapeWhosePoolPassesTheBudgetIsRefusedSayingWhatItNeeds) {
   std::string big = small_landscape;
   big.replace(big.find("\"radius\": 60"), 12, "\"radius\": 900");
+  const InputSource source{"test.json", with_objects(big), [](const std::string&) { return std::string(tetrahedron_obj); }};
+  const double mib = 1024.0 * 1024.0;
   try {
-    load_scene({"test.json", with_objects(big), [](const std::string&) { return std::string(tetrahedron_obj); }}, {64.0 * 1024.0 * 1024.0});
+    load_scene(source, {64.0 * mib});
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     const std::string message = e.what();
     EXPECT_NE(message.find("objects[0]"), std::string::npos) << message;
     EXPECT_NE(message.find("memory budget of 0.06 GiB"), std::string::npos) << message;
-    // Its plants' expected count from the cells reaching within 900 m, 184 bytes each, and a few
-    // MiB of meshes and ground.
-    const LandscapeObject landscape = read_small_landscape();
-    double plants = 0.0;
-    for (int layer = 0; layer < 2; ++layer) {
-      const pointgen::CellSites sites = pointgen::cell_sites(landscape.spec.layers[static_cast<std::size_t>(layer)]);
-      plants += sites.count() * sites.probability * static_cast<double>(pointgen::cells_within(landscape.spec, layer, {0.0f, 12.0f}, 900.0f).size());
-    }
+    const double plants = 92.0 * 92.0 * 4.0 + 362.0 * 362.0 * 9.0;
     const std::size_t at = message.find("would need about ");
     ASSERT_NE(at, std::string::npos) << message;
     const double needs_gib = std::stod(message.substr(at + 17));
-    const double plants_gib = plants * 184.0 / (1024.0 * 1024.0 * 1024.0);
+    const double plants_gib = plants * 304.0 / (1024.0 * mib);
     EXPECT_GE(needs_gib, plants_gib - 0.005) << message;
     EXPECT_LE(needs_gib, plants_gib + 0.01) << message;
   }
+  const Scene small_pool = load_scene(source, {64.0 * mib, 16.0 * mib});
+  EXPECT_EQ(small_pool.landscapes.at(0).capacity, static_cast<std::size_t>(16.0 * mib / 184.0));
 }
 
 TEST(SceneFileErrors, ALandscapeOfCellsTooManyToListIsRefusedBeforeListingThem) {

@@ -37,6 +37,7 @@ constexpr GLuint draw_points_binding = 1, draw_samples_binding = 10, block_draws
                  band_ranges_binding = 21, band_keys_binding = 22, group_bands_binding = 23, band_dispatch_binding = 24,
                  polygon_parts_binding = 25, band_ends_binding = 34, map_caps_binding = 35;
 constexpr std::size_t plants_per_group = 1024, threads_per_group = 256;  // shaders/sample_count.comp
+constexpr GLuint no_plant = 0xFFFFFFFFu;  // a pool's empty place: its mesh (shaders/sample_common.glsl)
 constexpr std::size_t points_per_block = 16;                              // shaders/point_common.glsl
 constexpr std::size_t max_planes = 96;                                    // planes[96]
 
@@ -104,7 +105,7 @@ std::vector<glm::vec2> GpuSampler::bands(float far) {
 }
 
 GpuSampler::GpuSampler(const pointgen::TableList& tables, const PointSamples& samples,
-                       const std::vector<GpuScene::DrawPlace>& places)
+                       const std::vector<GpuScene::DrawPlace>& places, const std::vector<Pool>& pools)
     : histogram_program_(gl::build_program({"sample_bins.comp"}, "#define HISTOGRAM\n")),
       band_ends_program_(gl::build_program({"band_ends.comp"})),
       keys_program_(gl::build_program({"sample_bins.comp"}, "#define KEYS\n")),
@@ -117,18 +118,31 @@ GpuSampler::GpuSampler(const pointgen::TableList& tables, const PointSamples& sa
       draws_program_(gl::build_program({"sample_draws.comp"})),
       commands_program_(gl::build_program({"sample_commands.comp"})),
       map_caps_program_(gl::build_program({"map_caps.comp"})) {
+  pools_ = pools;
   const std::vector<pointgen::SampledMesh>& meshes = samples.meshes();
   std::vector<glm::uvec4> table_ranges;  // per table of plants: first plant, end, then (sample_commands.comp)
   std::size_t most_points = 0;  // the draw list's points if every plant took its whole list
-  for (const pointgen::InstanceTable& table : tables) {
-    first_plant_.push_back(static_cast<std::uint32_t>(plant_count_));
+  range_of_.resize(tables.size());
+  for (std::size_t t = 0; t < tables.size(); ++t) {
+    const pointgen::InstanceTable& table = tables[t];
+    const auto pool = std::find_if(pools.begin(), pools.end(), [&](const Pool& p) { return t >= p.first && t < p.end; });
+    if (pool != pools.end() && t == pool->first) {  // the pool's room, empty until refilled
+      pool_rooms_.push_back(static_cast<std::uint32_t>(plant_count_));
+      plant_count_ += pool->capacity;
+      std::size_t most_samples = 0;
+      for (std::size_t p = pool->first; p < pool->end; ++p) most_samples = std::max(most_samples, meshes[tables[p].mesh].samples);
+      most_points += pool->capacity * most_samples;
+    }
     const pointgen::SampledMesh& mesh = meshes[table.mesh];
-    holds_plants_.push_back(mesh.samples > 0 && table.size() > 0);
+    first_plant_.push_back(static_cast<std::uint32_t>(pool != pools.end() ? pool_rooms_.back() : plant_count_));
+    holds_plants_.push_back(mesh.samples > 0 && (table.size() > 0 || pool != pools.end()));
     if (!holds_plants_.back()) continue;
-    ++table_count_;
-    table_ranges.emplace_back(first_plant_.back(), static_cast<std::uint32_t>(plant_count_ + table.size()), 0u, 0u);
+    range_of_[t] = table_count_++;
+    const std::size_t size = pool != pools.end() ? 0 : table.size();
+    table_ranges.emplace_back(first_plant_.back(), static_cast<std::uint32_t>(first_plant_.back() + size), 0u, 0u);
     table_ranges.emplace_back(static_cast<std::uint32_t>(3 * mesh.triangles), places[table.mesh].first_index,
                               static_cast<std::uint32_t>(places[table.mesh].base_vertex), 0u);
+    if (pool != pools.end()) continue;
     plant_count_ += table.size();
     most_points += table.size() * mesh.samples;
   }
@@ -160,19 +174,17 @@ GpuSampler::GpuSampler(const pointgen::TableList& tables, const PointSamples& sa
   storage<PlantPose>(instances_, plant_count_, GL_DYNAMIC_STORAGE_BIT);  // moving plants are posed each frame
   storage<glm::uvec2>(plant_meshes_, plant_count_, GL_DYNAMIC_STORAGE_BIT);
   for (std::size_t t = 0; t < tables.size(); ++t) {
-    if (!holds_plants_[t]) continue;
-    const pointgen::InstanceTable& table = tables[t];
-    update(t, table);
-    upload<glm::uvec2>(plant_meshes_, first_plant_[t], table.size(), [&](std::size_t i) {
-      return glm::uvec2(static_cast<std::uint32_t>(table.mesh), glm::floatBitsToUint(rounding(table, i)));
-    });
+    if (holds_plants_[t] && !in_pool(t)) place(t, tables[t]);
+  }
+  for (std::size_t p = 0; p < pools_.size(); ++p) {
+    upload<glm::uvec2>(plant_meshes_, pool_rooms_[p], pools_[p].capacity, [](std::size_t) { return glm::uvec2(no_plant, 0u); });
   }
   instance_texels_ = gl::buffer_texels(instances_);
   plant_mesh_texels_ = gl::buffer_texels(plant_meshes_, GL_RG32UI);
   gl::store(meshes_, gpu_meshes);
   mesh_texels_ = gl::buffer_texels(meshes_, GL_RGBA32UI);
   gl::store(polygon_parts_, polygon_parts);
-  gl::store(tables_, table_ranges);
+  gl::store(tables_, table_ranges, pools_.empty() ? 0 : GL_DYNAMIC_STORAGE_BIT);
   storage<GLuint>(counts_, plant_count_);
   storage<glm::uvec2>(offsets_, plant_count_);
   storage<glm::uvec4>(group_sums_, group_count_);
@@ -191,6 +203,33 @@ GpuSampler::GpuSampler(const pointgen::TableList& tables, const PointSamples& sa
   storage<glm::uvec4>(band_dispatch_, 4 * max_bands);  // shaders/sample_bands.comp
   part_lists_ = std::make_unique<PolygonPartLists>(plant_count_, table_count_, max_bands);
   every_band_drawn_ = std::make_unique<DrawnCommands>(1, max_bands * table_count_);
+}
+
+bool GpuSampler::in_pool(std::size_t table) const {
+  return std::any_of(pools_.begin(), pools_.end(), [&](const Pool& p) { return table >= p.first && table < p.end; });
+}
+
+void GpuSampler::place(std::size_t t, const pointgen::InstanceTable& table) {
+  upload<PlantPose>(instances_, first_plant_[t], table.size(), [&](std::size_t i) { return plant_pose(table, i); });
+  upload<glm::uvec2>(plant_meshes_, first_plant_[t], table.size(), [&](std::size_t i) {
+    return glm::uvec2(static_cast<std::uint32_t>(table.mesh), glm::floatBitsToUint(rounding(table, i)));
+  });
+}
+
+void GpuSampler::refill(std::size_t pool, const pointgen::TableList& tables) {
+  const Pool& p = pools_[pool];
+  std::uint32_t at = pool_rooms_[pool];
+  const std::uint32_t end = at + static_cast<std::uint32_t>(p.capacity);
+  for (std::size_t t = p.first; t < p.end; ++t) {
+    if (!holds_plants_[t]) continue;
+    if (tables[t].size() > end - at) throw RuntimeFailure("a landscape's plants outgrew their pool");
+    first_plant_[t] = at;
+    place(t, tables[t]);
+    const glm::uvec4 range(at, at + static_cast<std::uint32_t>(tables[t].size()), 0u, 0u);
+    glNamedBufferSubData(tables_.name(), static_cast<GLintptr>(2 * range_of_[t] * sizeof(glm::uvec4)), sizeof range, &range);
+    at = range.y;
+  }
+  upload<glm::uvec2>(plant_meshes_, at, end - at, [](std::size_t) { return glm::uvec2(no_plant, 0u); });
 }
 
 void GpuSampler::update(std::size_t table, const pointgen::InstanceTable& posed) {

@@ -30,10 +30,17 @@ namespace ecoview {
 // aggregates: the CPU sampler is its test oracle. docs/point_density.md, "On the GPU".
 class GpuSampler {
  public:
+  // Tables [first, end) whose plants change with the eye (a landscape's species): they share
+  // room for `capacity` plants, laid out anew by refill.
+  struct Pool {
+    std::size_t first = 0, end = 0;
+    std::size_t capacity = 0;
+  };
   // `tables` are the scene's groups; those of point meshes (`samples` has lists for them) become
-  // plants, in table order. `places`: where each mesh's triangles lie for the polygon draws.
+  // plants, in table order, each pool's in its room. `places`: where each mesh's triangles lie for
+  // the polygon draws.
   GpuSampler(const pointgen::TableList& tables, const PointSamples& samples,
-             const std::vector<GpuScene::DrawPlace>& places);
+             const std::vector<GpuScene::DrawPlace>& places, const std::vector<Pool>& pools = {});
 
   // The distance bands for a view whose far plane is `far` metres away: the first to
   // first_band_end, each next one `band_ratio` times as far, the last to infinity.
@@ -43,6 +50,9 @@ class GpuSampler {
   // Moves a table's plants (posed people, animals, vehicles): their transforms and tints alone
   // cross the bus. `table` has as many instances as at load.
   void update(std::size_t table, const pointgen::InstanceTable& posed);
+  // Lays the pool's tables out in its room, one after the other, as `tables` now holds them (at
+  // most its capacity in all); the rest of the room holds no plant.
+  void refill(std::size_t pool, const pointgen::TableList& tables);
 
   // Starts a frame's lists for the view, and sorts the plants in its frusta into the bands (from
   // bands()): the view's frusta, eye, density and point cost are used; its occlusion, cap and
@@ -123,6 +133,8 @@ class GpuSampler {
 
  private:
   void bind() const;
+  bool in_pool(std::size_t table) const;
+  void place(std::size_t table, const pointgen::InstanceTable& plants);  // at first_plant_[table]
   void sort(const gl::Program& keys, int band_count, int first_band);
   void cut_dense_bands();
   bool in_frame(int band) const;  // a band the frame shows: not the casters' nor the hidden plants'
@@ -134,6 +146,9 @@ class GpuSampler {
   std::optional<int> casters_band_, hidden_band_;
   std::vector<std::uint32_t> first_plant_;
   std::vector<bool> holds_plants_;  // per table
+  std::vector<std::size_t> range_of_;  // per table holding plants: its entry in tables_
+  std::vector<Pool> pools_;
+  std::vector<std::uint32_t> pool_rooms_;  // per pool: its room's first plant
   std::size_t table_count_ = 0;  // tables holding plants: a polygon draw each per band or lane
   gl::Buffer instances_, plant_meshes_, meshes_, counts_, offsets_, group_sums_, draw_points_, draw_samples_, block_draws_, totals_;
   gl::Buffer polygon_instances_, tables_, commands_;

@@ -62,31 +62,12 @@ void attribute(GLuint vao, GLuint location, GLuint binding, GLint size, GLuint o
 
 GpuScene::GpuScene(const Scene& scene) : textures_(scene.meshes) {
   for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
-    const pointgen::TriangleMesh& mesh = scene.meshes[i];
-    std::vector<Vertex> vertices;
-    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-      vertices.push_back({mesh.positions[v], mesh.normals[v], mesh.colors[v]});
-    }
-    Mesh& m = meshes_.emplace_back();
-    gl::store(m.vertices, vertices);
-    if (!mesh.materials.empty()) gl::store(m.surfaces.emplace(), textures_.vertex_surfaces(mesh));
-    m.vertex_count = static_cast<GLsizei>(vertices.size());
-    m.index_count = static_cast<GLsizei>(mesh.indices.size());
+    Mesh& m = meshes_.emplace_back(make_mesh(scene.meshes[i], scene.point_meshes[i]));
     places_.emplace_back();
-    m.point_mesh = scene.point_meshes[i];
     if (m.point_mesh) {
       places_.back() = {static_cast<GLuint>(point_mesh_indices_), point_mesh_vertices_};
       point_mesh_indices_ += m.index_count;
       point_mesh_vertices_ += m.vertex_count;
-    }
-    const std::optional<pointgen::TriangleSplit> split = drawn_split(mesh, m.point_mesh);
-    gl::store(m.indices, split ? split->indices : mesh.indices);
-    if (!split) continue;
-    for (const pointgen::PolygonPart& part : split->parts) {
-      m.parts.push_back({part.first_index, static_cast<GLsizei>(part.index_count)});
-      if (m.point_mesh) continue;
-      m.chunk_boxes.emplace_back().add(part.center - part.half_size);
-      m.chunk_boxes.back().add(part.center + part.half_size);
     }
   }
   for (const pointgen::InstanceTable& group : scene.groups) {
@@ -103,6 +84,40 @@ GpuScene::GpuScene(const Scene& scene) : textures_(scene.meshes) {
     g.only_transform = only_transform(group);
 
     set_attributes(g.vertex_array.name(), mesh, g.instances.name());
+  }
+}
+
+GpuScene::Mesh GpuScene::make_mesh(const pointgen::TriangleMesh& mesh, bool point_mesh) const {
+  std::vector<Vertex> vertices;
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    vertices.push_back({mesh.positions[v], mesh.normals[v], mesh.colors[v]});
+  }
+  Mesh m;
+  gl::store(m.vertices, vertices);
+  if (!mesh.materials.empty()) gl::store(m.surfaces.emplace(), textures_.vertex_surfaces(mesh));
+  m.vertex_count = static_cast<GLsizei>(vertices.size());
+  m.index_count = static_cast<GLsizei>(mesh.indices.size());
+  m.point_mesh = point_mesh;
+  const std::optional<pointgen::TriangleSplit> split = drawn_split(mesh, m.point_mesh);
+  gl::store(m.indices, split ? split->indices : mesh.indices);
+  if (!split) return m;
+  for (const pointgen::PolygonPart& part : split->parts) {
+    m.parts.push_back({part.first_index, static_cast<GLsizei>(part.index_count)});
+    if (m.point_mesh) continue;
+    m.chunk_boxes.emplace_back().add(part.center - part.half_size);
+    m.chunk_boxes.back().add(part.center + part.half_size);
+  }
+  return m;
+}
+
+void GpuScene::replace_mesh(std::size_t mesh, const pointgen::TriangleMesh& with) {
+  Mesh& m = meshes_[mesh];
+  if (m.point_mesh) throw RuntimeFailure("a point mesh cannot be replaced");
+  const bool adjacency = m.adjacency.has_value();
+  m = make_mesh(with, false);
+  if (adjacency) add_adjacency(mesh, with);
+  for (Group& group : groups_) {
+    if (group.mesh == mesh) set_attributes(group.vertex_array.name(), m, group.instances.name());
   }
 }
 
@@ -204,13 +219,16 @@ void GpuScene::multi_draw_chosen(const PlantDraws& draws, GLenum mode) const {
 
 void GpuScene::add_adjacency(const Scene& scene) {
   for (std::size_t m = 0; m < meshes_.size(); ++m) {
-    if (meshes_[m].adjacency) continue;
-    // In the order of the index list drawn, so that a part's range of it, doubled, is that part's.
-    pointgen::TriangleMesh drawn = scene.meshes[m];
-    if (std::optional<pointgen::TriangleSplit> split = drawn_split(drawn, meshes_[m].point_mesh)) drawn.indices = std::move(split->indices);
-    gl::store(meshes_[m].adjacency.emplace(), pointgen::adjacency_indices(drawn));
+    if (!meshes_[m].adjacency) add_adjacency(m, scene.meshes[m]);
   }
   if (chosen_ && !chosen_->adjacency) gather_adjacency();
+}
+
+void GpuScene::add_adjacency(std::size_t mesh, const pointgen::TriangleMesh& from) {
+  // In the order of the index list drawn, so that a part's range of it, doubled, is that part's.
+  pointgen::TriangleMesh drawn = from;
+  if (std::optional<pointgen::TriangleSplit> split = drawn_split(drawn, meshes_[mesh].point_mesh)) drawn.indices = std::move(split->indices);
+  gl::store(meshes_[mesh].adjacency.emplace(), pointgen::adjacency_indices(drawn));
 }
 
 void GpuScene::draw_with_adjacency(const std::optional<glm::mat4>& view) const {

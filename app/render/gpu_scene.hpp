@@ -46,6 +46,8 @@ class GpuScene {
   // Every instance whole, each triangle with its neighbours (GL_TRIANGLES_ADJACENCY), for shadow
   // volumes and silhouette maps; `view` as for draw.
   void draw_with_adjacency(const std::optional<glm::mat4>& view = std::nullopt) const;
+  // Replaces a mesh other than a point mesh with `with` (a landscape's ground, moved with the eye).
+  void replace_mesh(std::size_t mesh, const pointgen::TriangleMesh& with);
   // Replaces the instances of a group with `table`, which has at most as many as the scene's
   // group: posed moving objects, or the subset a pass draws as polygons. `parts`, for a point
   // mesh's group, has for each instance the polygon parts to draw, a bit each; none: all.
@@ -96,6 +98,8 @@ class GpuScene {
     std::size_t capacity = 0;
     std::optional<glm::mat4x3> only_transform;  // of the group's one instance
   };
+  Mesh make_mesh(const pointgen::TriangleMesh& mesh, bool point_mesh) const;
+  void add_adjacency(std::size_t mesh, const pointgen::TriangleMesh& from);
   // The index ranges of a group's instances that `view` needs: its mesh's chunks whose boxes reach
   // it (neighbouring ranges joined), or the whole list.
   std::vector<Range> ranges_in_view(const Group& group, const std::optional<glm::mat4>& view) const;

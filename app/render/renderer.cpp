@@ -81,6 +81,7 @@ static RenderSettings within_limits(const RenderSettings& s) {
 Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
     : scene_(scene),
       settings_(within_limits(settings)),
+      fixed_bounds_(scene.fixed_bounds()),
       scene_bounds_(scene.bounds()),
       tables_(scene.groups),
       gpu_scene_(scene),
@@ -106,8 +107,16 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
       gpu_scene_.update(g, tables_[g]);
     }
   }
+  std::vector<GpuSampler::Pool> pools;
+  for (const LandscapeSource& landscape : scene.landscapes) {
+    std::vector<std::size_t> meshes;
+    for (std::size_t g = 0; g < landscape.group_count(); ++g) meshes.push_back(scene.groups[landscape.first_group + g].mesh);
+    landscape_pools_.emplace_back(landscape.spec, landscape.reach, meshes, landscape.capacity);
+    ground_corners_.push_back(landscape.ground.first_corner(landscape.spec, {scene.camera.position.x, scene.camera.position.z}));
+    pools.push_back({landscape.first_group, landscape.first_group + landscape.group_count(), landscape.capacity});
+  }
   if (settings_.points && settings_.gpu_sampler && settings_.measure == RenderSettings::Measure::off) {
-    gpu_sampler_ = std::make_unique<GpuSampler>(tables_, samples_, gpu_scene_.point_mesh_places());
+    gpu_sampler_ = std::make_unique<GpuSampler>(tables_, samples_, gpu_scene_.point_mesh_places(), pools);
     occluders_ = std::make_unique<DepthPyramid>(glm::ivec2(settings.width, settings.height));
     receivers_ = std::make_unique<DepthPyramid>(glm::ivec2(receiver_mask_size));
     gpu_scene_.gather_point_meshes();
@@ -506,6 +515,38 @@ void Renderer::pose(double t) {
   }
 }
 
+void Renderer::place_landscapes(const shadow::Camera& camera) {
+  const glm::vec2 eye(camera.position.x, camera.position.z);
+  scene_bounds_ = fixed_bounds_;
+  for (std::size_t l = 0; l < landscape_pools_.size(); ++l) {
+    const LandscapeSource& landscape = scene_.landscapes[l];
+    pointgen::LandscapePool& pool = landscape_pools_[l];
+    const shadow::Box near = landscape.bounds_near(eye);
+    scene_bounds_.add(near.min);
+    scene_bounds_.add(near.max);
+    if (const glm::ivec2 corner = landscape.ground.first_corner(landscape.spec, eye); corner != ground_corners_[l]) {
+      ground_corners_[l] = corner;
+      gpu_scene_.replace_mesh(landscape.ground_mesh, landscape.ground.mesh(landscape.spec, corner));
+    }
+    const bool changed = pool.fill(eye);
+    const pointgen::LandscapePool::Stats& made = pool.stats();
+    stats_.landscape.cells += made.cells;
+    stats_.landscape.plants += made.plants;
+    stats_.landscape.cells_made += made.cells_made;
+    stats_.landscape.plants_made += made.plants_made;
+    stats_.landscape.cells_left_out += made.cells_left_out;
+    stats_.landscape.plants_kept += made.plants_kept;
+    if (!changed) continue;
+    std::vector<pointgen::InstanceTable> tables = pool.tables();
+    for (std::size_t s = 0; s < tables.size(); ++s) {
+      const std::size_t group = landscape.first_group + s;
+      tables_.replace(group, std::move(tables[s]));
+      if (cells_) cells_->update(group, tables_[group], samples_.meshes()[tables_[group].mesh]);
+    }
+    if (gpu_sampler_) gpu_sampler_->refill(l, tables_);
+  }
+}
+
 void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, double t) {
   const double host_start = host_cpu_ms();
   // The first frame has no frame before it: it takes one from itself drawn without shadows.
@@ -566,6 +607,7 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
 void Renderer::begin_frame(const shadow::Camera& camera, const shadow::Light& light, double t) {
   pose(t);
   stats_ = {};
+  place_landscapes(camera);
   pending_ = {};
   stages_.start();
   view_projection_ = camera.projection(aspect()) * camera.view();

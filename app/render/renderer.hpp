@@ -13,6 +13,7 @@
 #include "app/render/render_settings.hpp"
 #include "app/render/shadow_pass.hpp"
 #include "app/reference/exact_visibility.hpp"
+#include "pointgen/landscape/landscape_pool.hpp"
 #include "pointgen/sampling/frustum_culling.hpp"
 #include "pointgen/sampling/view_sampler.hpp"
 #include "shadow/aliasing.hpp"
@@ -39,6 +40,9 @@ struct FrameStats {
   // Points the GPU sampler chose beyond what its buffers hold (a driver's largest buffer): not
   // drawn, in the frame or the maps. 0 but in scenes of millions of plants on such a driver.
   std::size_t points_left_out = 0;
+  // The landscapes' pools (pointgen::LandscapePool::Stats), summed: the cells and plants chosen,
+  // those made this frame, the cells within reach left out by a full pool, and the plants kept made.
+  pointgen::LandscapePool::Stats landscape;
   double sample_ms = 0.0;     // CPU: choosing points or polygons, for both passes
   // CPU time of the program's own threads outside GL calls (docs/figures.md), for the whole frame:
   // posing, sampling, setups, uploads' preparation, read-backs' scans.
@@ -102,6 +106,9 @@ class Renderer {
   void make_method_passes();
   // Moves the moving objects to time t.
   void pose(double t);
+  // Makes each landscape's cells within reach of the eye into its tables and moves its ground,
+  // from the eye alone; sets the frame's scene bounds.
+  void place_landscapes(const shadow::Camera& camera);
   // Loads the GPU instance buffers of point meshes with the instances `selection` draws as polygons.
   void upload_polygons(const pointgen::SampledFrame& selection);
   // One frame, with or without shadows.
@@ -208,7 +215,8 @@ class Renderer {
 
   const Scene& scene_;
   RenderSettings settings_;
-  shadow::Box scene_bounds_;
+  shadow::Box fixed_bounds_;  // of all but the landscapes
+  shadow::Box scene_bounds_;  // of what this frame holds
   pointgen::TableList tables_;  // the scene's groups, read in place but for moving ones posed for this frame
   GpuScene gpu_scene_;
   PointSamples samples_;
@@ -226,6 +234,8 @@ class Renderer {
   std::unique_ptr<MaskTechnique> mask_;             // the method's, where its lookup is a mask
   std::unique_ptr<PagedMap> pages_;                 // the method's, where its lookup is pages
   std::vector<std::size_t> moving_groups_;          // the tables the scene's animations pose
+  std::vector<pointgen::LandscapePool> landscape_pools_;  // per landscape of the scene
+  std::vector<glm::ivec2> ground_corners_;               // per landscape: where its ground starts
   std::vector<shadow::Box> mesh_boxes_;             // of the moving groups' meshes, in their own space
   double time_ = 0.0;                               // of the frame being drawn
   // The time of the frame that last asked for pages and its moving instances' boxes then.

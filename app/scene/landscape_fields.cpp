@@ -58,8 +58,8 @@ LandscapeObject read_landscape(const JsonField& field, std::uint64_t scene_seed,
   spec.seed = static_cast<std::uint32_t>(seed);
   const std::vector<double> size = field["size"].numbers(2, 1, pointgen::LandscapeSpec::max_size);
   spec.size = {size[0], size[1]};
-  if (auto f = field.optional("radius")) object.radius = f->number_f(0, 2.0 * pointgen::LandscapeSpec::max_size);
-  if (auto f = field.optional("ground_cells")) object.ground_cells = f->integer(1, 4096);
+  if (auto f = field.optional("radius")) object.ground.radius = f->number_f(1, 2.0 * pointgen::LandscapeSpec::max_size);
+  if (auto f = field.optional("ground_cells")) object.ground.cells = f->integer(1, 4096);
   if (auto f = field.optional("terrain")) spec.terrain = read_landscape_terrain(*f);
 
   std::vector<pointgen::PlantSpecies> defined;
@@ -67,9 +67,11 @@ LandscapeObject read_landscape(const JsonField& field, std::uint64_t scene_seed,
     for (const JsonField& item : list->items()) defined.push_back(read_species(item, defined));
   }
   for (const JsonField& layer_field : field["layers"].items(1)) {
-    layer_field.only_keys({"name", "cell_size", "density", "species"});
+    layer_field.only_keys({"name", "cell_size", "density", "radius", "species"});
     pointgen::LandscapeLayer layer;
     if (auto f = layer_field.optional("name")) layer.name = f->string();
+    object.reach.push_back(object.ground.radius);
+    if (auto f = layer_field.optional("radius")) object.reach.back() = f->number_f(0, 2.0 * pointgen::LandscapeSpec::max_size);
     layer.cell_size = layer_field["cell_size"].number_f(0.1, 1e4);
     layer.density = layer_field["density"].number_f(0, 1e4);
     std::vector<pointgen::TriangleMesh>& meshes = object.meshes.emplace_back();

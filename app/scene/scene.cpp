@@ -4,11 +4,48 @@
 
 namespace ecoview {
 
+std::size_t LandscapeSource::group_count() const {
+  std::size_t species = 0;
+  for (const pointgen::LandscapeLayer& layer : spec.layers) species += layer.species.size();
+  return species;
+}
+
+// Heights: the hills' fractal noise lies in [0, 1] about a relief centred on 0; the valley only cuts.
+shadow::Box LandscapeSource::bounds() const {
+  const float half_relief = 0.5f * spec.terrain.relief;
+  const glm::vec2 half = 0.5f * spec.size + plant_reach;
+  return {{-half.x, -half_relief - spec.terrain.valley_depth - plant_reach, -half.y}, {half.x, half_relief + plant_reach, half.y}};
+}
+
+shadow::Box LandscapeSource::bounds_near(glm::vec2 eye) const {
+  shadow::Box box = bounds();
+  float radius = ground.radius;
+  for (float r : reach) radius = std::max(radius, r);
+  const glm::vec2 lo = glm::max(glm::vec2(box.min.x, box.min.z), eye - radius - plant_reach);
+  const glm::vec2 hi = glm::min(glm::vec2(box.max.x, box.max.z), eye + radius + plant_reach);
+  box.min.x = lo.x;
+  box.min.z = lo.y;
+  box.max.x = hi.x;
+  box.max.z = hi.y;
+  return box;
+}
+
 shadow::Box Scene::bounds() const {
+  shadow::Box box = fixed_bounds();
+  for (const LandscapeSource& landscape : landscapes) {
+    const shadow::Box b = landscape.bounds();
+    box.add(b.min);
+    box.add(b.max);
+  }
+  return box;
+}
+
+shadow::Box Scene::fixed_bounds() const {
   shadow::Box box;
   for (const pointgen::InstanceTable& group : groups) {
     const pointgen::Bounds local = meshes[group.mesh].bounds();
-    if (local.empty()) continue;
+    const auto moves_with_eye = [&](const LandscapeSource& l) { return l.ground_mesh == group.mesh; };
+    if (local.empty() || std::any_of(landscapes.begin(), landscapes.end(), moves_with_eye)) continue;
     for (const glm::mat4x3& transform : group.transforms) {
       const shadow::Box placed = shadow::transformed({local.min, local.max}, transform);
       box.add(placed.min);

@@ -12,6 +12,7 @@
 #include "pointgen/file_error.hpp"
 #include "pointgen/input_file.hpp"
 #include "pointgen/landscape/landscape_cells.hpp"
+#include "pointgen/landscape/landscape_pool.hpp"
 #include "pointgen/placement/height_grid_mesh.hpp"
 #include "pointgen/primitives.hpp"
 #include "pointgen/random.hpp"
@@ -200,68 +201,49 @@ class SceneBuilder {
     }
   }
 
-  // A landscape's ground and plants within its radius of the camera, made now into the scene's
-  // tables: until cells are made on demand, a small landscape on the renderer's usual path.
+  // A landscape's species meshes, an empty table each, and its ground around the camera: the
+  // renderer makes the cells within reach of each frame's eye (LandscapePool) into the tables, and
+  // moves the ground with the eye. The pool's plants and the cells it keeps are reserved now.
   void add_landscape(const JsonField& object) {
     LandscapeObject landscape = read_landscape(object, seed_, [this](const JsonField& file) { return load_file(file); });
-    const pointgen::LandscapeSpec& spec = landscape.spec;
+    LandscapeSource source;
+    source.spec = landscape.spec;
+    source.reach = landscape.reach;
+    const pointgen::LandscapeSpec& spec = source.spec;
     scene_.landscape_plants += pointgen::expected_plant_count(spec);
+    // The keys of the cells within reach are listed each frame: a layer of fine cells under a wide
+    // reach is refused by their count before the first is listed.
+    for (std::size_t layer = 0; layer < spec.layers.size(); ++layer) {
+      const float side = spec.layers[layer].cell_size;
+      const double across = std::floor(2.0 * source.reach[layer] / side) + 2.0;
+      reserve_memory(object, across * across * (sizeof(pointgen::CellKey) + sizeof(float)));
+    }
+    const double pool_plants = std::floor(limits_.plant_pool_bytes / bytes_per_plant);
+    source.capacity = std::min(pointgen::LandscapePool::most_plants_in_reach(spec, source.reach), static_cast<std::size_t>(pool_plants));
+    double triangles = 2.0 * landscape.ground.cells * landscape.ground.cells;
+    for (const std::vector<pointgen::TriangleMesh>& layer : landscape.meshes) {
+      for (const pointgen::TriangleMesh& mesh : layer) triangles += static_cast<double>(mesh.triangle_count());
+    }
+    // Its plants, and the cells kept made (up to twice as many plants, LandscapePool).
+    reserve_memory(object, static_cast<double>(source.capacity) * (bytes_per_plant + 2 * sizeof(pointgen::LandscapePlant)) +
+                               triangles * bytes_per_triangle);
     const glm::vec2 eye(scene_.camera.position.x, scene_.camera.position.z);
-    const pointgen::CellBounds ground{glm::max(eye - landscape.radius, -0.5f * spec.size), glm::min(eye + landscape.radius, 0.5f * spec.size)};
-    if (glm::any(glm::greaterThan(ground.min, ground.max))) return;  // nothing of it within the radius
-    // The keys of the cells listed are held at once: a layer of fine cells under a wide radius is
-    // refused by their count before the first is listed.
+    scene_.meshes.push_back(landscape.ground.mesh(spec, landscape.ground.first_corner(spec, eye)));
+    source.ground_mesh = scene_.meshes.size() - 1;
+    source.ground = landscape.ground;
+    add_instance(source.ground_mesh, glm::mat4(1.0f), glm::vec3(1.0f));
+    source.first_group = scene_.groups.size();
     for (std::size_t layer = 0; layer < spec.layers.size(); ++layer) {
-      const pointgen::CellRange range = pointgen::cell_range(spec, static_cast<int>(layer), eye, landscape.radius);
-      reserve_memory(object, range.count() * sizeof(pointgen::CellKey));
-    }
-    std::vector<std::vector<pointgen::CellKey>> cells;
-    double plants = 0.0, triangles = 2.0 * landscape.ground_cells * landscape.ground_cells;
-    for (std::size_t layer = 0; layer < spec.layers.size(); ++layer) {
-      cells.push_back(pointgen::cells_within(spec, static_cast<int>(layer), eye, landscape.radius));
-      const pointgen::CellSites sites = pointgen::cell_sites(spec.layers[layer]);
-      plants += static_cast<double>(cells.back().size()) * sites.count() * sites.probability;
-      for (const pointgen::TriangleMesh& mesh : landscape.meshes[layer]) triangles += static_cast<double>(mesh.triangle_count());
-    }
-    reserve_memory(object, plants * bytes_per_plant + triangles * bytes_per_triangle);
-    add_instance(add_ground(spec, ground, landscape.ground_cells), glm::mat4(1.0f), glm::vec3(1.0f));
-    for (std::size_t layer = 0; layer < spec.layers.size(); ++layer) add_layer_plants(std::move(landscape.meshes[layer]), spec, cells[layer]);
-  }
-
-  std::size_t add_ground(const pointgen::LandscapeSpec& spec, const pointgen::CellBounds& area, int grid_cells) {
-    const pointgen::LandscapeTerrain terrain(spec.terrain, spec.seed);
-    const glm::vec2 step = (area.max - area.min) / static_cast<float>(grid_cells);
-    scene_.meshes.push_back(pointgen::height_grid_mesh(
-        glm::ivec2(grid_cells),
-        [&](int i, int j) {
-          const glm::vec2 p = area.min + step * glm::vec2(i, j);
-          return glm::vec3(p.x, terrain.height(p.x, p.y), p.y);
-        },
-        spec.terrain.relief, {}));
-    return scene_.meshes.size() - 1;
-  }
-
-  // The layer's species meshes, drawn as points far away, and a table each of their plants.
-  void add_layer_plants(std::vector<pointgen::TriangleMesh> meshes, const pointgen::LandscapeSpec& spec,
-                        const std::vector<pointgen::CellKey>& cells) {
-    const std::size_t first = scene_.meshes.size();
-    std::vector<pointgen::InstanceTable> tables;
-    for (pointgen::TriangleMesh& mesh : meshes) {
-      scene_.meshes.push_back(std::move(mesh));
-      tables.push_back({scene_.meshes.size() - 1, {}, {}, {}});
-    }
-    mark_point_meshes(first, scene_.meshes.size());
-    for (const pointgen::CellKey& key : cells) {
-      for (const pointgen::LandscapePlant& plant : pointgen::generate_cell(spec, key)) {
-        pointgen::InstanceTable& table = tables[plant.species];
-        table.transforms.push_back(plant.transform);
-        table.tints.push_back(plant.tint);
-        table.seeds.push_back(plant.seed);
+      for (std::size_t s = 0; s < spec.layers[layer].species.size(); ++s) {
+        pointgen::TriangleMesh& mesh = landscape.meshes[layer][s];
+        const pointgen::Bounds b = mesh.bounds();
+        if (!b.empty()) source.plant_reach = std::max(source.plant_reach, spec.layers[layer].species[s].scale.y * glm::length(glm::max(glm::abs(b.min), glm::abs(b.max))));
+        scene_.meshes.push_back(std::move(mesh));
+        mark_point_meshes(scene_.meshes.size() - 1, scene_.meshes.size());
+        scene_.groups.push_back({scene_.meshes.size() - 1, {}, {}, {}});
       }
     }
-    for (pointgen::InstanceTable& table : tables) {
-      if (table.size() > 0) scene_.groups.push_back(std::move(table));
-    }
+    scene_.landscapes.push_back(std::move(source));
   }
 
   // A plant's table row and GPU instance record; a triangle's CPU and GPU copies of its vertices

@@ -21,6 +21,9 @@ InputSource open_input(const std::string& name_or_file, const std::string& folde
 struct LoadLimits {
   // A scene that would need more memory than this is refused before it is built.
   double memory_budget_bytes = 4.0 * 1024 * 1024 * 1024;
+  // The most memory a landscape's plants take at once (--plant-pool): fewer where its cells within
+  // reach of any eye hold fewer.
+  double plant_pool_bytes = 256.0 * 1024 * 1024;
 };
 
 // Parses the scene JSON (format in docs/scenes.md), loads the meshes it names and grows
