@@ -500,6 +500,31 @@ TEST(Capture, AFrameHasTheSameBytesWhereverACaptureIsSplit) {
   }
 }
 
+// A landscape's plants and ground are made where each frame's eye is: a frame flown to from 400 m
+// away has the same bytes as the same frame started cold, whatever the pool held before it.
+TEST(Capture, ALandscapeFrameHasTheSameBytesWhateverItsPoolHeldBefore) {
+  const TempDir whole, alone, paths;
+  const std::filesystem::path path = paths / "low_flight.json";
+  // Westward, looking back east, from where more plants grow (23,755) to where fewer do (22,973):
+  // the pool's room holds less each frame (GpuSampling.APoolRefilledWithFewerPlants… checks that
+  // what it held before is not chosen).
+  write_text(path, R"([{"t": 0, "position": [100, 45, 120], "target": [200, 20, 100]},
+                       {"t": 3, "position": [-300, 45, 120], "target": [-200, 20, 100]}])");
+  auto with = [&](const char* frames, const TempDir& d) {
+    return std::vector<std::string>{"capture", "--scene", (source_dir() / "data/examples/landscape.json").string(), "--path",
+                                    path.string(), "--fps", "1", "--size", "240x135", "--shadow-size", "512", "--stats",
+                                    (d / "stats.json").string(), "--frames", frames, "--out", d.path().string()};
+  };
+  ASSERT_EQ(run_ecoview(with("0:4", whole)).exit_code, 0);
+  ASSERT_EQ(run_ecoview(with("3:4", alone)).exit_code, 0);
+  EXPECT_EQ(read_bytes(whole / "color_00003.png"), read_bytes(alone / "color_00003.png"));
+  const nlohmann::json flown = nlohmann::json::parse(read_bytes(whole / "stats.json")).back()["landscape"];
+  const nlohmann::json cold = nlohmann::json::parse(read_bytes(alone / "stats.json")).back()["landscape"];
+  EXPECT_EQ(flown["plants"], cold["plants"]);
+  EXPECT_GT(flown["plants"].get<int>(), 1000);
+  EXPECT_GT(flown["cells_made"].get<int>(), 0) << "133 m on from the frame before: cells of its own";
+}
+
 // A process killed between writing a frame and renaming it leaves its temporary file; the capture
 // that renders the frame again removes it, and only it.
 TEST(Capture, ARerunRemovesTheTemporaryFilesAKilledCaptureLeft) {

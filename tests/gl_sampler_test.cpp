@@ -164,6 +164,39 @@ TEST_F(GpuSampling, WritesTheDrawsInPlantOrderWithoutGaps) {
   EXPECT_EQ(next, draws.size());
 }
 
+// A pool (a landscape's tables) laid out anew with fewer plants chooses as a sampler made for
+// those plants alone: the tables one after the other in its room, and none of what the room held
+// before chosen.
+TEST_F(GpuSampling, APoolRefilledWithFewerPlantsChoosesAsASamplerOfThoseAlone) {
+  const std::size_t capacity = scene.groups[0].size() + scene.groups[1].size();
+  const std::vector<GpuScene::DrawPlace> places = GpuScene(scene).point_mesh_places();
+  GpuSampler pool(scene.groups, samples, places, {{0, 2, capacity}});
+  pointgen::TableList full(scene.groups), fewer(scene.groups);
+  pointgen::InstanceTable half{scene.groups[0].mesh, {}, {}, {}};
+  for (std::size_t i = 0; i < scene.groups[0].size(); i += 2) half.add_from(scene.groups[0], i);
+  fewer.replace(0, half);
+  fewer.replace(1, {scene.groups[1].mesh, {}, {}, {}});
+  for (const pointgen::TableList* tables : {&full, &fewer}) {
+    pool.refill(0, *tables);
+    pool.sample(view());
+    GpuSampler alone(*tables, samples, places);
+    alone.sample(view());
+    const std::vector<GpuSampler::Count> in_pool = pool.read_counts(), expected = alone.read_counts();
+    ASSERT_EQ(in_pool.size(), capacity);
+    std::size_t chosen = 0;
+    for (std::size_t plant = 0; plant < capacity; ++plant) {
+      const GpuSampler::Count c = in_pool[plant];
+      const GpuSampler::Count e = plant < expected.size() ? expected[plant] : GpuSampler::Count{};
+      ASSERT_EQ(c.points, e.points) << "plant " << plant << " of " << expected.size();
+      ASSERT_EQ(c.polygons, e.polygons) << "plant " << plant;
+      ASSERT_EQ(c.band, e.band) << "plant " << plant;
+      chosen += c.band.has_value();
+    }
+    EXPECT_GT(chosen, 100u);
+    EXPECT_EQ(pool.first_plant(1), (*tables)[0].size());
+  }
+}
+
 // What a band draws changes the depth pyramid only under its plants, so that
 // DepthPyramid::build_changed rebuilds only the tiles there: each plant drawn marks the tiles
 // under its bounds box's rectangle, and the sky between the plants stays unmarked.

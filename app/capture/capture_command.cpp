@@ -75,6 +75,14 @@ nlohmann::json page_figures(const RenderOptions& options, const FrameStats& s) {
           {"tiles", s.pages.tiles}};
 }
 
+// A landscape's pool this frame (FrameStats::landscape); null in a scene without one.
+nlohmann::json landscape_figures(const Renderer& renderer) {
+  if (!renderer.has_landscapes()) return nullptr;
+  const pointgen::LandscapePool::Stats& l = renderer.stats().landscape;
+  return {{"cells", l.cells}, {"plants", l.plants}, {"cells_made", l.cells_made}, {"plants_made", l.plants_made},
+          {"cells_left_out", l.cells_left_out}, {"plants_kept", l.plants_kept}};
+}
+
 // One frame's figures for --stats (names as docs/figures.md defines them).
 // render_ms: the wall time of this one frame, sampling, passes and read-backs, until glFinish.
 nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOptions& options, const Renderer& renderer) {
@@ -85,7 +93,7 @@ nlohmann::json frame_stats(int frame, double t, double render_ms, const RenderOp
           {"sample_ms", s.sample_ms}, {"host_ms", s.host_ms}, {"shadow_pass_ms", s.shadow_pass_ms}, {"frame_pass_ms", s.frame_pass_ms},
           {"points", s.points}, {"triangles", s.triangles}, {"shadow_points", s.shadow_points},
           {"shadow_triangles", s.shadow_triangles}, {"points_left_out", s.points_left_out}, {"stage_ms", stage_figures(s)},
-          {"pages", page_figures(options, s)}};
+          {"pages", page_figures(options, s)}, {"landscape", landscape_figures(renderer)}};
 }
 
 }  // namespace
@@ -134,7 +142,7 @@ int run_capture(const CaptureOptions& o) {
   const glm::ivec2 size(settings.width, settings.height);
   check_video_option(o.video, o.out, size, std::find(aovs.begin(), aovs.end(), Aov::color) != aovs.end());
   const auto load_start = std::chrono::steady_clock::now();
-  const Scene scene = load_scene_option(o.scene.name, o.scene.memory_budget_gib);
+  const Scene scene = load_scene_option(o.scene);
   std::cout << describe_scene(scene, std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count())
             << std::endl;
   const shadow::Light& light = select_light(scene, o.scene.light);

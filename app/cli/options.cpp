@@ -55,6 +55,8 @@ void add_scene_options(CLI::App& command, SceneOptions& o) {
   command.add_option("--light", o.light, "Index of the scene light that shines and casts shadows")->capture_default_str();
   command.add_option("--memory-budget", o.memory_budget_gib, "Refuse scenes that would need more memory than this, in GiB")
       ->capture_default_str();
+  command.add_option("--plant-pool", o.plant_pool_mib, "MiB for a landscape's plants near the camera, made as it moves")
+      ->capture_default_str();
 }
 
 namespace {
@@ -256,12 +258,19 @@ void make_out_folder(const std::string& out) {
   }
 }
 
-Scene load_scene_option(const std::string& scene, double memory_budget_gib) {
+Scene load_scene_option(const SceneOptions& options) {
+  return load_scene_option(options.name, options.memory_budget_gib, options.plant_pool_mib);
+}
+
+Scene load_scene_option(const std::string& scene, double memory_budget_gib, double plant_pool_mib) {
   if (!std::isfinite(memory_budget_gib) || memory_budget_gib <= 0.0) {
     throw InputError("--memory-budget: must be a positive number of GiB");
   }
+  if (!std::isfinite(plant_pool_mib) || plant_pool_mib < 1.0 || plant_pool_mib > 1024.0 * 1024.0) {
+    throw InputError("--plant-pool: must be between 1 and 1048576 MiB");
+  }
   Scene loaded = load_scene(open_input(scene.empty() ? default_scene_name : scene, "scenes"),
-                             {memory_budget_gib * 1024.0 * 1024.0 * 1024.0});
+                             {memory_budget_gib * 1024.0 * 1024.0 * 1024.0, plant_pool_mib * 1024.0 * 1024.0});
   for (const std::string& line : loaded.notes) note(line);
   return loaded;
 }

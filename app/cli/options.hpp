@@ -1,6 +1,7 @@
 #pragma once
 #include "app/render/render_settings.hpp"
 #include "app/scene/scene.hpp"
+#include "app/scene/scene_file.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -28,11 +29,12 @@ FrameRange parse_frames(const std::string& text);  // "A:B", frames A … B-1, B
 
 int check_shadow_size(int size);
 
-// The scene options capture and view share: --scene, --light, --memory-budget.
+// The scene options capture and view share: --scene, --light, --memory-budget, --plant-pool.
 struct SceneOptions {
   std::string name;  // a file or a shipped scene; empty: the default scene
   int light = 0;
   double memory_budget_gib = 4.0;
+  double plant_pool_mib = LoadLimits{}.plant_pool_bytes / (1024.0 * 1024.0);
 };
 void add_scene_options(CLI::App& command, SceneOptions& options);
 
@@ -85,8 +87,10 @@ void check_out_folder(const std::string& out);
 void make_out_folder(const std::string& out);
 
 // The scene named by --scene (a file or a shipped scene; the default scene when empty), refused
-// when it would need more than `memory_budget_gib` (--memory-budget).
-Scene load_scene_option(const std::string& scene, double memory_budget_gib);
+// when it would need more than `memory_budget_gib` (--memory-budget); its landscapes' plants take
+// at most `plant_pool_mib` (--plant-pool).
+Scene load_scene_option(const std::string& scene, double memory_budget_gib, double plant_pool_mib = SceneOptions{}.plant_pool_mib);
+Scene load_scene_option(const SceneOptions& options);
 // The light selected by --light.
 const shadow::Light& select_light(const Scene& scene, int index);
 // Says in a note on stderr where --method hands the light (number `index`) to the uniform map

@@ -80,6 +80,7 @@ class Renderer {
   // Live changes (ecoview view): shadow method, map size and points per pixel, from the next frame on.
   void change(shadow::Method method, int shadow_size, float k);
   const RenderSettings& settings() const { return settings_; }
+  bool has_landscapes() const { return !landscape_pools_.empty(); }
   const FramePass& frame() const { return frame_pass_; }
   const ShadowPass& shadow_map() const { return map_.depths(); }
   // The shadow setup of the last frame drawn with shadows.

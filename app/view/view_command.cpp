@@ -51,7 +51,7 @@ int run_view(const ViewOptions& o) {
 
   // The scene before the window, so that a bad scene is bad input (exit 2) with or without a display.
   const auto load_start = Clock::now();
-  const Scene scene = load_scene_option(o.scene.name, o.scene.memory_budget_gib);
+  const Scene scene = load_scene_option(o.scene);
   settings.scene_line = describe_scene(scene, ms_since(load_start) / 1000.0);
   std::cout << settings.scene_line << std::endl;
   settings.light = select_light(scene, o.scene.light);
