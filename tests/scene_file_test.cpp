@@ -4,6 +4,7 @@
 #include "app/errors.hpp"
 #include "app/scene/landscape_fields.hpp"
 #include "app/scene/scene_file.hpp"
+#include "pointgen/landscape/ground_chunks.hpp"
 #include "pointgen/landscape/landscape_cells.hpp"
 
 #include <gtest/gtest.h>
@@ -321,7 +322,7 @@ LandscapeObject read_small_landscape() {
   return read_landscape(JsonField(document, "test.json"), 1, [](const JsonField&) { return pointgen::TriangleMesh{}; });
 }
 
-TEST(SceneFile, LandscapeHasAnEmptyTableASpeciesAPoolForItsReachAndItsGroundAroundTheCamera) {
+TEST(SceneFile, LandscapeHasAnEmptyTableASpeciesAPoolForItsReachAndItsGroundForTheCamera) {
   const Scene s = load_objects(small_landscape, {{"tet.obj", tetrahedron_obj}});
   const LandscapeObject landscape = read_small_landscape();
   const pointgen::LandscapeSpec& spec = landscape.spec;
@@ -339,16 +340,17 @@ TEST(SceneFile, LandscapeHasAnEmptyTableASpeciesAPoolForItsReachAndItsGroundArou
   }
   // Every site of the cells a 60 m disc can meet: trees' 20 m cells of 2 × 2 sites, grass's 5 m of 3 × 3.
   EXPECT_EQ(source.capacity, 8u * 8u * 4u + 26u * 26u * 9u);
-  // 32 squares of 3.75 m from the lattice corner at or before 60 m short of the camera at (0, 12).
+  // The ground: chunks of 32 × 32 squares (ground_cells) for the camera, over the whole area.
   ASSERT_EQ(source.ground_mesh, s.groups[0].mesh);
-  const pointgen::TriangleMesh& ground = s.meshes[source.ground_mesh];
   EXPECT_FALSE(s.point_meshes[source.ground_mesh]);
-  EXPECT_EQ(ground.positions.size(), 33u * 33u);
-  const pointgen::LandscapeTerrain terrain(spec.terrain, spec.seed);
-  for (const glm::vec3& p : ground.positions) EXPECT_EQ(p.y, terrain.height(p.x, p.z));
-  EXPECT_EQ(ground.bounds().min.x, -1000.0f + 3.75f * std::floor(940.0f / 3.75f));
-  EXPECT_EQ(ground.bounds().min.z, -1000.0f + 3.75f * std::floor(952.0f / 3.75f));
-  EXPECT_EQ(ground.bounds().max.x, ground.bounds().min.x + 120.0f);
+  EXPECT_EQ(source.ground.cells, 32);
+  pointgen::GroundChunks chunks(spec, source.ground);
+  const pointgen::TriangleMesh expected = chunks.mesh(chunks.chosen(s.camera.position));
+  const pointgen::TriangleMesh& ground = s.meshes[source.ground_mesh];
+  ASSERT_EQ(ground.positions.size(), expected.positions.size());
+  EXPECT_EQ(std::memcmp(ground.positions.data(), expected.positions.data(), ground.positions.size() * sizeof(glm::vec3)), 0);
+  EXPECT_EQ(ground.bounds().min.x, -1000.0f);
+  EXPECT_EQ(ground.bounds().max.z, 1000.0f);
   // The bounds hold the whole landscape, whose ground lies between its lowest and highest hills.
   const shadow::Box bounds = s.bounds();
   EXPECT_LE(bounds.min.x, -1000.0f);
@@ -378,8 +380,9 @@ TEST(SceneFileErrors, MalformedLandscapeNamesTheField) {
 }
 
 // Within 900 m, trees' 20 m cells of 2 × 2 sites and grass's 5 m cells of 3 × 3: 1.2 million
-// plants, 304 bytes each (their tables, GPU records and the cells kept made), past 64 MiB; a pool
-// of 16 MiB (--plant-pool) holds 91,180 plants, 26 MiB.
+// plants, 304 bytes each (their tables, GPU records and the cells kept made), and the ground's
+// chunks for the camera, 240 bytes a triangle, past 64 MiB; a pool of 16 MiB (--plant-pool)
+// holds 91,180 plants.
 TEST(SceneFileErrors, ALandscapeWhosePoolPassesTheBudgetIsRefusedSayingWhatItNeeds) {
   std::string big = small_landscape;
   big.replace(big.find("\"radius\": 60"), 12, "\"radius\": 900");
@@ -393,14 +396,17 @@ TEST(SceneFileErrors, ALandscapeWhosePoolPassesTheBudgetIsRefusedSayingWhatItNee
     EXPECT_NE(message.find("objects[0]"), std::string::npos) << message;
     EXPECT_NE(message.find("memory budget of 0.06 GiB"), std::string::npos) << message;
     const double plants = 92.0 * 92.0 * 4.0 + 362.0 * 362.0 * 9.0;
+    const LandscapeObject landscape = read_small_landscape();
+    const pointgen::GroundChunks ground(landscape.spec, landscape.ground);
+    const double triangles = static_cast<double>(ground.chosen({0.0f, 8.0f, 12.0f}).size()) * 2.0 * 32.0 * 32.0;
     const std::size_t at = message.find("would need about ");
     ASSERT_NE(at, std::string::npos) << message;
     const double needs_gib = std::stod(message.substr(at + 17));
-    const double plants_gib = plants * 304.0 / (1024.0 * mib);
-    EXPECT_GE(needs_gib, plants_gib - 0.005) << message;
-    EXPECT_LE(needs_gib, plants_gib + 0.01) << message;
+    const double expected_gib = (plants * 304.0 + triangles * 240.0) / (1024.0 * mib);
+    EXPECT_GE(needs_gib, expected_gib - 0.005) << message;
+    EXPECT_LE(needs_gib, expected_gib + 0.01) << message;
   }
-  const Scene small_pool = load_scene(source, {64.0 * mib, 16.0 * mib});
+  const Scene small_pool = load_scene(source, {256.0 * mib, 16.0 * mib});
   EXPECT_EQ(small_pool.landscapes.at(0).capacity, static_cast<std::size_t>(16.0 * mib / 184.0));
 }
 

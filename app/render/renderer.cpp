@@ -81,7 +81,6 @@ static RenderSettings within_limits(const RenderSettings& s) {
 Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
     : scene_(scene),
       settings_(within_limits(settings)),
-      fixed_bounds_(scene.fixed_bounds()),
       scene_bounds_(scene.bounds()),
       tables_(scene.groups),
       gpu_scene_(scene),
@@ -112,7 +111,8 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
     std::vector<std::size_t> meshes;
     for (std::size_t g = 0; g < landscape.group_count(); ++g) meshes.push_back(scene.groups[landscape.first_group + g].mesh);
     landscape_pools_.emplace_back(landscape.spec, landscape.reach, meshes, landscape.capacity);
-    ground_corners_.push_back(landscape.ground.first_corner(landscape.spec, {scene.camera.position.x, scene.camera.position.z}));
+    grounds_.emplace_back(landscape.spec, landscape.ground);
+    ground_chunks_.push_back(grounds_.back().chosen(scene.camera.position));
     pools.push_back({landscape.first_group, landscape.first_group + landscape.group_count(), landscape.capacity});
   }
   if (settings_.points && settings_.gpu_sampler && settings_.measure == RenderSettings::Measure::off) {
@@ -516,19 +516,14 @@ void Renderer::pose(double t) {
 }
 
 void Renderer::place_landscapes(const shadow::Camera& camera) {
-  const glm::vec2 eye(camera.position.x, camera.position.z);
-  scene_bounds_ = fixed_bounds_;
   for (std::size_t l = 0; l < landscape_pools_.size(); ++l) {
     const LandscapeSource& landscape = scene_.landscapes[l];
     pointgen::LandscapePool& pool = landscape_pools_[l];
-    const shadow::Box near = landscape.bounds_near(eye);
-    scene_bounds_.add(near.min);
-    scene_bounds_.add(near.max);
-    if (const glm::ivec2 corner = landscape.ground.first_corner(landscape.spec, eye); corner != ground_corners_[l]) {
-      ground_corners_[l] = corner;
-      gpu_scene_.replace_mesh(landscape.ground_mesh, landscape.ground.mesh(landscape.spec, corner));
+    if (std::vector<pointgen::GroundChunkKey> chunks = grounds_[l].chosen(camera.position); chunks != ground_chunks_[l]) {
+      gpu_scene_.replace_mesh(landscape.ground_mesh, grounds_[l].mesh(chunks));
+      ground_chunks_[l] = std::move(chunks);
     }
-    const bool changed = pool.fill(eye);
+    const bool changed = pool.fill({camera.position.x, camera.position.z});
     const pointgen::LandscapePool::Stats& made = pool.stats();
     stats_.landscape.cells += made.cells;
     stats_.landscape.plants += made.plants;

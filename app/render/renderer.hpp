@@ -107,8 +107,8 @@ class Renderer {
   void make_method_passes();
   // Moves the moving objects to time t.
   void pose(double t);
-  // Makes each landscape's cells within reach of the eye into its tables and moves its ground,
-  // from the eye alone; sets the frame's scene bounds.
+  // Makes each landscape's cells within reach of the eye into its tables and its ground's chunks
+  // for the eye into its ground mesh, from the eye alone.
   void place_landscapes(const shadow::Camera& camera);
   // Loads the GPU instance buffers of point meshes with the instances `selection` draws as polygons.
   void upload_polygons(const pointgen::SampledFrame& selection);
@@ -216,8 +216,7 @@ class Renderer {
 
   const Scene& scene_;
   RenderSettings settings_;
-  shadow::Box fixed_bounds_;  // of all but the landscapes
-  shadow::Box scene_bounds_;  // of what this frame holds
+  shadow::Box scene_bounds_;
   pointgen::TableList tables_;  // the scene's groups, read in place but for moving ones posed for this frame
   GpuScene gpu_scene_;
   PointSamples samples_;
@@ -236,7 +235,8 @@ class Renderer {
   std::unique_ptr<PagedMap> pages_;                 // the method's, where its lookup is pages
   std::vector<std::size_t> moving_groups_;          // the tables the scene's animations pose
   std::vector<pointgen::LandscapePool> landscape_pools_;  // per landscape of the scene
-  std::vector<glm::ivec2> ground_corners_;               // per landscape: where its ground starts
+  std::vector<pointgen::GroundChunks> grounds_;          // per landscape
+  std::vector<std::vector<pointgen::GroundChunkKey>> ground_chunks_;  // per landscape: its ground's now
   std::vector<shadow::Box> mesh_boxes_;             // of the moving groups' meshes, in their own space
   double time_ = 0.0;                               // of the frame being drawn
   // The time of the frame that last asked for pages and its moving instances' boxes then.

@@ -50,7 +50,7 @@ pointgen::LandscapeSpecies read_layer_species(const JsonField& item, const std::
 }  // namespace
 
 LandscapeObject read_landscape(const JsonField& field, std::uint64_t scene_seed, const LoadMesh& load_mesh) {
-  field.only_keys({"type", "seed", "size", "radius", "ground_cells", "terrain", "species", "layers"});
+  field.only_keys({"type", "seed", "size", "radius", "ground_cells", "ground_step", "terrain", "species", "layers"});
   LandscapeObject object;
   pointgen::LandscapeSpec& spec = object.spec;
   const int own_seed = field.has("seed") ? field["seed"].integer(0, 2147483647) : 0;
@@ -58,8 +58,9 @@ LandscapeObject read_landscape(const JsonField& field, std::uint64_t scene_seed,
   spec.seed = static_cast<std::uint32_t>(seed);
   const std::vector<double> size = field["size"].numbers(2, 1, pointgen::LandscapeSpec::max_size);
   spec.size = {size[0], size[1]};
-  if (auto f = field.optional("radius")) object.ground.radius = f->number_f(1, 2.0 * pointgen::LandscapeSpec::max_size);
-  if (auto f = field.optional("ground_cells")) object.ground.cells = f->integer(1, 4096);
+  if (auto f = field.optional("radius")) object.radius = f->number_f(0, 2.0 * pointgen::LandscapeSpec::max_size);
+  if (auto f = field.optional("ground_cells")) object.ground.cells = f->integer(1, 256);
+  if (auto f = field.optional("ground_step")) object.ground.step = f->number_f(0.1, 1e4);
   if (auto f = field.optional("terrain")) spec.terrain = read_landscape_terrain(*f);
 
   std::vector<pointgen::PlantSpecies> defined;
@@ -70,7 +71,7 @@ LandscapeObject read_landscape(const JsonField& field, std::uint64_t scene_seed,
     layer_field.only_keys({"name", "cell_size", "density", "radius", "species"});
     pointgen::LandscapeLayer layer;
     if (auto f = layer_field.optional("name")) layer.name = f->string();
-    object.reach.push_back(object.ground.radius);
+    object.reach.push_back(object.radius);
     if (auto f = layer_field.optional("radius")) object.reach.back() = f->number_f(0, 2.0 * pointgen::LandscapeSpec::max_size);
     layer.cell_size = layer_field["cell_size"].number_f(0.1, 1e4);
     layer.density = layer_field["density"].number_f(0, 1e4);

@@ -17,35 +17,11 @@ shadow::Box LandscapeSource::bounds() const {
   return {{-half.x, -half_relief - spec.terrain.valley_depth - plant_reach, -half.y}, {half.x, half_relief + plant_reach, half.y}};
 }
 
-shadow::Box LandscapeSource::bounds_near(glm::vec2 eye) const {
-  shadow::Box box = bounds();
-  float radius = ground.radius;
-  for (float r : reach) radius = std::max(radius, r);
-  const glm::vec2 lo = glm::max(glm::vec2(box.min.x, box.min.z), eye - radius - plant_reach);
-  const glm::vec2 hi = glm::min(glm::vec2(box.max.x, box.max.z), eye + radius + plant_reach);
-  box.min.x = lo.x;
-  box.min.z = lo.y;
-  box.max.x = hi.x;
-  box.max.z = hi.y;
-  return box;
-}
-
 shadow::Box Scene::bounds() const {
-  shadow::Box box = fixed_bounds();
-  for (const LandscapeSource& landscape : landscapes) {
-    const shadow::Box b = landscape.bounds();
-    box.add(b.min);
-    box.add(b.max);
-  }
-  return box;
-}
-
-shadow::Box Scene::fixed_bounds() const {
   shadow::Box box;
   for (const pointgen::InstanceTable& group : groups) {
     const pointgen::Bounds local = meshes[group.mesh].bounds();
-    const auto moves_with_eye = [&](const LandscapeSource& l) { return l.ground_mesh == group.mesh; };
-    if (local.empty() || std::any_of(landscapes.begin(), landscapes.end(), moves_with_eye)) continue;
+    if (local.empty()) continue;
     for (const glm::mat4x3& transform : group.transforms) {
       const shadow::Box placed = shadow::transformed({local.min, local.max}, transform);
       box.add(placed.min);
@@ -58,6 +34,11 @@ shadow::Box Scene::fixed_bounds() const {
       box.add(b.min);
       box.add(b.max);
     }
+  }
+  for (const LandscapeSource& landscape : landscapes) {
+    const shadow::Box b = landscape.bounds();
+    box.add(b.min);
+    box.add(b.max);
   }
   return box;
 }

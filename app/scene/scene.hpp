@@ -1,6 +1,6 @@
 #pragma once
 #include "pointgen/instance_table.hpp"
-#include "pointgen/landscape/landscape_ground.hpp"
+#include "pointgen/landscape/ground_chunks.hpp"
 #include "pointgen/movers/moving_set.hpp"
 #include "pointgen/triangle_mesh.hpp"
 #include "shadow/box.hpp"
@@ -22,21 +22,19 @@ struct Animation {
 
 // A landscape whose plants are made where the camera is, frame by frame (pointgen::LandscapePool):
 // its species' groups, groups[first_group …] layer after layer, start empty, and its ground mesh
-// (made for the scene's camera) moves with the eye.
+// (pointgen::GroundChunks, made for the scene's camera) is made anew for each eye.
 struct LandscapeSource {
   pointgen::LandscapeSpec spec;
   std::vector<float> reach;  // per layer: metres from the eye within which its cells are made
   std::size_t first_group = 0;
   std::size_t capacity = 0;  // the most plants held at once
   std::size_t ground_mesh = 0;
-  pointgen::LandscapeGround ground;
+  pointgen::GroundChunks::Settings ground;
   float plant_reach = 0.0f;  // metres from where a plant stands that it may reach, at most
   // The species' groups, one a species.
   std::size_t group_count() const;
   // Bounds of its ground and of every plant it may grow.
   shadow::Box bounds() const;
-  // Bounds of what it holds for an eye at (x, z): the ground and the cells within reach.
-  shadow::Box bounds_near(glm::vec2 eye) const;
 };
 
 // A loaded scene: each mesh once, instances as transforms. Units are metres, +Y is up.
@@ -56,9 +54,8 @@ struct Scene {
   // What the scene's files have that is not used, a line per file, for the user.
   std::vector<std::string> notes;
 
-  // Bounds of everything at any time; fixed_bounds: of all but the landscapes.
+  // Bounds of everything at any time.
   shadow::Box bounds() const;
-  shadow::Box fixed_bounds() const;
   // Triangles drawn when every instance is drawn as polygons.
   std::size_t triangle_count() const;
   std::size_t instance_count() const;

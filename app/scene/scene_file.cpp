@@ -201,9 +201,10 @@ class SceneBuilder {
     }
   }
 
-  // A landscape's species meshes, an empty table each, and its ground around the camera: the
-  // renderer makes the cells within reach of each frame's eye (LandscapePool) into the tables, and
-  // moves the ground with the eye. The pool's plants and the cells it keeps are reserved now.
+  // A landscape's species meshes, an empty table each, and its ground's chunks for the camera:
+  // the renderer makes the cells within reach of each frame's eye (LandscapePool) into the tables
+  // and the ground's chunks for it (GroundChunks). The pool's plants and the cells it keeps are
+  // reserved now.
   void add_landscape(const JsonField& object) {
     LandscapeObject landscape = read_landscape(object, seed_, [this](const JsonField& file) { return load_file(file); });
     LandscapeSource source;
@@ -220,15 +221,19 @@ class SceneBuilder {
     }
     const double pool_plants = std::floor(limits_.plant_pool_bytes / bytes_per_plant);
     source.capacity = std::min(pointgen::LandscapePool::most_plants_in_reach(spec, source.reach), static_cast<std::size_t>(pool_plants));
-    double triangles = 2.0 * landscape.ground.cells * landscape.ground.cells;
+    pointgen::GroundChunks ground(spec, landscape.ground);
+    const std::vector<pointgen::GroundChunkKey> chunks = ground.chosen(scene_.camera.position);
+    // Its ground's chunks for the camera, each of n² squares: the chunks for any eye are about as
+    // many (a few per level of the quadtree).
+    const double n = landscape.ground.cells;
+    double triangles = static_cast<double>(chunks.size()) * 2.0 * n * n;
     for (const std::vector<pointgen::TriangleMesh>& layer : landscape.meshes) {
       for (const pointgen::TriangleMesh& mesh : layer) triangles += static_cast<double>(mesh.triangle_count());
     }
     // Its plants, and the cells kept made (up to twice as many plants, LandscapePool).
     reserve_memory(object, static_cast<double>(source.capacity) * (bytes_per_plant + 2 * sizeof(pointgen::LandscapePlant)) +
                                triangles * bytes_per_triangle);
-    const glm::vec2 eye(scene_.camera.position.x, scene_.camera.position.z);
-    scene_.meshes.push_back(landscape.ground.mesh(spec, landscape.ground.first_corner(spec, eye)));
+    scene_.meshes.push_back(ground.mesh(chunks));
     source.ground_mesh = scene_.meshes.size() - 1;
     source.ground = landscape.ground;
     add_instance(source.ground_mesh, glm::mat4(1.0f), glm::vec3(1.0f));

@@ -30,8 +30,7 @@ float LandscapeTerrain::height(float x, float z) const {
   return hills + valley(x, z);
 }
 
-glm::vec3 LandscapeTerrain::normal(float x, float z) const {
-  constexpr float step = 1.0f;
+glm::vec3 LandscapeTerrain::normal(float x, float z, float step) const {
   return glm::normalize(glm::vec3(height(x - step, z) - height(x + step, z), 2.0f * step, height(x, z - step) - height(x, z + step)));
 }
 

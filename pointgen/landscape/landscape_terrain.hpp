@@ -23,8 +23,8 @@ class LandscapeTerrain {
   LandscapeTerrain(const LandscapeTerrainSpec& spec, std::uint32_t seed);
 
   float height(float x, float z) const;
-  // Up, from the height's differences over a metre either side.
-  glm::vec3 normal(float x, float z) const;
+  // Up, from the height's differences over `step` metres either side.
+  glm::vec3 normal(float x, float z, float step = 1.0f) const;
 
  private:
   float valley(float x, float z) const;

@@ -18,12 +18,14 @@ TriangleMesh height_grid_mesh(glm::ivec2 cells, const std::function<glm::vec3(in
     }
   }
   mesh.normals = vertex_normals(mesh.positions, mesh.indices);
-  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    const float height = relief > 0.0f ? mesh.positions[v].y / relief + 0.5f : 0.0f;
-    const float steep = 1.0f - mesh.normals[v].y;
-    mesh.colors.push_back(glm::mix(colors.low, colors.high, std::clamp(0.7f * height + 3.0f * steep, 0.0f, 1.0f)));
-  }
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) mesh.colors.push_back(ground_color(colors, mesh.positions[v].y, relief, mesh.normals[v]));
   return mesh;
+}
+
+glm::vec3 ground_color(const GroundColors& colors, float height, float relief, const glm::vec3& normal) {
+  const float above = relief > 0.0f ? height / relief + 0.5f : 0.0f;
+  const float steep = 1.0f - normal.y;
+  return glm::mix(colors.low, colors.high, std::clamp(0.7f * above + 3.0f * steep, 0.0f, 1.0f));
 }
 
 }  // namespace pointgen

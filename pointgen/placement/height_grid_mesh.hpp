@@ -11,6 +11,9 @@ struct GroundColors {
   glm::vec3 high{0.42f, 0.40f, 0.22f};
 };
 
+// The ground's colour at `height` (relative to `relief`, centred on 0) where it faces `normal`.
+glm::vec3 ground_color(const GroundColors& colors, float height, float relief, const glm::vec3& normal);
+
 // A height field drawn as a grid of (cells.x + 1) × (cells.y + 1) vertices at vertex(i, j), each
 // cell two triangles split along its diagonal from (0, 0) to (1, 1), counter-clockwise seen from
 // above (+Y); coloured by height (relative to `relief`, centred on 0) and steepness.
