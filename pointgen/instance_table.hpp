@@ -39,6 +39,10 @@ struct InstanceTable {
   std::vector<glm::mat4x3> transforms;
   std::vector<std::uint32_t> tints;  // pack_tint's
   std::vector<std::uint32_t> seeds;
+  // Each instance stands for several (a landscape's far picks): its count, below one, rounds up
+  // to one point wherever any is asked, where others' round at a threshold from their seeds.
+  bool rounds_up = false;
+  static constexpr float round_up_threshold = 0.99999994f;  // the largest float below 1
 
   std::size_t size() const { return transforms.size(); }
   glm::mat4 transform(std::size_t i) const { return glm::mat4(transforms[i]); }

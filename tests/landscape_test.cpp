@@ -389,6 +389,7 @@ std::vector<InstanceTable> expected_pool(const LandscapeSpec& spec, glm::vec2 ey
   std::sort(chosen.begin(), chosen.end());
   std::vector<InstanceTable> tables;
   for (std::size_t mesh : forest_meshes) tables.push_back({mesh, {}, {}, {}});
+  for (std::size_t mesh : forest_meshes) tables.push_back({mesh, {}, {}, {}, true});  // no far blocks
   const std::size_t first_species[] = {0, 2, 3};
   for (const CellKey& key : chosen) {
     for (const LandscapePlant& plant : generate_cell(spec, key)) {
@@ -401,10 +402,14 @@ std::vector<InstanceTable> expected_pool(const LandscapeSpec& spec, glm::vec2 ey
   return tables;
 }
 
+// An eye at (x, z) on the ground asking no far blocks.
+LandscapeView near_only(glm::vec2 eye) { return {{eye.x, 0.0f, eye.y}, glm::mat4(1.0f), 0.0f}; }
+
 void expect_same_tables(const std::vector<InstanceTable>& a, const std::vector<InstanceTable>& b) {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t t = 0; t < a.size(); ++t) {
     EXPECT_EQ(a[t].mesh, b[t].mesh);
+    EXPECT_EQ(a[t].rounds_up, b[t].rounds_up);
     ASSERT_EQ(a[t].size(), b[t].size()) << "table " << t;
     EXPECT_EQ(std::memcmp(a[t].transforms.data(), b[t].transforms.data(), a[t].size() * sizeof(glm::mat4x3)), 0) << "table " << t;
     EXPECT_EQ(a[t].tints, b[t].tints) << "table " << t;
@@ -421,18 +426,18 @@ TEST(LandscapePool, HoldsTheCellsWithinReachWhateverItHeldBefore) {
   for (const InstanceTable& table : expected) plants += table.size();
   ASSERT_GT(plants, 1000u);
   LandscapePool fresh(spec, forest_reach, forest_meshes, capacity);
-  EXPECT_TRUE(fresh.fill(eye));
+  EXPECT_TRUE(fresh.fill(near_only(eye)));
   EXPECT_EQ(fresh.stats().cells_left_out, 0u) << "a pool as large as the reach's sites leaves none out";
   EXPECT_EQ(fresh.stats().plants, plants);
   EXPECT_EQ(fresh.stats().plants_made, plants);
   expect_same_tables(fresh.tables(), expected);
   // Flown from elsewhere, past the edge and through cells it shares with this eye.
   LandscapePool flown(spec, forest_reach, forest_meshes, capacity);
-  for (const glm::vec2 before : {glm::vec2(-990.0f, 990.0f), glm::vec2(3000.0f, 0.0f), glm::vec2(100.0f, -380.0f)}) flown.fill(before);
-  EXPECT_TRUE(flown.fill(eye));
+  for (const glm::vec2 before : {glm::vec2(-990.0f, 990.0f), glm::vec2(3000.0f, 0.0f), glm::vec2(100.0f, -380.0f)}) flown.fill(near_only(before));
+  EXPECT_TRUE(flown.fill(near_only(eye)));
   EXPECT_LT(flown.stats().plants_made, plants) << "cells kept from the eye before are not made again";
   expect_same_tables(flown.tables(), expected);
-  EXPECT_FALSE(flown.fill(eye)) << "the same eye again changes nothing";
+  EXPECT_FALSE(flown.fill(near_only(eye))) << "the same eye again changes nothing";
   EXPECT_EQ(flown.stats().cells_made, 0u);
 }
 
@@ -440,10 +445,10 @@ TEST(LandscapePool, AFullPoolHoldsTheNearestCellsThatFitAndNoMorePlants) {
   const LandscapeSpec spec = forest();
   const glm::vec2 eye(-200.0f, 300.0f);
   LandscapePool all(spec, forest_reach, forest_meshes, LandscapePool::most_plants_in_reach(spec, forest_reach));
-  all.fill(eye);
+  all.fill(near_only(eye));
   const std::size_t capacity = all.stats().plants / 3;
   LandscapePool pool(spec, forest_reach, forest_meshes, capacity);
-  pool.fill(eye);
+  pool.fill(near_only(eye));
   EXPECT_LE(pool.stats().plants, capacity);
   EXPECT_GT(pool.stats().cells_left_out, 0u);
   EXPECT_EQ(pool.stats().cells + pool.stats().cells_left_out, all.stats().cells);
@@ -465,7 +470,7 @@ TEST(LandscapePool, MemoryIsSetByTheReachNotByTheArea) {
     LandscapePool pool(spec, forest_reach, forest_meshes, most / 2);
     std::size_t most_kept = 0;
     for (int step = 0; step <= 40; ++step) {
-      pool.fill(glm::vec2(-900.0f + 45.0f * static_cast<float>(step), 20.0f * std::sin(0.3f * static_cast<float>(step))));
+      pool.fill(near_only({-900.0f + 45.0f * static_cast<float>(step), 20.0f * std::sin(0.3f * static_cast<float>(step))}));
       EXPECT_LE(pool.stats().plants, most / 2);
       most_kept = std::max(most_kept, pool.stats().plants_kept);
     }

@@ -6,6 +6,7 @@
 #include "app/scene/scene_file.hpp"
 #include "pointgen/landscape/ground_chunks.hpp"
 #include "pointgen/landscape/landscape_cells.hpp"
+#include "pointgen/landscape/landscape_pool.hpp"
 
 #include <gtest/gtest.h>
 
@@ -332,14 +333,20 @@ TEST(SceneFile, LandscapeHasAnEmptyTableASpeciesAPoolForItsReachAndItsGroundForT
   ASSERT_EQ(s.landscapes.size(), 1u);
   const LandscapeSource& source = s.landscapes[0];
   EXPECT_EQ(source.reach, (std::vector<float>{60.0f, 60.0f}));
-  ASSERT_EQ(s.groups.size(), 4u) << "the ground, then birches, the user's, grass";
+  ASSERT_EQ(s.groups.size(), 7u) << "the ground, then birches, the user's, grass, and each again for far blocks";
   EXPECT_EQ(source.first_group, 1u);
-  for (std::size_t g = 1; g < 4; ++g) {
+  EXPECT_EQ(source.group_count(), 6u);
+  for (std::size_t g = 1; g < 7; ++g) {
     EXPECT_EQ(s.groups[g].size(), 0u);
     EXPECT_TRUE(s.point_meshes[s.groups[g].mesh]) << "plants are drawn as points far away";
+    EXPECT_EQ(s.groups[g].rounds_up, g >= 4) << "a far block's plants round up to a point";
+    if (g >= 4) {
+      EXPECT_EQ(s.groups[g].mesh, s.groups[g - 3].mesh);
+    }
   }
-  // Every site of the cells a 60 m disc can meet: trees' 20 m cells of 2 × 2 sites, grass's 5 m of 3 × 3.
-  EXPECT_EQ(source.capacity, 8u * 8u * 4u + 26u * 26u * 9u);
+  // Every site of the cells a 60 m disc can meet (trees' 20 m cells of 2 × 2 sites, grass's 5 m
+  // of 3 × 3), and room for far blocks' plants.
+  EXPECT_EQ(source.capacity, 8u * 8u * 4u + 26u * 26u * 9u + pointgen::LandscapePool::far_plants);
   // The ground: chunks of 32 × 32 squares (ground_cells) for the camera, over the whole area.
   ASSERT_EQ(source.ground_mesh, s.groups[0].mesh);
   EXPECT_FALSE(s.point_meshes[source.ground_mesh]);
@@ -379,8 +386,8 @@ TEST(SceneFileErrors, MalformedLandscapeNamesTheField) {
                      {"objects[0].terrain.octaves"});
 }
 
-// Within 900 m, trees' 20 m cells of 2 × 2 sites and grass's 5 m cells of 3 × 3: 1.2 million
-// plants, 304 bytes each (their tables, GPU records and the cells kept made), and the ground's
+// Within 900 m, trees' 20 m cells of 2 × 2 sites and grass's 5 m cells of 3 × 3, 1.2 million
+// plants, and room for far blocks' plants, as many as 256 MiB holds, 304 bytes each (their tables, GPU records and the cells kept made), and the ground's
 // chunks for the camera, 240 bytes a triangle, past 64 MiB; a pool of 16 MiB (--plant-pool)
 // holds 91,180 plants.
 TEST(SceneFileErrors, ALandscapeWhosePoolPassesTheBudgetIsRefusedSayingWhatItNeeds) {
@@ -395,7 +402,8 @@ TEST(SceneFileErrors, ALandscapeWhosePoolPassesTheBudgetIsRefusedSayingWhatItNee
     const std::string message = e.what();
     EXPECT_NE(message.find("objects[0]"), std::string::npos) << message;
     EXPECT_NE(message.find("memory budget of 0.06 GiB"), std::string::npos) << message;
-    const double plants = 92.0 * 92.0 * 4.0 + 362.0 * 362.0 * 9.0;
+    const double plants = std::min(92.0 * 92.0 * 4.0 + 362.0 * 362.0 * 9.0 + pointgen::LandscapePool::far_plants,
+                                   std::floor(256.0 * mib / 184.0));  // the default --plant-pool
     const LandscapeObject landscape = read_small_landscape();
     const pointgen::GroundChunks ground(landscape.spec, landscape.ground);
     const double triangles = static_cast<double>(ground.chosen({0.0f, 8.0f, 12.0f}).size()) * 2.0 * 32.0 * 32.0;

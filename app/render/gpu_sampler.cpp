@@ -56,6 +56,7 @@ constexpr float hidden_casters_reach = 41.0f;
 
 // The same threshold pointgen::sample_view rounds a whole plant's count at.
 float rounding(const pointgen::InstanceTable& table, std::size_t i) {
+  if (table.rounds_up) return pointgen::InstanceTable::round_up_threshold;
   return pointgen::Random(table.seeds.size() > i ? table.seeds[i] : i).uniform();
 }
 

@@ -108,8 +108,8 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
   }
   std::vector<GpuSampler::Pool> pools;
   for (const LandscapeSource& landscape : scene.landscapes) {
-    std::vector<std::size_t> meshes;
-    for (std::size_t g = 0; g < landscape.group_count(); ++g) meshes.push_back(scene.groups[landscape.first_group + g].mesh);
+    std::vector<std::size_t> meshes;  // per species; its far blocks' table follows them all
+    for (std::size_t g = 0; g < landscape.group_count() / 2; ++g) meshes.push_back(scene.groups[landscape.first_group + g].mesh);
     landscape_pools_.emplace_back(landscape.spec, landscape.reach, meshes, landscape.capacity);
     grounds_.emplace_back(landscape.spec, landscape.ground);
     ground_chunks_.push_back(grounds_.back().chosen(scene.camera.position));
@@ -523,7 +523,11 @@ void Renderer::place_landscapes(const shadow::Camera& camera) {
       gpu_scene_.replace_mesh(landscape.ground_mesh, grounds_[l].mesh(chunks));
       ground_chunks_[l] = std::move(chunks);
     }
-    const bool changed = pool.fill({camera.position.x, camera.position.z});
+    // A far block's points are drawn as the frame's density asks (sampler_view's), at an average
+    // facing of one half.
+    const pointgen::SamplerView seen = sampler_view(camera, settings_, {});
+    const float points_at_a_metre = settings_.points ? 0.5f * seen.density.k * seen.density.pixels_per_radian * seen.density.pixels_per_radian : 0.0f;
+    const bool changed = pool.fill({camera.position, view_projection_, points_at_a_metre});
     const pointgen::LandscapePool::Stats& made = pool.stats();
     stats_.landscape.cells += made.cells;
     stats_.landscape.plants += made.plants;
@@ -602,13 +606,13 @@ void Renderer::draw(const shadow::Camera& camera, const shadow::Light& light, do
 void Renderer::begin_frame(const shadow::Camera& camera, const shadow::Light& light, double t) {
   pose(t);
   stats_ = {};
-  place_landscapes(camera);
   pending_ = {};
   stages_.start();
   view_projection_ = camera.projection(aspect()) * camera.view();
   time_ = t;
   camera_ = camera;
   light_ = light;
+  place_landscapes(camera);
 }
 
 std::vector<shadow::Plane> Renderer::set_up_map(const shadow::Camera& camera, const shadow::Light& light) {

@@ -7,7 +7,7 @@ namespace ecoview {
 std::size_t LandscapeSource::group_count() const {
   std::size_t species = 0;
   for (const pointgen::LandscapeLayer& layer : spec.layers) species += layer.species.size();
-  return species;
+  return 2 * species;
 }
 
 // Heights: the hills' fractal noise lies in [0, 1] about a relief centred on 0; the valley only cuts.

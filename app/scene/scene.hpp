@@ -21,7 +21,7 @@ struct Animation {
 };
 
 // A landscape whose plants are made where the camera is, frame by frame (pointgen::LandscapePool):
-// its species' groups, groups[first_group …] layer after layer, start empty, and its ground mesh
+// its species' groups, groups[first_group …] (group_count()), start empty, and its ground mesh
 // (pointgen::GroundChunks, made for the scene's camera) is made anew for each eye.
 struct LandscapeSource {
   pointgen::LandscapeSpec spec;
@@ -31,7 +31,8 @@ struct LandscapeSource {
   std::size_t ground_mesh = 0;
   pointgen::GroundChunks::Settings ground;
   float plant_reach = 0.0f;  // metres from where a plant stands that it may reach, at most
-  // The species' groups, one a species.
+  // The species' groups: one a species for its cells made whole, then one a species for the far
+  // blocks' plants (pointgen::LandscapePool::tables).
   std::size_t group_count() const;
   // Bounds of its ground and of every plant it may grow.
   shadow::Box bounds() const;

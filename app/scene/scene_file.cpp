@@ -220,7 +220,8 @@ class SceneBuilder {
       reserve_memory(object, across * across * (sizeof(pointgen::CellKey) + sizeof(float)));
     }
     const double pool_plants = std::floor(limits_.plant_pool_bytes / bytes_per_plant);
-    source.capacity = std::min(pointgen::LandscapePool::most_plants_in_reach(spec, source.reach), static_cast<std::size_t>(pool_plants));
+    source.capacity = std::min(pointgen::LandscapePool::most_plants_in_reach(spec, source.reach) + pointgen::LandscapePool::far_plants,
+                               static_cast<std::size_t>(pool_plants));
     pointgen::GroundChunks ground(spec, landscape.ground);
     const std::vector<pointgen::GroundChunkKey> chunks = ground.chosen(scene_.camera.position);
     // Its ground's chunks for the camera, each of n² squares: the chunks for any eye are about as
@@ -248,6 +249,8 @@ class SceneBuilder {
         scene_.groups.push_back({scene_.meshes.size() - 1, {}, {}, {}});
       }
     }
+    const std::size_t species = scene_.groups.size() - source.first_group;
+    for (std::size_t s = 0; s < species; ++s) scene_.groups.push_back({scene_.groups[source.first_group + s].mesh, {}, {}, {}, true});
     scene_.landscapes.push_back(std::move(source));
   }
 

@@ -13,6 +13,7 @@ namespace pointgen {
 namespace {
 
 constexpr std::uint32_t site_domain = 0x73697465u;  // "site"
+constexpr std::uint32_t far_domain = 0x66617221u;   // "far!"
 
 // What each of a site's uniforms decides: its own hash input, so that a rule added to one never
 // moves another. Two sites whose 32-bit keys agree (any two, once in four billion) draw alike: the same
@@ -136,6 +137,44 @@ std::vector<LandscapePlant> generate_cell(const LandscapeSpec& spec, const CellK
   return plants;
 }
 
+// Over a uniform [a, b], the mean of the scale's square is (a² + ab + b²) / 3.
+float mean_square_scale(const LandscapeSpecies& s) { return (s.scale.x * s.scale.x + s.scale.x * s.scale.y + s.scale.y * s.scale.y) / 3.0f; }
+
+CellBounds far_block_bounds(const LandscapeSpec& spec, const FarBlockKey& key) {
+  const float side = layer_of(spec, {key.layer, 0, 0}).cell_size * static_cast<float>(1 << key.level);
+  const glm::vec2 origin = -0.5f * spec.size + side * glm::vec2(key.x, key.z);
+  return {origin, glm::min(origin + side, 0.5f * spec.size)};
+}
+
+float open_surface_density(const LandscapeSpec& spec, int layer) {
+  const LandscapeLayer& l = spec.layers[static_cast<std::size_t>(layer)];
+  float per_plant = 0.0f;
+  for (const LandscapeSpecies& s : l.species) per_plant += s.weight / l.total_weight() * s.surface * mean_square_scale(s);
+  return l.density * per_plant;
+}
+
+std::optional<LandscapePlant> far_candidate(const LandscapeSpec& spec, const FarBlockKey& key, std::uint32_t index) {
+  const LandscapeLayer& layer = layer_of(spec, {key.layer, 0, 0});
+  const Site site{hash32(spec.seed, far_domain, key.layer, key.level, key.x, key.z, index)};
+  float total = 0.0f;
+  for (const LandscapeSpecies& s : layer.species) total += s.weight * s.surface * mean_square_scale(s);
+  float running = 0.0f;
+  int species = static_cast<int>(layer.species.size()) - 1;
+  for (std::size_t s = 0; s + 1 < layer.species.size(); ++s) {
+    running += layer.species[s].weight * layer.species[s].surface * mean_square_scale(layer.species[s]);
+    if (site.draw(species_draw) * total < running) {
+      species = static_cast<int>(s);
+      break;
+    }
+  }
+  const CellBounds b = far_block_bounds(spec, key);
+  const glm::vec2 p = glm::min(b.min + (b.max - b.min) * glm::vec2(site.draw(jitter_x_draw), site.draw(jitter_z_draw)), b.max);
+  const LandscapeTerrain terrain(spec.terrain, spec.seed);
+  const float height = terrain.height(p.x, p.y);
+  if (!grows_at(spec, terrain, key.layer, species, p, height)) return std::nullopt;
+  return make_plant(layer.species[static_cast<std::size_t>(species)], species, {p.x, height, p.y}, site);
+}
+
 float expected_surface(const LandscapeSpec& spec, const CellKey& key) {
   if (!in_landscape(spec, key)) return 0.0f;
   const LandscapeLayer& layer = layer_of(spec, key);
@@ -145,10 +184,8 @@ float expected_surface(const LandscapeSpec& spec, const CellKey& key) {
   float per_plant = 0.0f;
   for (std::size_t s = 0; s < layer.species.size(); ++s) {
     const LandscapeSpecies& species = layer.species[s];
-    // Over a uniform [a, b], the mean of the scale's square is (a² + ab + b²) / 3.
-    const float mean_square_scale = (species.scale.x * species.scale.x + species.scale.x * species.scale.y + species.scale.y * species.scale.y) / 3.0f;
     per_plant += species.weight / layer.total_weight() * growing_share(spec, terrain, key.layer, static_cast<int>(s), inside, 4) *
-                 species.surface * mean_square_scale;
+                 species.surface * mean_square_scale(species);
   }
   const glm::vec2 extent = inside.max - inside.min;
   return layer.density * extent.x * extent.y * per_plant;

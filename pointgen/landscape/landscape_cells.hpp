@@ -5,6 +5,7 @@
 
 #include <compare>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace pointgen {
@@ -59,6 +60,23 @@ CellSites cell_sites(const LandscapeLayer& layer);
 // bytes whatever was made before, in whichever order, on whichever thread. Empty for a key
 // outside the landscape.
 std::vector<LandscapePlant> generate_cell(const LandscapeSpec& spec, const CellKey& key);
+
+// A far block of a layer's cells (2^level × 2^level of them from cell (x, z) · 2^level on) is
+// drawn by candidates instead of its plants (LandscapePool): candidate `index` stands anywhere in
+// the block, of a species picked by its share of the layer's surface were every species to grow
+// everywhere (weight × surface × mean squared scale); nothing where that species does not grow.
+// So candidates that become plants follow the layer's surface where it grows, each from
+// hash32(seed, layer, level, x, z, index) alone.
+struct FarBlockKey {
+  int layer = 0, level = 0;
+  std::int32_t x = 0, z = 0;
+  auto operator<=>(const FarBlockKey&) const = default;
+};
+CellBounds far_block_bounds(const LandscapeSpec& spec, const FarBlockKey& key);  // clamped to the area
+std::optional<LandscapePlant> far_candidate(const LandscapeSpec& spec, const FarBlockKey& key, std::uint32_t index);
+// m² of the layer's plants' surface per m² of ground were every species to grow everywhere: the
+// candidates a block needs for n points a square metre of surface.
+float open_surface_density(const LandscapeSpec& spec, int layer);
 
 // The plants' expected surface in m² (count × each species' surface × its mean squared scale),
 // with each species' rules probed at 4 × 4 points instead of at every site: for cells too far to

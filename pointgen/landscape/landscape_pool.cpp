@@ -1,29 +1,62 @@
 #include "pointgen/landscape/landscape_pool.hpp"
 
+#include "pointgen/landscape/hash32.hpp"
+#include "pointgen/landscape/landscape_terrain.hpp"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace pointgen {
-namespace {
 
-struct NearCell {
+struct LandscapePool::Candidate {
   float distance;
-  CellKey key;
-  auto operator<=>(const NearCell&) const = default;
+  std::optional<CellKey> cell;  // or else the block
+  ChosenBlock block;
+  bool operator<(const Candidate& o) const {
+    if (distance != o.distance) return distance < o.distance;
+    if (cell.has_value() != o.cell.has_value()) return cell.has_value();
+    return cell ? *cell < *o.cell : block < o.block;
+  }
 };
 
-// Every layer's cells within its reach of the eye, nearest first, ties in key order.
-std::vector<NearCell> cells_by_distance(const LandscapeSpec& spec, const std::vector<float>& reach, glm::vec2 eye) {
-  std::vector<NearCell> cells;
-  for (std::size_t layer = 0; layer < spec.layers.size(); ++layer) {
-    for (const CellKey& key : cells_within(spec, static_cast<int>(layer), eye, reach[layer])) {
-      const CellBounds b = cell_bounds(spec, key);
-      cells.push_back({glm::distance(glm::clamp(eye, b.min, b.max), eye), key});
+namespace {
+
+constexpr std::uint32_t sparse_domain = 0x73706172u;  // "spar"
+// Metres above the highest hill a plant may reach, for culling blocks against the view.
+constexpr float tallest_plant = 100.0f;
+// A far block is split while wider than this share of its distance from the eye: the density
+// formula's distance is the block centre's, within ±12 % of any of its plants'.
+constexpr float block_share_of_distance = 0.25f;
+// A block's candidates come in steps of a quarter octave, so that the eye moving a little changes
+// no block.
+constexpr float steps_an_octave = 4.0f;
+
+float distance_to(glm::vec2 p, const CellBounds& b) { return glm::distance(glm::clamp(p, b.min, b.max), p); }
+
+// Whether any of the box's corners may be seen: not all beyond one plane of the clip volume.
+bool in_view(const glm::mat4& view_projection, const glm::vec3& lo, const glm::vec3& hi) {
+  std::array<glm::vec4, 8> clip;
+  for (int c = 0; c < 8; ++c) {
+    clip[static_cast<std::size_t>(c)] = view_projection * glm::vec4((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z, 1.0f);
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const float sign : {-1.0f, 1.0f}) {
+      const bool outside = std::all_of(clip.begin(), clip.end(), [&](const glm::vec4& p) { return sign * p[axis] > p.w; });
+      if (outside) return false;
     }
   }
-  std::sort(cells.begin(), cells.end());
-  return cells;
+  return true;
+}
+
+// The candidates for n points: n rounded up to a quarter octave; below one, one candidate with
+// probability n (by the block's own hash), so that far blocks are drawn on average as asked.
+std::uint32_t candidates_for(float n, std::uint32_t block_hash) {
+  if (n < 1.0f) return unit_float(block_hash) < n ? 1u : 0u;
+  const float steps = std::ceil(steps_an_octave * std::log2(n));
+  return static_cast<std::uint32_t>(std::ceil(std::exp2(steps / steps_an_octave)));
 }
 
 }  // namespace
@@ -51,6 +84,54 @@ std::size_t LandscapePool::most_plants_in_reach(const LandscapeSpec& spec, const
   return static_cast<std::size_t>(std::min(plants, 1e15));
 }
 
+std::vector<LandscapePool::Candidate> LandscapePool::near_cells(glm::vec2 eye) const {
+  std::vector<Candidate> cells;
+  for (std::size_t layer = 0; layer < spec_.layers.size(); ++layer) {
+    for (const CellKey& key : cells_within(spec_, static_cast<int>(layer), eye, reach_[layer])) {
+      cells.push_back({distance_to(eye, cell_bounds(spec_, key)), key, {}});
+    }
+  }
+  return cells;
+}
+
+void LandscapePool::add_far_blocks(const LandscapeView& view, int layer, std::vector<Candidate>& into) const {
+  const float density = open_surface_density(spec_, layer);
+  if (density <= 0.0f || view.points_at_a_metre <= 0.0f) return;
+  const glm::ivec2 count = cell_count(spec_, layer);
+  int top = 0;
+  while ((1 << top) < std::max(count.x, count.y)) ++top;
+  const LandscapeTerrain terrain(spec_.terrain, spec_.seed);
+  const float lowest = -0.5f * spec_.terrain.relief - spec_.terrain.valley_depth;
+  const float highest = 0.5f * spec_.terrain.relief + tallest_plant;
+  const glm::vec2 eye(view.eye.x, view.eye.z);
+  const float reach = reach_[static_cast<std::size_t>(layer)];
+  std::vector<FarBlockKey> open{{layer, top, 0, 0}};
+  while (!open.empty()) {
+    const FarBlockKey key = open.back();
+    open.pop_back();
+    const CellBounds b = far_block_bounds(spec_, key);
+    if (b.min.x >= b.max.x || b.min.y >= b.max.y) continue;  // past the area
+    if (!in_view(view.view_projection, {b.min.x, lowest, b.min.y}, {b.max.x, highest, b.max.y})) continue;
+    const float near = distance_to(eye, b);
+    const float side = std::max(b.max.x - b.min.x, b.max.y - b.min.y);
+    if (near <= reach && key.level == 0) continue;  // a cell made whole
+    if (key.level > 0 && (near <= reach || side > block_share_of_distance * near)) {
+      for (int child = 0; child < 4; ++child) open.push_back({layer, key.level - 1, 2 * key.x + (child & 1), 2 * key.z + (child >> 1)});
+      continue;
+    }
+    const glm::vec2 center = 0.5f * (b.min + b.max);
+    const float d = std::max(glm::distance(view.eye, glm::vec3(center.x, terrain.height(center.x, center.y), center.y)), side);
+    const float area = (b.max.x - b.min.x) * (b.max.y - b.min.y);
+    const float points = view.points_at_a_metre * density * area / (d * d);
+    // Never more candidates than the block has sites: where its plants ask a point or more each,
+    // each candidate draws what its plant asks.
+    const auto sites = static_cast<std::uint32_t>(std::ceil(spec_.layers[static_cast<std::size_t>(layer)].density * area));
+    const std::uint32_t candidates =
+        std::min(sites, candidates_for(points, hash32(spec_.seed, sparse_domain, key.layer, key.level, key.x, key.z)));
+    if (candidates > 0) into.push_back({near, std::nullopt, {key, candidates}});
+  }
+}
+
 const std::vector<LandscapePlant>& LandscapePool::plants_of(const CellKey& key) {
   auto [at, made] = kept_.try_emplace(key);
   if (made) {
@@ -63,54 +144,102 @@ const std::vector<LandscapePlant>& LandscapePool::plants_of(const CellKey& key) 
   return at->second.plants;
 }
 
-bool LandscapePool::fill(glm::vec2 eye) {
+std::size_t LandscapePool::plants_of(const ChosenBlock& block) {
+  KeptBlock& kept = kept_blocks_[block.key];
+  for (; kept.candidates < block.candidates; ++kept.candidates) {
+    if (std::optional<LandscapePlant> plant = far_candidate(spec_, block.key, kept.candidates)) {
+      kept.plants.push_back(*plant);
+      kept.indices.push_back(kept.candidates);
+      ++kept_plants_;
+      ++stats_.plants_made;
+    }
+  }
+  kept.used = fills_;
+  return static_cast<std::size_t>(std::lower_bound(kept.indices.begin(), kept.indices.end(), block.candidates) - kept.indices.begin());
+}
+
+bool LandscapePool::fill(const LandscapeView& view) {
   ++fills_;
   stats_ = {};
+  std::vector<Candidate> candidates = near_cells({view.eye.x, view.eye.z});
+  for (int layer = 0; layer < static_cast<int>(spec_.layers.size()); ++layer) add_far_blocks(view, layer, candidates);
+  std::sort(candidates.begin(), candidates.end());
   std::vector<CellKey> chosen;
-  const std::vector<NearCell> near = cells_by_distance(spec_, reach_, eye);
-  for (std::size_t i = 0; i < near.size(); ++i) {
-    const std::size_t plants = plants_of(near[i].key).size();
+  std::vector<ChosenBlock> blocks;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const Candidate& c = candidates[i];
+    const std::size_t plants = c.cell ? plants_of(*c.cell).size() : plants_of(c.block);
     if (stats_.plants + plants > capacity_) {
-      stats_.cells_left_out = near.size() - i;
+      stats_.cells_left_out = candidates.size() - i;
       break;
     }
     stats_.plants += plants;
-    chosen.push_back(near[i].key);
+    if (c.cell) {
+      chosen.push_back(*c.cell);
+    } else {
+      blocks.push_back(c.block);
+      stats_.far_plants += plants;
+    }
   }
   std::sort(chosen.begin(), chosen.end());
+  std::sort(blocks.begin(), blocks.end());
   stats_.cells = chosen.size();
+  stats_.blocks = blocks.size();
   forget_least_recently_used();
   stats_.plants_kept = kept_plants_;
-  if (chosen == chosen_) return false;
+  if (chosen == chosen_ && blocks == chosen_blocks_) return false;
   chosen_ = std::move(chosen);
+  chosen_blocks_ = std::move(blocks);
   return true;
 }
 
-// Beyond twice the capacity, the cells chosen longest ago go; this fill's stay.
+// Beyond twice the capacity, the cells and blocks chosen longest ago go; this fill's stay.
 void LandscapePool::forget_least_recently_used() {
   if (kept_plants_ <= 2 * capacity_) return;
-  std::vector<std::pair<std::uint64_t, CellKey>> by_use;
+  struct Old {
+    std::uint64_t used;
+    std::optional<CellKey> cell;
+    FarBlockKey block;
+    bool operator<(const Old& o) const { return used < o.used; }
+  };
+  std::vector<Old> by_use;
   for (const auto& [key, kept] : kept_) {
-    if (kept.used != fills_) by_use.emplace_back(kept.used, key);
+    if (kept.used != fills_) by_use.push_back({kept.used, key, {}});
   }
-  std::sort(by_use.begin(), by_use.end());
-  for (const auto& [used, key] : by_use) {
+  for (const auto& [key, kept] : kept_blocks_) {
+    if (kept.used != fills_) by_use.push_back({kept.used, std::nullopt, key});
+  }
+  std::stable_sort(by_use.begin(), by_use.end());
+  for (const Old& old : by_use) {
     if (kept_plants_ <= capacity_) break;
-    const auto at = kept_.find(key);
-    kept_plants_ -= at->second.plants.size();
-    kept_.erase(at);
+    if (old.cell) {
+      const auto at = kept_.find(*old.cell);
+      kept_plants_ -= at->second.plants.size();
+      kept_.erase(at);
+    } else {
+      const auto at = kept_blocks_.find(old.block);
+      kept_plants_ -= at->second.plants.size();
+      kept_blocks_.erase(at);
+    }
   }
 }
 
 std::vector<InstanceTable> LandscapePool::tables() const {
   std::vector<InstanceTable> tables;
   for (std::size_t mesh : meshes_) tables.push_back({mesh, {}, {}, {}});
+  for (std::size_t mesh : meshes_) tables.push_back({mesh, {}, {}, {}, true});
+  const auto add = [&](std::size_t table, const LandscapePlant& plant) {
+    tables[table].transforms.push_back(plant.transform);
+    tables[table].tints.push_back(plant.tint);
+    tables[table].seeds.push_back(plant.seed);
+  };
   for (const CellKey& key : chosen_) {
-    for (const LandscapePlant& plant : kept_.at(key).plants) {
-      InstanceTable& table = tables[first_species_[static_cast<std::size_t>(key.layer)] + plant.species];
-      table.transforms.push_back(plant.transform);
-      table.tints.push_back(plant.tint);
-      table.seeds.push_back(plant.seed);
+    for (const LandscapePlant& plant : kept_.at(key).plants) add(first_species_[static_cast<std::size_t>(key.layer)] + plant.species, plant);
+  }
+  for (const ChosenBlock& block : chosen_blocks_) {
+    const KeptBlock& kept = kept_blocks_.at(block.key);
+    for (std::size_t i = 0; i < kept.indices.size() && kept.indices[i] < block.candidates; ++i) {
+      add(meshes_.size() + first_species_[static_cast<std::size_t>(block.key.layer)] + kept.plants[i].species, kept.plants[i]);
     }
   }
   return tables;

@@ -119,6 +119,7 @@ void cover_polygons(CoverageGrid& coverage, const SampledMesh& mesh, const glm::
 
 // The candidate's threshold in [0, 1) for rounding its count: fixed per instance and part.
 float rounding(const InstanceTable& table, const Candidate& c, const SampledMesh& mesh) {
+  if (table.rounds_up) return InstanceTable::round_up_threshold;
   const std::uint64_t seed = table.seeds.size() > c.instance ? table.seeds[c.instance] : c.instance;
   return Random(c.part ? derive_seed(seed, static_cast<std::uint64_t>(c.part - mesh.parts.data()) + 1) : seed).uniform();
 }
