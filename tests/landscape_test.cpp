@@ -8,6 +8,7 @@
 #include "pointgen/landscape/landscape_terrain.hpp"
 #include "pointgen/random.hpp"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include <cstring>
 #include <ctime>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <thread>
 
@@ -477,6 +479,113 @@ TEST(LandscapePool, MemoryIsSetByTheReachNotByTheArea) {
     EXPECT_LE(most_kept, most) << size;
     EXPECT_GT(most_kept, most / 4) << size << ": the flight kept cells";
   }
+}
+
+// The forest's trees alone, seen from 30 m above its middle looking north over it at 960 × 540
+// with k = 2.5: far blocks from 200 m out.
+struct FarView {
+  LandscapeSpec spec = [] {
+    LandscapeSpec s = forest();
+    s.layers.resize(1);
+    return s;
+  }();
+  const std::vector<float> reach{200.0f};
+  const std::vector<std::size_t> meshes{10, 11};
+  LandscapeView view = [] {
+    const glm::vec3 eye(0.0f, 30.0f, 400.0f);
+    const float pixels_per_radian = 270.0f / std::tan(glm::radians(30.0f));
+    return LandscapeView{eye, glm::perspective(glm::radians(60.0f), 16.0f / 9.0f, 1.0f, 5000.0f) * glm::lookAt(eye, glm::vec3(0.0f, 0.0f, -600.0f), glm::vec3(0, 1, 0)),
+                         0.5f * 2.5f * pixels_per_radian * pixels_per_radian};
+  }();
+};
+
+// The blocks and the cells made whole share no ground; a block is a single cell or at most a
+// quarter of its distance across; and every cell beyond the reach inside the view's frustum
+// belongs to a block (where every block has candidates: at a far higher density of points).
+TEST(LandscapePool, FarBlocksAndNearCellsShareNoGroundAndCoverTheViewBeyondTheReach) {
+  FarView f;
+  f.view.points_at_a_metre *= 1e6f;
+  LandscapePool pool(f.spec, f.reach, f.meshes, 1u << 24);
+  pool.fill(f.view);
+  ASSERT_GT(pool.blocks().size(), 10u);
+  EXPECT_EQ(pool.stats().cells_left_out, 0u);
+  const glm::vec2 eye(f.view.eye.x, f.view.eye.z);
+  std::set<std::pair<int, int>> covered;
+  for (const LandscapePool::Block& block : pool.blocks()) {
+    const CellBounds b = far_block_bounds(f.spec, block.key);
+    const float near = glm::distance(glm::clamp(eye, b.min, b.max), eye);
+    EXPECT_GT(near, 200.0f) << "beyond the reach";
+    if (block.key.level > 0) {
+      EXPECT_LE(std::max(b.max.x - b.min.x, b.max.y - b.min.y), 0.25f * near + 1e-3f);
+    }
+    const int cells = 1 << block.key.level;
+    for (int z = block.key.z * cells; z < (block.key.z + 1) * cells; ++z) {
+      for (int x = block.key.x * cells; x < (block.key.x + 1) * cells; ++x) {
+        EXPECT_TRUE(covered.insert({x, z}).second) << "cell " << x << ", " << z << " in two blocks";
+      }
+    }
+  }
+  const glm::ivec2 count = cell_count(f.spec, 0);
+  std::size_t in_view = 0;
+  for (int z = 0; z < count.y; ++z) {
+    for (int x = 0; x < count.x; ++x) {
+      const CellBounds b = cell_bounds(f.spec, {0, x, z});
+      if (glm::distance(glm::clamp(eye, b.min, b.max), eye) <= 200.0f) continue;
+      // In view where its middle at ground level projects inside the frame, well in front.
+      const glm::vec2 middle = 0.5f * (b.min + b.max);
+      const glm::vec4 clip = f.view.view_projection * glm::vec4(middle.x, 0.0f, middle.y, 1.0f);
+      if (clip.w <= 0.0f || glm::any(glm::greaterThan(glm::abs(glm::vec2(clip) / clip.w), glm::vec2(0.9f)))) continue;
+      ++in_view;
+      EXPECT_TRUE(covered.count({x, z})) << "cell " << x << ", " << z;
+    }
+  }
+  EXPECT_GT(in_view, 20u);
+}
+
+// The far blocks' plants (a point each) against the points their cells' plants would ask, each
+// by the density formula at its own distance and surface: the same within a fifth, though the
+// blocks count from their centres, round up to a quarter octave and pick their own sites.
+TEST(LandscapePool, FarBlocksDrawAboutThePointsTheirPlantsWouldAsk) {
+  const FarView f;
+  LandscapePool pool(f.spec, f.reach, f.meshes, 1u << 24);
+  pool.fill(f.view);
+  double asked = 0.0;
+  for (const LandscapePool::Block& block : pool.blocks()) {
+    const int cells = 1 << block.key.level;
+    for (int z = block.key.z * cells; z < (block.key.z + 1) * cells; ++z) {
+      for (int x = block.key.x * cells; x < (block.key.x + 1) * cells; ++x) {
+        for (const LandscapePlant& plant : generate_cell(f.spec, {0, x, z})) {
+          const float scale = uniform_scale(glm::mat4(plant.transform));
+          const float surface = f.spec.layers[0].species[plant.species].surface * scale * scale;
+          const float d = glm::distance(f.view.eye, plant.transform[3]);
+          asked += f.view.points_at_a_metre * surface / (d * d);
+        }
+      }
+    }
+  }
+  ASSERT_GT(asked, 1000.0);
+  // Each far plant draws what the formula asks of it, rounded up: one point. Near the reach, where
+  // trees ask more than a point each, a block takes its sites' worth (whole) and its plants round
+  // as plants do: by their expected count here.
+  const std::vector<InstanceTable> tables = pool.tables();
+  EXPECT_TRUE(tables[2].rounds_up && tables[3].rounds_up);
+  EXPECT_EQ(tables[2].size() + tables[3].size(), pool.stats().far_plants);
+  // The near cells' plants come first in their tables.
+  std::size_t near[4] = {0, 0, 0, 0};
+  for (const CellKey& key : cells_within(f.spec, 0, {f.view.eye.x, f.view.eye.z}, 200.0f)) {
+    for (const LandscapePlant& plant : generate_cell(f.spec, key)) ++near[plant.species];
+  }
+  double drawn = 0.0;
+  for (std::size_t t = 0; t < 4; ++t) {
+    for (std::size_t i = near[t]; i < tables[t].size(); ++i) {
+      const float scale = uniform_scale(tables[t].transform(i));
+      const float surface = f.spec.layers[0].species[t % 2].surface * scale * scale;
+      const float d = glm::distance(f.view.eye, tables[t].transforms[i][3]);
+      const float points = f.view.points_at_a_metre * surface / (d * d);
+      drawn += tables[t].rounds_up ? std::floor(points + InstanceTable::round_up_threshold) : points;
+    }
+  }
+  EXPECT_NEAR(drawn, asked, 0.2 * asked) << pool.blocks().size() << " blocks, " << pool.stats().far_plants << " plants";
 }
 
 TEST(LandscapeSpec, CheckNamesTheFirstFieldOutOfRange) {

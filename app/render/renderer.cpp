@@ -535,6 +535,8 @@ void Renderer::place_landscapes(const shadow::Camera& camera) {
     stats_.landscape.plants_made += made.plants_made;
     stats_.landscape.cells_left_out += made.cells_left_out;
     stats_.landscape.plants_kept += made.plants_kept;
+    stats_.landscape.blocks += made.blocks;
+    stats_.landscape.far_plants += made.far_plants;
     if (!changed) continue;
     std::vector<pointgen::InstanceTable> tables = pool.tables();
     for (std::size_t s = 0; s < tables.size(); ++s) {

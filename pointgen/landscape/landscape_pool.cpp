@@ -14,7 +14,7 @@ namespace pointgen {
 struct LandscapePool::Candidate {
   float distance;
   std::optional<CellKey> cell;  // or else the block
-  ChosenBlock block;
+  Block block;
   bool operator<(const Candidate& o) const {
     if (distance != o.distance) return distance < o.distance;
     if (cell.has_value() != o.cell.has_value()) return cell.has_value();
@@ -51,12 +51,12 @@ bool in_view(const glm::mat4& view_projection, const glm::vec3& lo, const glm::v
   return true;
 }
 
-// The candidates for n points: n rounded up to a quarter octave; below one, one candidate with
-// probability n (by the block's own hash), so that far blocks are drawn on average as asked.
+// The candidates for n points: n rounded to the nearest quarter octave; below one, one candidate
+// with probability n (by the block's own hash), so that far blocks are drawn on average as asked.
 std::uint32_t candidates_for(float n, std::uint32_t block_hash) {
   if (n < 1.0f) return unit_float(block_hash) < n ? 1u : 0u;
-  const float steps = std::ceil(steps_an_octave * std::log2(n));
-  return static_cast<std::uint32_t>(std::ceil(std::exp2(steps / steps_an_octave)));
+  const float steps = std::round(steps_an_octave * std::log2(n));
+  return static_cast<std::uint32_t>(std::lround(std::exp2(steps / steps_an_octave)));
 }
 
 }  // namespace
@@ -126,9 +126,8 @@ void LandscapePool::add_far_blocks(const LandscapeView& view, int layer, std::ve
     // Never more candidates than the block has sites: where its plants ask a point or more each,
     // each candidate draws what its plant asks.
     const auto sites = static_cast<std::uint32_t>(std::ceil(spec_.layers[static_cast<std::size_t>(layer)].density * area));
-    const std::uint32_t candidates =
-        std::min(sites, candidates_for(points, hash32(spec_.seed, sparse_domain, key.layer, key.level, key.x, key.z)));
-    if (candidates > 0) into.push_back({near, std::nullopt, {key, candidates}});
+    const std::uint32_t candidates = candidates_for(points, hash32(spec_.seed, sparse_domain, key.layer, key.level, key.x, key.z));
+    if (candidates > 0) into.push_back({near, std::nullopt, {key, std::min(candidates, sites), candidates >= sites}});
   }
 }
 
@@ -144,7 +143,7 @@ const std::vector<LandscapePlant>& LandscapePool::plants_of(const CellKey& key) 
   return at->second.plants;
 }
 
-std::size_t LandscapePool::plants_of(const ChosenBlock& block) {
+std::size_t LandscapePool::plants_of(const Block& block) {
   KeptBlock& kept = kept_blocks_[block.key];
   for (; kept.candidates < block.candidates; ++kept.candidates) {
     if (std::optional<LandscapePlant> plant = far_candidate(spec_, block.key, kept.candidates)) {
@@ -165,7 +164,7 @@ bool LandscapePool::fill(const LandscapeView& view) {
   for (int layer = 0; layer < static_cast<int>(spec_.layers.size()); ++layer) add_far_blocks(view, layer, candidates);
   std::sort(candidates.begin(), candidates.end());
   std::vector<CellKey> chosen;
-  std::vector<ChosenBlock> blocks;
+  std::vector<Block> blocks;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const Candidate& c = candidates[i];
     const std::size_t plants = c.cell ? plants_of(*c.cell).size() : plants_of(c.block);
@@ -178,7 +177,7 @@ bool LandscapePool::fill(const LandscapeView& view) {
       chosen.push_back(*c.cell);
     } else {
       blocks.push_back(c.block);
-      stats_.far_plants += plants;
+      stats_.far_plants += c.block.whole ? 0 : plants;
     }
   }
   std::sort(chosen.begin(), chosen.end());
@@ -236,11 +235,10 @@ std::vector<InstanceTable> LandscapePool::tables() const {
   for (const CellKey& key : chosen_) {
     for (const LandscapePlant& plant : kept_.at(key).plants) add(first_species_[static_cast<std::size_t>(key.layer)] + plant.species, plant);
   }
-  for (const ChosenBlock& block : chosen_blocks_) {
+  for (const Block& block : chosen_blocks_) {
     const KeptBlock& kept = kept_blocks_.at(block.key);
-    for (std::size_t i = 0; i < kept.indices.size() && kept.indices[i] < block.candidates; ++i) {
-      add(meshes_.size() + first_species_[static_cast<std::size_t>(block.key.layer)] + kept.plants[i].species, kept.plants[i]);
-    }
+    const std::size_t first = (block.whole ? 0 : meshes_.size()) + first_species_[static_cast<std::size_t>(block.key.layer)];
+    for (std::size_t i = 0; i < kept.indices.size() && kept.indices[i] < block.candidates; ++i) add(first + kept.plants[i].species, kept.plants[i]);
   }
   return tables;
 }

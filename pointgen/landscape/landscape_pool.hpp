@@ -33,8 +33,9 @@ class LandscapePool {
 
   // Chooses the cells and blocks for a view; whether they changed since the last fill.
   bool fill(const LandscapeView& view);
-  // Per species, layer after layer, the chosen cells' plants cell by cell in key order; then per
-  // species the far blocks' plants, block by block. Made anew, so that the caller keeps them.
+  // Per species, layer after layer, the chosen cells' plants cell by cell in key order, and the
+  // whole blocks' block by block; then per species the other far blocks' plants, block by block.
+  // Made anew, so that the caller keeps them.
   std::vector<InstanceTable> tables() const;
   std::size_t table_count() const { return 2 * meshes_.size(); }
 
@@ -46,9 +47,19 @@ class LandscapePool {
     std::size_t cells_left_out = 0;  // cells and blocks in view or reach, past the capacity
     std::size_t plants_kept = 0;     // in the made cells and blocks held after this fill
     std::size_t blocks = 0;          // far blocks chosen
-    std::size_t far_plants = 0;      // in them
+    std::size_t far_plants = 0;      // in them, drawn a point each (not whole)
   };
   const Stats& stats() const { return stats_; }
+  // The far blocks chosen, in key order, and their candidates (the first of each one's sequence);
+  // `whole` where they are as many as its sites, whose plants then ask a point or more each and
+  // round as plants made whole do.
+  struct Block {
+    FarBlockKey key;
+    std::uint32_t candidates;
+    bool whole;
+    auto operator<=>(const Block&) const = default;
+  };
+  const std::vector<Block>& blocks() const { return chosen_blocks_; }
   std::size_t capacity() const { return capacity_; }
 
   // The most plants the cells within every layer's reach of any one eye can hold (every site
@@ -70,16 +81,11 @@ class LandscapePool {
     std::uint32_t candidates = 0;
     std::uint64_t used = 0;
   };
-  struct ChosenBlock {
-    FarBlockKey key;
-    std::uint32_t candidates;
-    auto operator<=>(const ChosenBlock&) const = default;
-  };
   struct Candidate;  // a cell or a block, by distance
   std::vector<Candidate> near_cells(glm::vec2 eye) const;
   void add_far_blocks(const LandscapeView& view, int layer, std::vector<Candidate>& into) const;
   const std::vector<LandscapePlant>& plants_of(const CellKey& key);
-  std::size_t plants_of(const ChosenBlock& block);  // makes its candidates; how many grew
+  std::size_t plants_of(const Block& block);  // makes its candidates; how many grew
   void forget_least_recently_used();
 
   LandscapeSpec spec_;
@@ -88,7 +94,7 @@ class LandscapePool {
   std::vector<std::size_t> first_species_;  // per layer, its first table
   std::size_t capacity_;
   std::vector<CellKey> chosen_;  // in key order
-  std::vector<ChosenBlock> chosen_blocks_;  // in key order
+  std::vector<Block> chosen_blocks_;  // in key order
   std::map<CellKey, Kept> kept_;
   std::map<FarBlockKey, KeptBlock> kept_blocks_;
   std::size_t kept_plants_ = 0;
