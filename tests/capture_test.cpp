@@ -130,7 +130,7 @@ TEST_P(ShippedScene, CapturesWithShadowsInView) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScene,
-                         testing::Combine(testing::Values("courtyard", "square", "street", "chess", "single"),
+                         testing::Combine(testing::Values("courtyard", "square", "street", "chess", "single", "landscape"),
                                           testing::Values("egl", "osmesa")),
                          [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
 

@@ -80,7 +80,7 @@ nlohmann::json landscape_figures(const Renderer& renderer) {
   if (!renderer.has_landscapes()) return nullptr;
   const pointgen::LandscapePool::Stats& l = renderer.stats().landscape;
   return {{"cells", l.cells}, {"plants", l.plants}, {"cells_made", l.cells_made}, {"plants_made", l.plants_made},
-          {"cells_left_out", l.cells_left_out}, {"plants_kept", l.plants_kept}, {"blocks", l.blocks}, {"far_plants", l.far_plants}};
+          {"cells_left_out", l.cells_left_out}, {"plants_kept", l.plants_kept}, {"blocks", l.blocks}, {"far_plants", l.far_plants}, {"far_share", l.far_share}};
 }
 
 // One frame's figures for --stats (names as docs/figures.md defines them).

@@ -537,6 +537,7 @@ void Renderer::place_landscapes(const shadow::Camera& camera) {
     stats_.landscape.plants_kept += made.plants_kept;
     stats_.landscape.blocks += made.blocks;
     stats_.landscape.far_plants += made.far_plants;
+    stats_.landscape.far_share = std::min(stats_.landscape.far_share, made.far_share);
     if (!changed) continue;
     std::vector<pointgen::InstanceTable> tables = pool.tables();
     for (std::size_t s = 0; s < tables.size(); ++s) {

@@ -38,6 +38,7 @@ pointgen::LandscapeSpecies read_layer_species(const JsonField& item, const std::
     mesh = pointgen::build_plant(grown, seed);
   }
   s.surface = pointgen::surface_area(mesh);
+  if (const pointgen::Bounds b = mesh.bounds(); !b.empty()) s.height = std::max(b.max.y, 0.0f);
   if (auto f = item.optional("weight")) s.weight = f->number_f(0, 1e6);
   if (auto f = item.optional("altitude")) s.altitude = f->range(-1e6, 1e6);
   if (auto f = item.optional("slope_max_deg")) s.slope_max_deg = f->number_f(0, 90);

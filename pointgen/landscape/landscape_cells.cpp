@@ -153,6 +153,13 @@ float open_surface_density(const LandscapeSpec& spec, int layer) {
   return l.density * per_plant;
 }
 
+float mean_height(const LandscapeSpec& spec, int layer) {
+  const LandscapeLayer& l = spec.layers[static_cast<std::size_t>(layer)];
+  float height = 0.0f;
+  for (const LandscapeSpecies& s : l.species) height += s.weight / l.total_weight() * s.height * 0.5f * (s.scale.x + s.scale.y);
+  return height;
+}
+
 std::optional<LandscapePlant> far_candidate(const LandscapeSpec& spec, const FarBlockKey& key, std::uint32_t index) {
   const LandscapeLayer& layer = layer_of(spec, {key.layer, 0, 0});
   const Site site{hash32(spec.seed, far_domain, key.layer, key.level, key.x, key.z, index)};

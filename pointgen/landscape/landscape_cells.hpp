@@ -77,6 +77,8 @@ std::optional<LandscapePlant> far_candidate(const LandscapeSpec& spec, const Far
 // m² of the layer's plants' surface per m² of ground were every species to grow everywhere: the
 // candidates a block needs for n points a square metre of surface.
 float open_surface_density(const LandscapeSpec& spec, int layer);
+// The layer's plants' mean height in metres, by the species' weights and mean scales.
+float mean_height(const LandscapeSpec& spec, int layer);
 
 // The plants' expected surface in m² (count × each species' surface × its mean squared scale),
 // with each species' rules probed at 4 × 4 points instead of at every site: for cells too far to

@@ -11,17 +11,6 @@
 
 namespace pointgen {
 
-struct LandscapePool::Candidate {
-  float distance;
-  std::optional<CellKey> cell;  // or else the block
-  Block block;
-  bool operator<(const Candidate& o) const {
-    if (distance != o.distance) return distance < o.distance;
-    if (cell.has_value() != o.cell.has_value()) return cell.has_value();
-    return cell ? *cell < *o.cell : block < o.block;
-  }
-};
-
 namespace {
 
 constexpr std::uint32_t sparse_domain = 0x73706172u;  // "spar"
@@ -84,18 +73,61 @@ std::size_t LandscapePool::most_plants_in_reach(const LandscapeSpec& spec, const
   return static_cast<std::size_t>(std::min(plants, 1e15));
 }
 
-std::vector<LandscapePool::Candidate> LandscapePool::near_cells(glm::vec2 eye) const {
-  std::vector<Candidate> cells;
+std::vector<CellKey> LandscapePool::take_near_cells(glm::vec2 eye) {
+  struct Near {
+    float distance;
+    CellKey key;
+    auto operator<=>(const Near&) const = default;
+  };
+  std::vector<Near> near;
   for (std::size_t layer = 0; layer < spec_.layers.size(); ++layer) {
     for (const CellKey& key : cells_within(spec_, static_cast<int>(layer), eye, reach_[layer])) {
-      cells.push_back({distance_to(eye, cell_bounds(spec_, key)), key, {}});
+      near.push_back({distance_to(eye, cell_bounds(spec_, key)), key});
     }
   }
-  return cells;
+  std::sort(near.begin(), near.end());
+  std::vector<CellKey> chosen;
+  for (std::size_t i = 0; i < near.size(); ++i) {
+    const std::size_t plants = plants_of(near[i].key).size();
+    if (stats_.plants + plants > capacity_) {
+      stats_.cells_left_out = near.size() - i;
+      break;
+    }
+    stats_.plants += plants;
+    chosen.push_back(near[i].key);
+  }
+  std::sort(chosen.begin(), chosen.end());
+  return chosen;
 }
 
-void LandscapePool::add_far_blocks(const LandscapeView& view, int layer, std::vector<Candidate>& into) const {
-  const float density = open_surface_density(spec_, layer);
+std::vector<LandscapePool::Block> LandscapePool::take_far_blocks(const LandscapeView& view) {
+  const std::size_t room = capacity_ - stats_.plants;
+  std::vector<Block> blocks;
+  for (int layer = 0; layer < static_cast<int>(spec_.layers.size()); ++layer) add_far_blocks(view, layer, 1.0f, blocks);
+  std::size_t asked = 0;
+  for (const Block& block : blocks) asked += block.candidates;
+  if (asked > room) {  // fewer points for every block, rather than none for the farthest
+    stats_.far_share = static_cast<float>(room) / static_cast<float>(asked);
+    blocks.clear();
+    for (int layer = 0; layer < static_cast<int>(spec_.layers.size()); ++layer) add_far_blocks(view, layer, stats_.far_share, blocks);
+  }
+  std::sort(blocks.begin(), blocks.end());
+  std::vector<Block> taken;
+  for (const Block& block : blocks) {
+    const std::size_t plants = plants_of(block);
+    if (stats_.plants + plants > capacity_) {  // rounding may ask a few more than the share
+      ++stats_.cells_left_out;
+      continue;
+    }
+    stats_.plants += plants;
+    stats_.far_plants += block.whole ? 0 : plants;
+    taken.push_back(block);
+  }
+  return taken;
+}
+
+void LandscapePool::add_far_blocks(const LandscapeView& view, int layer, float share, std::vector<Block>& into) const {
+  const float density = open_surface_density(spec_, layer), height = mean_height(spec_, layer);
   if (density <= 0.0f || view.points_at_a_metre <= 0.0f) return;
   const glm::ivec2 count = cell_count(spec_, layer);
   int top = 0;
@@ -120,14 +152,19 @@ void LandscapePool::add_far_blocks(const LandscapeView& view, int layer, std::ve
       continue;
     }
     const glm::vec2 center = 0.5f * (b.min + b.max);
-    const float d = std::max(glm::distance(view.eye, glm::vec3(center.x, terrain.height(center.x, center.y), center.y)), side);
+    const float ground = terrain.height(center.x, center.y);
+    const float d = std::max(glm::distance(view.eye, glm::vec3(center.x, ground, center.y)), side);
     const float area = (b.max.x - b.min.x) * (b.max.y - b.min.y);
-    const float points = view.points_at_a_metre * density * area / (d * d);
+    // The plants of a block overlap each other on the screen: it asks no more than k points a
+    // pixel of its ground as the eye sees it, and of its plants' height seen from the side.
+    const float sine = std::clamp((view.eye.y - ground) / d, 0.0f, 1.0f);
+    const float seen = area * sine + side * height * std::sqrt(1.0f - sine * sine);
+    const float points = share * view.points_at_a_metre * std::min(density * area, 2.0f * seen) / (d * d);
     // Never more candidates than the block has sites: where its plants ask a point or more each,
     // each candidate draws what its plant asks.
     const auto sites = static_cast<std::uint32_t>(std::ceil(spec_.layers[static_cast<std::size_t>(layer)].density * area));
     const std::uint32_t candidates = candidates_for(points, hash32(spec_.seed, sparse_domain, key.layer, key.level, key.x, key.z));
-    if (candidates > 0) into.push_back({near, std::nullopt, {key, std::min(candidates, sites), candidates >= sites}});
+    if (candidates > 0) into.push_back({key, std::min(candidates, sites), candidates >= sites});
   }
 }
 
@@ -160,28 +197,8 @@ std::size_t LandscapePool::plants_of(const Block& block) {
 bool LandscapePool::fill(const LandscapeView& view) {
   ++fills_;
   stats_ = {};
-  std::vector<Candidate> candidates = near_cells({view.eye.x, view.eye.z});
-  for (int layer = 0; layer < static_cast<int>(spec_.layers.size()); ++layer) add_far_blocks(view, layer, candidates);
-  std::sort(candidates.begin(), candidates.end());
-  std::vector<CellKey> chosen;
-  std::vector<Block> blocks;
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    const Candidate& c = candidates[i];
-    const std::size_t plants = c.cell ? plants_of(*c.cell).size() : plants_of(c.block);
-    if (stats_.plants + plants > capacity_) {
-      stats_.cells_left_out = candidates.size() - i;
-      break;
-    }
-    stats_.plants += plants;
-    if (c.cell) {
-      chosen.push_back(*c.cell);
-    } else {
-      blocks.push_back(c.block);
-      stats_.far_plants += c.block.whole ? 0 : plants;
-    }
-  }
-  std::sort(chosen.begin(), chosen.end());
-  std::sort(blocks.begin(), blocks.end());
+  std::vector<CellKey> chosen = take_near_cells({view.eye.x, view.eye.z});
+  std::vector<Block> blocks = take_far_blocks(view);
   stats_.cells = chosen.size();
   stats_.blocks = blocks.size();
   forget_least_recently_used();

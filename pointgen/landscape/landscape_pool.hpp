@@ -22,7 +22,8 @@ struct LandscapeView {
 // blocks of 2^level × 2^level cells, each at most a quarter of its distance across, and each
 // block is drawn by as many candidates as points its surface asks (far_candidate): plants that
 // round up to one point each (InstanceTable::rounds_up), so that a block costs its points, not
-// its plants. Cells and blocks are taken nearest first, as many as `capacity` plants hold. The
+// its plants. Cells are taken nearest first, as many as `capacity` plants hold; the blocks share
+// what is left, each with fewer candidates where they would not all fit. The
 // tables follow from the view alone, whatever was asked before: made cells and candidates are
 // kept (the least recently used go first beyond twice the capacity) only so that the next view
 // need not make them again.
@@ -44,10 +45,13 @@ class LandscapePool {
     std::size_t plants = 0;          // in the chosen cells and blocks
     std::size_t cells_made = 0;      // by this fill, not found kept
     std::size_t plants_made = 0;     // in those, and the blocks' new candidates that grew
-    std::size_t cells_left_out = 0;  // cells and blocks in view or reach, past the capacity
+    std::size_t cells_left_out = 0;  // cells within reach and blocks in view past the capacity
     std::size_t plants_kept = 0;     // in the made cells and blocks held after this fill
     std::size_t blocks = 0;          // far blocks chosen
     std::size_t far_plants = 0;      // in them, drawn a point each (not whole)
+    // The share of the points far blocks ask that they draw: below 1 where the capacity left after
+    // the near cells is too small, every block then drawing that share.
+    float far_share = 1.0f;
   };
   const Stats& stats() const { return stats_; }
   // The far blocks chosen, in key order, and their candidates (the first of each one's sequence);
@@ -81,9 +85,11 @@ class LandscapePool {
     std::uint32_t candidates = 0;
     std::uint64_t used = 0;
   };
-  struct Candidate;  // a cell or a block, by distance
-  std::vector<Candidate> near_cells(glm::vec2 eye) const;
-  void add_far_blocks(const LandscapeView& view, int layer, std::vector<Candidate>& into) const;
+  // The cells within reach, nearest first, as many as the capacity holds (in key order).
+  std::vector<CellKey> take_near_cells(glm::vec2 eye);
+  // The far blocks in view, with candidates for `share` of the points they ask (in key order).
+  std::vector<Block> take_far_blocks(const LandscapeView& view);
+  void add_far_blocks(const LandscapeView& view, int layer, float share, std::vector<Block>& into) const;
   const std::vector<LandscapePlant>& plants_of(const CellKey& key);
   std::size_t plants_of(const Block& block);  // makes its candidates; how many grew
   void forget_least_recently_used();

@@ -24,6 +24,7 @@ struct LandscapeSpecies {
   // a user's mesh brings its own colours and wants 0.
   float tint_spread = 0.12f;
   float surface = 1.0f;  // m² of the species' mesh at scale 1, for expected_surface()
+  float height = 1.0f;   // metres its mesh stands at scale 1, for far blocks seen from the side
 };
 
 // Plants of one height class (trees, bushes, ground cover) made cell by cell: `density` plants per
