@@ -258,7 +258,8 @@ class ViewSampling {
   bool add_as_aggregate(const InstanceCell& cell, const std::optional<CoverageGrid::Rect>& rect, float transmittance) {
     const InstanceTable& table = tables_[cell.table];
     const SampledMesh& mesh = meshes_[table.mesh];
-    if (mesh.samples == 0) return false;
+    // Instances that each stand for several (rounds_up) are already a far cell's aggregate.
+    if (mesh.samples == 0 || table.rounds_up) return false;
     const glm::vec3 center = 0.5f * (cell.min + cell.max);
     const float radius = 0.5f * glm::length(cell.max - cell.min);
     if (!(radius < aggregate_radius * glm::distance(view_.eye, center))) return false;
