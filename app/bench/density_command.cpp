@@ -12,6 +12,9 @@
 #include "app/file_io.hpp"
 #include "app/gl/context.hpp"
 #include "app/scene/scene_file.hpp"
+#include "pointgen/landscape/landscape_terrain.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -28,6 +31,7 @@ struct Plan {
   std::vector<double> ks;
   std::vector<int> splats;
   std::vector<int> instance_counts;
+  std::vector<double> landscape_plants;  // the shipped landscape's layers over areas holding these
   int polygon_instances_at_most;  // above it the stand is timed with points alone
   int warmup, frames, slow_frames;  // slow_frames: the polygon runs' and the largest stands', after 1 warm-up
   bool temporal_reference;  // the moving camera's change also with every plant as polygons (two slow frames)
@@ -41,10 +45,10 @@ constexpr int reference_samples = 4;
 // k at half, at and at twice the default.
 Plan plan_for(bool quick) {
   const double k = RenderSettings{}.k;
-  if (quick) return {{k}, {2}, {300, 3000}, 300, 1, 3, 1, false};
+  if (quick) return {{k}, {2}, {300, 3000}, {1e6, 1e8}, 300, 1, 3, 1, false};
   // Under 10 minutes here. A polygon frame of 10^5 plants takes over a minute (one of 10^6 would
   // take ten); a point frame of 10^7 about 15 s.
-  return {{0.5 * k, k, 2.0 * k}, {1, 2}, {1000, 10000, 100000, 1000000, 10000000}, 100000, 1, 5, 1, true};
+  return {{0.5 * k, k, 2.0 * k}, {1, 2}, {1000, 10000, 100000, 1000000, 10000000}, {1e6, 1e7, 1e8, 1e9, 1e10}, 100000, 1, 5, 1, true};
 }
 
 // A flat stand of trees and bushes, `count` plants on 250 x 250 m, seen from its edge.
@@ -58,6 +62,23 @@ std::string stand_scene(int count) {
   for (int i = 0; i < 5; ++i) s << (i ? ", " : "") << R"({"species": ")" << species[i] << R"(", "count": )" << count / 5 << "}";
   s << "]}]}";
   return s.str();
+}
+
+// The shipped landscape's layers and terrain over a square holding about `plants`, seen from 12 m
+// above its middle, looking along +x: the same view of the same ground whatever the area, but
+// where the area ends short of it.
+Scene landscape_of(double plants, double memory_budget_bytes) {
+  const InputSource shipped = open_input("landscape", "scenes");
+  nlohmann::json json = nlohmann::json::parse(shipped.text);
+  const Scene full = load_scene(shipped, {memory_budget_bytes});
+  const LandscapeSource& landscape = full.landscapes.at(0);
+  const double per_m2 = full.landscape_plants / (static_cast<double>(landscape.spec.size.x) * landscape.spec.size.y);
+  const double side = std::min(std::sqrt(plants / per_m2), static_cast<double>(pointgen::LandscapeSpec::max_size));
+  json["objects"][0]["size"] = {side, side};
+  const pointgen::LandscapeTerrain terrain(landscape.spec.terrain, landscape.spec.seed);
+  json["camera"]["position"] = {0.0, terrain.height(0.0f, 0.0f) + 12.0, 0.0};
+  json["camera"]["target"] = {200.0, terrain.height(200.0f, -60.0f), -60.0};
+  return load_scene({"landscape", json.dump(), shipped.read_relative}, {memory_budget_bytes});
 }
 
 RenderedFrame grab(Renderer& renderer) { return {renderer.frame().read_color(), renderer.frame().read_depth()}; }
@@ -164,6 +185,25 @@ class DensityBench {
       const Scene scene = load_scene({"stand", stand_scene(count), [](const std::string&) { return std::nullopt; }},
                                      {o_.run.memory_budget_gib * 1024.0 * 1024.0 * 1024.0});
       time_both_ways("scale", scene, "stand", count, progress);
+    }
+  }
+
+  // Landscapes: the same view over areas holding 10^6 to 10^10 plants, made where the view needs
+  // them; what the view costs should not grow with the area.
+  void landscapes(Progress& progress) {
+    for (double plants : plan_.landscape_plants) {
+      const Scene scene = landscape_of(plants, o_.run.memory_budget_gib * 1024.0 * 1024.0 * 1024.0);
+      Renderer renderer(scene, base_);
+      const FrameTiming timing = time_frames(renderer, scene.camera, scene.lights[0], 0.0, plan_.warmup, plan_.frames);
+      add_timing_run("landscape", "landscape", true, 0, timing, renderer.stats());
+      BenchRun& run = results_.runs.back();
+      run.params["plants"] = scene.landscape_plants;
+      run.params["side_m"] = scene.landscapes.at(0).spec.size.x;
+      const pointgen::LandscapePool::Stats& pool = renderer.stats().landscape;
+      run.figures["pool_plants"] = pool.plants;
+      run.figures["far_plants"] = pool.far_plants;
+      run.figures["far_share"] = pool.far_share;
+      progress.step();
     }
   }
 
@@ -303,10 +343,11 @@ int run_density(const DensityOptions& o) {
   DensityBench bench(o, plan);
   const auto with_polygons = std::ranges::count_if(plan.instance_counts, [&](int count) { return plan.timed_as_polygons(count); });
   Progress progress("density: run", plan.ks.size() * plan.splats.size() + 2 + plan.instance_counts.size() +
-                                        static_cast<std::size_t>(with_polygons) + 2);
+                                        static_cast<std::size_t>(with_polygons) + plan.landscape_plants.size() + 2);
   bench.quality(scene, scene_name, progress);
   bench.speed(scene, scene_name, progress);
   bench.scale(progress);
+  bench.landscapes(progress);
   bench.temporal(scene, scene_name, progress);
   bench.paths(scene, scene_name, progress);
   progress.finish();
