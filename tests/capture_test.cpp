@@ -191,6 +191,19 @@ TEST(Density, QuickRunWritesResultsChartsAndReport) {
     if (run["params"]["sweep"] == "scale") scale_runs.emplace(run["params"]["geometry"], run["params"]["instances"]);
   }
   EXPECT_EQ(scale_runs, (std::multiset<std::pair<std::string, int>>{{"points", 300}, {"points", 3000}, {"polygons", 300}}));
+  // The landscape sweep: the same landscape over areas holding 10^6 and 10^8 plants (10 times the
+  // side), each frame drawing plants made for its view.
+  std::vector<std::pair<double, double>> landscapes;  // plants, side
+  for (const auto& run : results["runs"]) {
+    if (run["params"]["sweep"] != "landscape") continue;
+    landscapes.emplace_back(run["params"]["plants"].get<double>(), run["params"]["side_m"].get<double>());
+    EXPECT_GT(run["figures"]["pool_plants"].get<double>(), 1000.0);
+    EXPECT_GT(run["figures"]["points"].get<double>(), 1000.0);
+  }
+  ASSERT_EQ(landscapes.size(), 2u);
+  EXPECT_NEAR(landscapes[0].first, 1e6, 0.05e6);
+  EXPECT_NEAR(landscapes[1].first, 1e8, 0.05e8);
+  EXPECT_NEAR(landscapes[1].second / landscapes[0].second, 10.0, 0.01);
 }
 
 // The paper suite renders each of its figures, measured against the exact reference; in its bias
