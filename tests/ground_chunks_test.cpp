@@ -78,6 +78,7 @@ TEST(GroundChunks, ASquareIsAsLargeToTheEyeNearAsFar) {
 
 // Along every edge where a chunk meets a larger one, each of its vertices lies on the larger
 // chunk's edge: the height the larger chunk's two vertices around it give there, to a millimetre.
+// The mesh is drawn by its chunks: an index range each, in order, inside its box.
 TEST(GroundChunks, NoCrackOpensWhereChunksOfTwoSizesMeet) {
   const LandscapeSpec spec = hills(6000.0f);
   GroundChunks ground(spec, settings);
@@ -85,8 +86,21 @@ TEST(GroundChunks, NoCrackOpensWhereChunksOfTwoSizesMeet) {
   std::size_t checked = 0;
   for (const glm::vec3& eye : eyes) {
     const std::vector<GroundChunkKey> chunks = ground.chosen(eye);
-    const TriangleMesh mesh = ground.mesh(chunks);
+    const GroundChunks::Chunked chunked = ground.mesh(chunks);
+    const TriangleMesh& mesh = chunked.mesh;
     ASSERT_EQ(mesh.positions.size(), chunks.size() * per_chunk);
+    // Each chunk's index range follows the one before and its box holds its triangles.
+    ASSERT_EQ(chunked.chunks.size(), chunks.size());
+    std::uint32_t next = 0;
+    for (const PolygonPart& part : chunked.chunks) {
+      ASSERT_EQ(part.first_index, next);
+      next += part.index_count;
+      for (std::uint32_t i = part.first_index; i < part.first_index + part.index_count; ++i) {
+        const glm::vec3 p = mesh.positions[mesh.indices[i]];
+        ASSERT_TRUE(glm::all(glm::lessThanEqual(glm::abs(p - part.center), part.half_size + 1e-3f)));
+      }
+    }
+    ASSERT_EQ(next, mesh.indices.size());
     for (std::size_t a = 0; a < chunks.size(); ++a) {
       for (std::size_t b = 0; b < chunks.size(); ++b) {
         if (chunks[b].level >= chunks[a].level) continue;
@@ -123,7 +137,7 @@ TEST(GroundChunks, TheMeshFollowsFromTheEyeAloneWhateverWasMadeBefore) {
   GroundChunks fresh(spec, settings), flown(spec, settings);
   for (const glm::vec3& eye : eyes) flown.mesh(flown.chosen(eye));
   flown.mesh(flown.chosen({130.0f, 40.0f, -280.0f}));
-  const TriangleMesh a = fresh.mesh(fresh.chosen(eyes[0])), b = flown.mesh(flown.chosen(eyes[0]));
+  const TriangleMesh a = fresh.mesh(fresh.chosen(eyes[0])).mesh, b = flown.mesh(flown.chosen(eyes[0])).mesh;
   ASSERT_EQ(a.positions.size(), b.positions.size());
   EXPECT_EQ(std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(glm::vec3)), 0);
   EXPECT_EQ(std::memcmp(a.normals.data(), b.normals.data(), a.normals.size() * sizeof(glm::vec3)), 0);

@@ -352,7 +352,7 @@ TEST(SceneFile, LandscapeHasAnEmptyTableASpeciesAPoolForItsReachAndItsGroundForT
   EXPECT_FALSE(s.point_meshes[source.ground_mesh]);
   EXPECT_EQ(source.ground.cells, 32);
   pointgen::GroundChunks chunks(spec, source.ground);
-  const pointgen::TriangleMesh expected = chunks.mesh(chunks.chosen(s.camera.position));
+  const pointgen::TriangleMesh expected = chunks.mesh(chunks.chosen(s.camera.position)).mesh;
   const pointgen::TriangleMesh& ground = s.meshes[source.ground_mesh];
   ASSERT_EQ(ground.positions.size(), expected.positions.size());
   EXPECT_EQ(std::memcmp(ground.positions.data(), expected.positions.data(), ground.positions.size() * sizeof(glm::vec3)), 0);

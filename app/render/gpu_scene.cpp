@@ -87,7 +87,7 @@ GpuScene::GpuScene(const Scene& scene) : textures_(scene.meshes) {
   }
 }
 
-GpuScene::Mesh GpuScene::make_mesh(const pointgen::TriangleMesh& mesh, bool point_mesh) const {
+GpuScene::Mesh GpuScene::make_mesh(const pointgen::TriangleMesh& mesh, bool point_mesh, std::optional<pointgen::TriangleSplit> split) const {
   std::vector<Vertex> vertices;
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     vertices.push_back({mesh.positions[v], mesh.normals[v], mesh.colors[v]});
@@ -98,7 +98,7 @@ GpuScene::Mesh GpuScene::make_mesh(const pointgen::TriangleMesh& mesh, bool poin
   m.vertex_count = static_cast<GLsizei>(vertices.size());
   m.index_count = static_cast<GLsizei>(mesh.indices.size());
   m.point_mesh = point_mesh;
-  const std::optional<pointgen::TriangleSplit> split = drawn_split(mesh, m.point_mesh);
+  if (!split) split = drawn_split(mesh, m.point_mesh);
   gl::store(m.indices, split ? split->indices : mesh.indices);
   if (!split) return m;
   for (const pointgen::PolygonPart& part : split->parts) {
@@ -110,11 +110,12 @@ GpuScene::Mesh GpuScene::make_mesh(const pointgen::TriangleMesh& mesh, bool poin
   return m;
 }
 
-void GpuScene::replace_mesh(std::size_t mesh, const pointgen::TriangleMesh& with) {
+void GpuScene::replace_mesh(std::size_t mesh, const pointgen::TriangleMesh& with, const std::vector<pointgen::PolygonPart>& chunks) {
   Mesh& m = meshes_[mesh];
   if (m.point_mesh) throw RuntimeFailure("a point mesh cannot be replaced");
   const bool adjacency = m.adjacency.has_value();
-  m = make_mesh(with, false);
+  m = make_mesh(with, false, pointgen::TriangleSplit{with.indices, chunks});
+  m.replaced = with;
   if (adjacency) add_adjacency(mesh, with);
   for (Group& group : groups_) {
     if (group.mesh == mesh) set_attributes(group.vertex_array.name(), m, group.instances.name());
@@ -219,7 +220,7 @@ void GpuScene::multi_draw_chosen(const PlantDraws& draws, GLenum mode) const {
 
 void GpuScene::add_adjacency(const Scene& scene) {
   for (std::size_t m = 0; m < meshes_.size(); ++m) {
-    if (!meshes_[m].adjacency) add_adjacency(m, scene.meshes[m]);
+    if (!meshes_[m].adjacency) add_adjacency(m, meshes_[m].replaced ? *meshes_[m].replaced : scene.meshes[m]);
   }
   if (chosen_ && !chosen_->adjacency) gather_adjacency();
 }
@@ -227,7 +228,8 @@ void GpuScene::add_adjacency(const Scene& scene) {
 void GpuScene::add_adjacency(std::size_t mesh, const pointgen::TriangleMesh& from) {
   // In the order of the index list drawn, so that a part's range of it, doubled, is that part's.
   pointgen::TriangleMesh drawn = from;
-  if (std::optional<pointgen::TriangleSplit> split = drawn_split(drawn, meshes_[mesh].point_mesh)) drawn.indices = std::move(split->indices);
+  std::optional<pointgen::TriangleSplit> split = meshes_[mesh].replaced ? std::nullopt : drawn_split(drawn, meshes_[mesh].point_mesh);
+  if (split) drawn.indices = std::move(split->indices);
   gl::store(meshes_[mesh].adjacency.emplace(), pointgen::adjacency_indices(drawn));
 }
 

@@ -46,8 +46,9 @@ class GpuScene {
   // Every instance whole, each triangle with its neighbours (GL_TRIANGLES_ADJACENCY), for shadow
   // volumes and silhouette maps; `view` as for draw.
   void draw_with_adjacency(const std::optional<glm::mat4>& view = std::nullopt) const;
-  // Replaces a mesh other than a point mesh with `with` (a landscape's ground, moved with the eye).
-  void replace_mesh(std::size_t mesh, const pointgen::TriangleMesh& with);
+  // Replaces a mesh other than a point mesh with `with` (a landscape's ground, made for the eye),
+  // drawn by `chunks`: ranges of its index list, each culled by its box.
+  void replace_mesh(std::size_t mesh, const pointgen::TriangleMesh& with, const std::vector<pointgen::PolygonPart>& chunks);
   // Replaces the instances of a group with `table`, which has at most as many as the scene's
   // group: posed moving objects, or the subset a pass draws as polygons. `parts`, for a point
   // mesh's group, has for each instance the polygon parts to draw, a bit each; none: all.
@@ -85,6 +86,7 @@ class GpuScene {
     // Index ranges of its polygon parts (a point mesh), or of its chunks (a large other mesh).
     std::vector<Range> parts;
     std::vector<shadow::Box> chunk_boxes;  // a chunk's bounds, in the mesh's frame
+    std::optional<pointgen::TriangleMesh> replaced;  // replace_mesh's, its indices in the order drawn
   };
   struct Group {
     gl::VertexArray vertex_array;
@@ -98,7 +100,8 @@ class GpuScene {
     std::size_t capacity = 0;
     std::optional<glm::mat4x3> only_transform;  // of the group's one instance
   };
-  Mesh make_mesh(const pointgen::TriangleMesh& mesh, bool point_mesh) const;
+  // `split`: the mesh's index list in the order drawn and its parts; none: drawn_split's.
+  Mesh make_mesh(const pointgen::TriangleMesh& mesh, bool point_mesh, std::optional<pointgen::TriangleSplit> split = std::nullopt) const;
   void add_adjacency(std::size_t mesh, const pointgen::TriangleMesh& from);
   // The index ranges of a group's instances that `view` needs: its mesh's chunks whose boxes reach
   // it (neighbouring ranges joined), or the whole list.

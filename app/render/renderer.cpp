@@ -111,8 +111,11 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
     std::vector<std::size_t> meshes;  // per species; its far blocks' table follows them all
     for (std::size_t g = 0; g < landscape.group_count() / 2; ++g) meshes.push_back(scene.groups[landscape.first_group + g].mesh);
     landscape_pools_.emplace_back(landscape.spec, landscape.reach, meshes, landscape.capacity);
+    // Drawn by its chunks from the first frame on, as every later ground is.
     grounds_.emplace_back(landscape.spec, landscape.ground);
     ground_chunks_.push_back(grounds_.back().chosen(scene.camera.position));
+    const pointgen::GroundChunks::Chunked ground = grounds_.back().mesh(ground_chunks_.back());
+    gpu_scene_.replace_mesh(landscape.ground_mesh, ground.mesh, ground.chunks);
     pools.push_back({landscape.first_group, landscape.first_group + landscape.group_count(), landscape.capacity});
   }
   if (settings_.points && settings_.gpu_sampler && settings_.measure == RenderSettings::Measure::off) {
@@ -520,7 +523,8 @@ void Renderer::place_landscapes(const shadow::Camera& camera) {
     const LandscapeSource& landscape = scene_.landscapes[l];
     pointgen::LandscapePool& pool = landscape_pools_[l];
     if (std::vector<pointgen::GroundChunkKey> chunks = grounds_[l].chosen(camera.position); chunks != ground_chunks_[l]) {
-      gpu_scene_.replace_mesh(landscape.ground_mesh, grounds_[l].mesh(chunks));
+      const pointgen::GroundChunks::Chunked ground = grounds_[l].mesh(chunks);
+      gpu_scene_.replace_mesh(landscape.ground_mesh, ground.mesh, ground.chunks);
       ground_chunks_[l] = std::move(chunks);
     }
     // A far block's points are drawn as the frame's density asks (sampler_view's), at an average

@@ -234,7 +234,7 @@ class SceneBuilder {
     // Its plants, and the cells kept made (up to twice as many plants, LandscapePool).
     reserve_memory(object, static_cast<double>(source.capacity) * (bytes_per_plant + 2 * sizeof(pointgen::LandscapePlant)) +
                                triangles * bytes_per_triangle);
-    scene_.meshes.push_back(ground.mesh(chunks));
+    scene_.meshes.push_back(ground.mesh(chunks).mesh);
     source.ground_mesh = scene_.meshes.size() - 1;
     source.ground = landscape.ground;
     add_instance(source.ground_mesh, glm::mat4(1.0f), glm::vec3(1.0f));

@@ -105,10 +105,11 @@ TriangleMesh GroundChunks::chunk_mesh(const Placed& chunk) const {
   return mesh;
 }
 
-TriangleMesh GroundChunks::mesh(const std::vector<GroundChunkKey>& chunks) {
+GroundChunks::Chunked GroundChunks::mesh(const std::vector<GroundChunkKey>& chunks) {
   const std::set<GroundChunkKey> chosen(chunks.begin(), chunks.end());
   std::map<Placed, TriangleMesh> kept;
-  TriangleMesh ground;
+  Chunked chunked;
+  TriangleMesh& ground = chunked.mesh;
   for (const GroundChunkKey& key : chunks) {
     const Placed placed{key, coarser_neighbours(key, chosen)};
     const auto found = kept_.find(placed);
@@ -117,10 +118,16 @@ TriangleMesh GroundChunks::mesh(const std::vector<GroundChunkKey>& chunks) {
     ground.positions.insert(ground.positions.end(), chunk.positions.begin(), chunk.positions.end());
     ground.normals.insert(ground.normals.end(), chunk.normals.begin(), chunk.normals.end());
     ground.colors.insert(ground.colors.end(), chunk.colors.begin(), chunk.colors.end());
+    PolygonPart& part = chunked.chunks.emplace_back();
+    part.first_index = static_cast<std::uint32_t>(ground.indices.size());
+    part.index_count = static_cast<std::uint32_t>(chunk.indices.size());
     for (std::uint32_t i : chunk.indices) ground.indices.push_back(first + i);
+    const Bounds b = chunk.bounds();
+    part.center = 0.5f * (b.min + b.max);
+    part.half_size = 0.5f * (b.max - b.min);
   }
   kept_ = std::move(kept);
-  return ground;
+  return chunked;
 }
 
 }  // namespace pointgen

@@ -1,5 +1,6 @@
 #pragma once
 #include "pointgen/landscape/landscape_spec.hpp"
+#include "pointgen/sampling/mesh_parts.hpp"
 #include "pointgen/triangle_mesh.hpp"
 
 #include <array>
@@ -35,9 +36,13 @@ class GroundChunks {
 
   // The chunks for an eye, in key order: the same for the same eye, whatever came before.
   std::vector<GroundChunkKey> chosen(const glm::vec3& eye) const;
-  // The chunks' meshes one after the other, in their order; a chunk once made is kept while
-  // chosen and made again when chosen after it was not.
-  TriangleMesh mesh(const std::vector<GroundChunkKey>& chunks);
+  // The chunks' meshes one after the other, in their order, and each one's index range and bounds;
+  // a chunk once made is kept while chosen and made again when chosen after it was not.
+  struct Chunked {
+    TriangleMesh mesh;
+    std::vector<PolygonPart> chunks;
+  };
+  Chunked mesh(const std::vector<GroundChunkKey>& chunks);
 
   float side(int level) const;  // metres
 
