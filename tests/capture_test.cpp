@@ -538,6 +538,20 @@ TEST(Capture, ALandscapeFrameHasTheSameBytesWhateverItsPoolHeldBefore) {
   EXPECT_GT(flown["cells_made"].get<int>(), 0) << "133 m on from the frame before: cells of its own";
 }
 
+// The exact reference traces each frame's plants and ground: a landscape's change with the eye.
+TEST(Capture, ALandscapesReferenceFollowsItsPlantsAlongThePath) {
+  const TempDir dir;
+  const CommandResult r = run_ecoview({"capture", "--scene", "landscape", "--path", "landscape", "--fps", "1", "--frames", "3:5",
+                                       "--size", "160x90", "--aov", "reference", "--out", dir.path().string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* file : {"reference_00003.png", "reference_00004.png"}) {
+    const Gray reference = load_gray(dir / file);
+    const auto shadowed = std::count_if(reference.pixels.begin(), reference.pixels.end(), [](unsigned char v) { return v < 128; });
+    EXPECT_GT(shadowed, 100) << file;
+    EXPECT_LT(shadowed, static_cast<long>(reference.pixels.size()) - 100) << file;
+  }
+}
+
 // A process killed between writing a frame and renaming it leaves its temporary file; the capture
 // that renders the frame again removes it, and only it.
 TEST(Capture, ARerunRemovesTheTemporaryFilesAKilledCaptureLeft) {

@@ -430,7 +430,7 @@ const pointgen::InstanceCells& Renderer::cells() const {
 }
 
 ExactVisibility& Renderer::exact() {
-  if (!exact_) exact_ = std::make_unique<ExactVisibility>(scene_.meshes, tables_);
+  if (!exact_) exact_ = std::make_unique<ExactVisibility>(meshes_now_.empty() ? scene_.meshes : meshes_now_, tables_);
   exact_->pose(tables_);
   return *exact_;
 }
@@ -523,9 +523,12 @@ void Renderer::place_landscapes(const shadow::Camera& camera) {
     const LandscapeSource& landscape = scene_.landscapes[l];
     pointgen::LandscapePool& pool = landscape_pools_[l];
     if (std::vector<pointgen::GroundChunkKey> chunks = grounds_[l].chosen(camera.position); chunks != ground_chunks_[l]) {
-      const pointgen::GroundChunks::Chunked ground = grounds_[l].mesh(chunks);
+      pointgen::GroundChunks::Chunked ground = grounds_[l].mesh(chunks);
       gpu_scene_.replace_mesh(landscape.ground_mesh, ground.mesh, ground.chunks);
       ground_chunks_[l] = std::move(chunks);
+      if (meshes_now_.empty()) meshes_now_ = scene_.meshes;
+      meshes_now_[landscape.ground_mesh] = std::move(ground.mesh);
+      exact_.reset();  // traced again over this ground
     }
     // A far block's points are drawn as the frame's density asks (sampler_view's), at an average
     // facing of one half.
@@ -543,6 +546,7 @@ void Renderer::place_landscapes(const shadow::Camera& camera) {
     stats_.landscape.far_plants += made.far_plants;
     stats_.landscape.far_share = std::min(stats_.landscape.far_share, made.far_share);
     if (!changed) continue;
+    exact_.reset();  // traced again over these plants
     std::vector<pointgen::InstanceTable> tables = pool.tables();
     for (std::size_t s = 0; s < tables.size(); ++s) {
       const std::size_t group = landscape.first_group + s;

@@ -242,7 +242,9 @@ class Renderer {
   // The time of the frame that last asked for pages and its moving instances' boxes then.
   double paged_time_ = -1.0;
   std::vector<shadow::Box> paged_boxes_;
-  std::unique_ptr<ExactVisibility> exact_;          // made when first asked for
+  // The scene's meshes with each landscape's ground as this frame has it; empty: the scene's own.
+  std::vector<pointgen::TriangleMesh> meshes_now_;
+  std::unique_ptr<ExactVisibility> exact_;          // made when first asked for, and again when a landscape changed
   shadow::Camera camera_;                            // of the last frame
   shadow::Camera last_camera_;  // of the frame before this one, whose surfaces auto predicts from
   shadow::Light light_;                              // of the last frame
