@@ -542,50 +542,78 @@ TEST(LandscapePool, FarBlocksAndNearCellsShareNoGroundAndCoverTheViewBeyondTheRe
   EXPECT_GT(in_view, 20u);
 }
 
-// The far blocks' plants (a point each) against the points their cells' plants would ask, each
-// by the density formula at its own distance and surface: the same within a fifth, though the
-// blocks count from their centres, round up to a quarter octave and pick their own sites.
-TEST(LandscapePool, FarBlocksDrawAboutThePointsTheirPlantsWouldAsk) {
+// What the pool draws against the points every plant of its cells would ask, each by the density
+// formula at its own distance and surface: the cells made whole, the band's thinned and the far
+// blocks' candidates together ask the same within a fifth, though the blocks count from their
+// centres, round to a quarter octave and pick their own sites.
+TEST(LandscapePool, ItDrawsAboutThePointsItsCellsPlantsWouldAsk) {
   const FarView f;
   LandscapePool pool(f.spec, f.reach, f.meshes, 1u << 24);
   pool.fill(f.view);
-  double asked = 0.0;
+  const auto points = [&](const glm::mat4x3& transform, std::size_t species) {
+    const float scale = uniform_scale(glm::mat4(transform));
+    const float d = glm::distance(f.view.eye, transform[3]);
+    return f.view.points_at_a_metre * f.spec.layers[0].species[species].surface * scale * scale / (d * d);
+  };
+  std::set<std::pair<int, int>> cells;
+  for (const CellKey& key : cells_within(f.spec, 0, {f.view.eye.x, f.view.eye.z}, (1.0f + LandscapePool::band) * 200.0f)) cells.insert({key.x, key.z});
   for (const LandscapePool::Block& block : pool.blocks()) {
-    const int cells = 1 << block.key.level;
-    for (int z = block.key.z * cells; z < (block.key.z + 1) * cells; ++z) {
-      for (int x = block.key.x * cells; x < (block.key.x + 1) * cells; ++x) {
-        for (const LandscapePlant& plant : generate_cell(f.spec, {0, x, z})) {
-          const float scale = uniform_scale(glm::mat4(plant.transform));
-          const float surface = f.spec.layers[0].species[plant.species].surface * scale * scale;
-          const float d = glm::distance(f.view.eye, plant.transform[3]);
-          asked += f.view.points_at_a_metre * surface / (d * d);
-        }
-      }
+    const int side = 1 << block.key.level;
+    for (int z = block.key.z * side; z < (block.key.z + 1) * side; ++z) {
+      for (int x = block.key.x * side; x < (block.key.x + 1) * side; ++x) cells.insert({x, z});
     }
   }
+  double asked = 0.0;
+  for (const auto& [x, z] : cells) {
+    for (const LandscapePlant& plant : generate_cell(f.spec, {0, x, z})) asked += points(plant.transform, plant.species);
+  }
   ASSERT_GT(asked, 1000.0);
-  // Each far plant draws what the formula asks of it, rounded up: one point. Near the reach, where
-  // trees ask more than a point each, a block takes its sites' worth (whole) and its plants round
-  // as plants do: by their expected count here.
+  // Each plant draws what the formula asks of it; a far block's candidate, rounding up, a point.
   const std::vector<InstanceTable> tables = pool.tables();
   EXPECT_TRUE(tables[2].rounds_up && tables[3].rounds_up);
   EXPECT_EQ(tables[2].size() + tables[3].size(), pool.stats().far_plants);
-  // The near cells' plants come first in their tables.
-  std::size_t near[4] = {0, 0, 0, 0};
-  for (const CellKey& key : cells_within(f.spec, 0, {f.view.eye.x, f.view.eye.z}, 200.0f)) {
-    for (const LandscapePlant& plant : generate_cell(f.spec, key)) ++near[plant.species];
-  }
   double drawn = 0.0;
   for (std::size_t t = 0; t < 4; ++t) {
-    for (std::size_t i = near[t]; i < tables[t].size(); ++i) {
-      const float scale = uniform_scale(tables[t].transform(i));
-      const float surface = f.spec.layers[0].species[t % 2].surface * scale * scale;
-      const float d = glm::distance(f.view.eye, tables[t].transforms[i][3]);
-      const float points = f.view.points_at_a_metre * surface / (d * d);
-      drawn += tables[t].rounds_up ? std::floor(points + InstanceTable::round_up_threshold) : points;
+    for (std::size_t i = 0; i < tables[t].size(); ++i) {
+      const float p = points(tables[t].transforms[i], t % 2);
+      drawn += tables[t].rounds_up ? std::floor(p + InstanceTable::round_up_threshold) : p;
     }
   }
-  EXPECT_NEAR(drawn, asked, 0.2 * asked) << pool.blocks().size() << " blocks, " << pool.stats().far_plants << " plants";
+  EXPECT_NEAR(drawn, asked, 0.2 * asked) << pool.blocks().size() << " blocks, " << pool.stats().far_plants << " far plants";
+}
+
+// Within the reach a cell's plants are all kept, a quarter beyond it none, and between they thin
+// out with the cell's distance (by eighths, each plant by its own hash) while its far block takes
+// the rest: plants give way to candidates a few at a time as the eye moves, not a cell at once.
+TEST(LandscapePool, AcrossTheBandACellKeepsItsPlantsInProportionToItsDistance) {
+  FarView f;
+  f.spec.layers[0].density = 0.02f;  // five times the forest's trees: some hundreds in the band
+  LandscapePool pool(f.spec, f.reach, f.meshes, 1u << 24);
+  pool.fill(f.view);
+  const std::vector<InstanceTable> tables = pool.tables();
+  std::set<std::uint32_t> held;
+  for (std::size_t t = 0; t < 2; ++t) held.insert(tables[t].seeds.begin(), tables[t].seeds.end());
+  const glm::vec2 eye(f.view.eye.x, f.view.eye.z);
+  double band_plants = 0.0, band_kept = 0.0, band_expected = 0.0;
+  for (const CellKey& key : cells_within(f.spec, 0, eye, 260.0f)) {
+    const CellBounds b = cell_bounds(f.spec, key);
+    const float d = glm::distance(glm::clamp(eye, b.min, b.max), eye);
+    const std::vector<LandscapePlant> plants = generate_cell(f.spec, key);
+    const auto kept = std::count_if(plants.begin(), plants.end(), [&](const LandscapePlant& p) { return held.count(p.seed) > 0; });
+    if (d <= 200.0f) {
+      EXPECT_EQ(kept, static_cast<long>(plants.size())) << "within reach";
+    } else if (d >= 250.0f) {
+      EXPECT_EQ(kept, 0) << "past the band";
+    } else {
+      band_plants += static_cast<double>(plants.size());
+      band_kept += static_cast<double>(kept);
+      band_expected += static_cast<double>(plants.size()) * (250.0 - d) / 50.0;
+    }
+  }
+  ASSERT_GT(band_plants, 100.0);
+  EXPECT_NEAR(band_kept, band_expected, 0.1 * band_expected + 3.0 * std::sqrt(band_expected));
+  EXPECT_GT(band_kept, 0.2 * band_plants);
+  EXPECT_LT(band_kept, 0.8 * band_plants);
 }
 
 TEST(LandscapeSpec, CheckNamesTheFirstFieldOutOfRange) {

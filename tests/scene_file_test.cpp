@@ -344,9 +344,9 @@ TEST(SceneFile, LandscapeHasAnEmptyTableASpeciesAPoolForItsReachAndItsGroundForT
       EXPECT_EQ(s.groups[g].mesh, s.groups[g - 3].mesh);
     }
   }
-  // Every site of the cells a 60 m disc can meet (trees' 20 m cells of 2 × 2 sites, grass's 5 m
-  // of 3 × 3), and room for far blocks' plants.
-  EXPECT_EQ(source.capacity, 8u * 8u * 4u + 26u * 26u * 9u + pointgen::LandscapePool::far_plants);
+  // Every site of the cells a 75 m disc can meet (60 m and the band beyond; trees' 20 m cells of
+  // 2 × 2 sites, grass's 5 m of 3 × 3), and room for far blocks' plants.
+  EXPECT_EQ(source.capacity, 9u * 9u * 4u + 32u * 32u * 9u + pointgen::LandscapePool::far_plants);
   // The ground: chunks of 32 × 32 squares (ground_cells) for the camera, over the whole area.
   ASSERT_EQ(source.ground_mesh, s.groups[0].mesh);
   EXPECT_FALSE(s.point_meshes[source.ground_mesh]);
@@ -386,8 +386,9 @@ TEST(SceneFileErrors, MalformedLandscapeNamesTheField) {
                      {"objects[0].terrain.octaves"});
 }
 
-// Within 900 m, trees' 20 m cells of 2 × 2 sites and grass's 5 m cells of 3 × 3, 1.2 million
-// plants, and room for far blocks' plants, as many as 256 MiB holds, 304 bytes each (their tables, GPU records and the cells kept made), and the ground's
+// Within 900 m and the band beyond, trees' 20 m cells of 2 × 2 sites and grass's 5 m cells of
+// 3 × 3, 1.9 million plants, and room for far blocks' plants, as many as 256 MiB holds, 304 bytes
+// each (their tables, GPU records and the cells kept made), and the ground's
 // chunks for the camera, 240 bytes a triangle, past 64 MiB; a pool of 16 MiB (--plant-pool)
 // holds 91,180 plants.
 TEST(SceneFileErrors, ALandscapeWhosePoolPassesTheBudgetIsRefusedSayingWhatItNeeds) {
@@ -402,7 +403,7 @@ TEST(SceneFileErrors, ALandscapeWhosePoolPassesTheBudgetIsRefusedSayingWhatItNee
     const std::string message = e.what();
     EXPECT_NE(message.find("objects[0]"), std::string::npos) << message;
     EXPECT_NE(message.find("memory budget of 0.06 GiB"), std::string::npos) << message;
-    const double plants = std::min(92.0 * 92.0 * 4.0 + 362.0 * 362.0 * 9.0 + pointgen::LandscapePool::far_plants,
+    const double plants = std::min(114.0 * 114.0 * 4.0 + 452.0 * 452.0 * 9.0 + pointgen::LandscapePool::far_plants,
                                    std::floor(256.0 * mib / 184.0));  // the default --plant-pool
     const LandscapeObject landscape = read_small_landscape();
     const pointgen::GroundChunks ground(landscape.spec, landscape.ground);

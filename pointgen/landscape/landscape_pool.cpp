@@ -14,6 +14,24 @@ namespace pointgen {
 namespace {
 
 constexpr std::uint32_t sparse_domain = 0x73706172u;  // "spar"
+constexpr std::uint32_t band_domain = 0x62616E64u;    // "band"
+// Across the band, a cell's plants thin out by its distance while its far block's candidates grow,
+// in eighths, so that plants give way to candidates a few at a time as the eye moves instead of a
+// cell at once.
+constexpr float band_share = LandscapePool::band;
+constexpr int band_steps = 8;
+
+// The eighths of a cell's plants kept `near` metres from the eye; its block takes the rest.
+int kept_steps(float near, float reach) {
+  const float end = (1.0f + band_share) * reach;
+  return std::clamp(static_cast<int>(std::lround(band_steps * (end - near) / (band_share * reach))), 0, band_steps);
+}
+
+// Whether a plant of a cell keeping `steps` eighths is kept: by its own hash, so that the plants
+// kept at n eighths are among those kept at n + 1.
+bool kept(const LandscapePlant& plant, int steps) {
+  return steps >= band_steps || unit_float(hash32(plant.seed, band_domain)) * band_steps < static_cast<float>(steps);
+}
 // Metres above the highest hill a plant may reach, for culling blocks against the view.
 constexpr float tallest_plant = 100.0f;
 // A far block is split while wider than this share of its distance from the eye: the density
@@ -64,8 +82,9 @@ LandscapePool::LandscapePool(LandscapeSpec spec, std::vector<float> reach, std::
 std::size_t LandscapePool::most_plants_in_reach(const LandscapeSpec& spec, const std::vector<float>& reach) {
   double plants = 0.0;
   for (std::size_t layer = 0; layer < spec.layers.size(); ++layer) {
-    // A disc of radius r meets at most (2r / side + 2)² cells along each axis's grid lines.
-    const double across = std::floor(2.0 * reach[layer] / spec.layers[layer].cell_size) + 2.0;
+    // A disc of radius r meets at most (2r / side + 2)² cells along each axis's grid lines; the
+    // cells of the band beyond the reach count too.
+    const double across = std::floor(2.0 * (1.0 + band_share) * reach[layer] / spec.layers[layer].cell_size) + 2.0;
     const glm::ivec2 count = cell_count(spec, static_cast<int>(layer));
     const double cells = std::min(across, static_cast<double>(count.x)) * std::min(across, static_cast<double>(count.y));
     plants += cells * cell_sites(spec.layers[layer]).count();
@@ -73,7 +92,7 @@ std::size_t LandscapePool::most_plants_in_reach(const LandscapeSpec& spec, const
   return static_cast<std::size_t>(std::min(plants, 1e15));
 }
 
-std::vector<CellKey> LandscapePool::take_near_cells(glm::vec2 eye) {
+std::vector<LandscapePool::NearCell> LandscapePool::take_near_cells(glm::vec2 eye, bool banded) {
   struct Near {
     float distance;
     CellKey key;
@@ -81,20 +100,24 @@ std::vector<CellKey> LandscapePool::take_near_cells(glm::vec2 eye) {
   };
   std::vector<Near> near;
   for (std::size_t layer = 0; layer < spec_.layers.size(); ++layer) {
-    for (const CellKey& key : cells_within(spec_, static_cast<int>(layer), eye, reach_[layer])) {
+    const float radius = (banded ? 1.0f + band_share : 1.0f) * reach_[layer];
+    for (const CellKey& key : cells_within(spec_, static_cast<int>(layer), eye, radius)) {
       near.push_back({distance_to(eye, cell_bounds(spec_, key)), key});
     }
   }
   std::sort(near.begin(), near.end());
-  std::vector<CellKey> chosen;
+  std::vector<NearCell> chosen;
   for (std::size_t i = 0; i < near.size(); ++i) {
-    const std::size_t plants = plants_of(near[i].key).size();
-    if (stats_.plants + plants > capacity_) {
+    const int steps = banded ? kept_steps(near[i].distance, reach_[static_cast<std::size_t>(near[i].key.layer)]) : band_steps;
+    if (steps == 0) continue;
+    const std::vector<LandscapePlant>& plants = plants_of(near[i].key);
+    const auto count = static_cast<std::size_t>(std::count_if(plants.begin(), plants.end(), [&](const LandscapePlant& p) { return kept(p, steps); }));
+    if (stats_.plants + count > capacity_) {
       stats_.cells_left_out = near.size() - i;
       break;
     }
-    stats_.plants += plants;
-    chosen.push_back(near[i].key);
+    stats_.plants += count;
+    chosen.push_back({near[i].key, steps});
   }
   std::sort(chosen.begin(), chosen.end());
   return chosen;
@@ -146,8 +169,9 @@ void LandscapePool::add_far_blocks(const LandscapeView& view, int layer, float s
     if (!in_view(view.view_projection, {b.min.x, lowest, b.min.y}, {b.max.x, highest, b.max.y})) continue;
     const float near = distance_to(eye, b);
     const float side = std::max(b.max.x - b.min.x, b.max.y - b.min.y);
-    if (near <= reach && key.level == 0) continue;  // a cell made whole
-    if (key.level > 0 && (near <= reach || side > block_share_of_distance * near)) {
+    const int steps_made_whole = key.level == 0 ? kept_steps(near, reach) : 0;
+    if (steps_made_whole == band_steps) continue;  // a cell made whole
+    if (key.level > 0 && (near <= (1.0f + band_share) * reach || side > block_share_of_distance * near)) {
       for (int child = 0; child < 4; ++child) open.push_back({layer, key.level - 1, 2 * key.x + (child & 1), 2 * key.z + (child >> 1)});
       continue;
     }
@@ -159,7 +183,8 @@ void LandscapePool::add_far_blocks(const LandscapeView& view, int layer, float s
     // pixel of its ground as the eye sees it, and of its plants' height seen from the side.
     const float sine = std::clamp((view.eye.y - ground) / d, 0.0f, 1.0f);
     const float seen = area * sine + side * height * std::sqrt(1.0f - sine * sine);
-    const float points = share * view.points_at_a_metre * std::min(density * area, 2.0f * seen) / (d * d);
+    const float rest = 1.0f - static_cast<float>(steps_made_whole) / band_steps;  // of a cell in the band
+    const float points = rest * share * view.points_at_a_metre * std::min(density * area, 2.0f * seen) / (d * d);
     // Never more candidates than the block has sites: where its plants ask a point or more each,
     // each candidate draws what its plant asks.
     const auto sites = static_cast<std::uint32_t>(std::ceil(spec_.layers[static_cast<std::size_t>(layer)].density * area));
@@ -197,7 +222,8 @@ std::size_t LandscapePool::plants_of(const Block& block) {
 bool LandscapePool::fill(const LandscapeView& view) {
   ++fills_;
   stats_ = {};
-  std::vector<CellKey> chosen = take_near_cells({view.eye.x, view.eye.z});
+  // No band without far blocks: the cells within reach are all there is.
+  std::vector<NearCell> chosen = take_near_cells({view.eye.x, view.eye.z}, view.points_at_a_metre > 0.0f);
   std::vector<Block> blocks = take_far_blocks(view);
   stats_.cells = chosen.size();
   stats_.blocks = blocks.size();
@@ -249,8 +275,10 @@ std::vector<InstanceTable> LandscapePool::tables() const {
     tables[table].tints.push_back(plant.tint);
     tables[table].seeds.push_back(plant.seed);
   };
-  for (const CellKey& key : chosen_) {
-    for (const LandscapePlant& plant : kept_.at(key).plants) add(first_species_[static_cast<std::size_t>(key.layer)] + plant.species, plant);
+  for (const NearCell& cell : chosen_) {
+    for (const LandscapePlant& plant : kept_.at(cell.key).plants) {
+      if (kept(plant, cell.steps)) add(first_species_[static_cast<std::size_t>(cell.key.layer)] + plant.species, plant);
+    }
   }
   for (const Block& block : chosen_blocks_) {
     const KeptBlock& kept = kept_blocks_.at(block.key);

@@ -18,7 +18,8 @@ struct LandscapeView {
 };
 
 // The plants a landscape shows from one place. Of each layer, the cells reaching within the
-// layer's reach of the eye are made whole; beyond it, the cells the view sees are taken in
+// layer's reach of the eye are made whole, and across a band a quarter as wide beyond it they
+// thin out as their far blocks' candidates grow; beyond it, the cells the view sees are taken in
 // blocks of 2^level × 2^level cells, each at most a quarter of its distance across, and each
 // block is drawn by as many candidates as points its surface asks (far_candidate): plants that
 // round up to one point each (InstanceTable::rounds_up), so that a block costs its points, not
@@ -66,9 +67,11 @@ class LandscapePool {
   const std::vector<Block>& blocks() const { return chosen_blocks_; }
   std::size_t capacity() const { return capacity_; }
 
-  // The most plants the cells within every layer's reach of any one eye can hold (every site
-  // taken): a pool this large leaves no near cell out.
+  // The most plants the cells within every layer's reach of any one eye (and the band beyond it)
+  // can hold, every site taken: a pool this large leaves no near cell out.
   static std::size_t most_plants_in_reach(const LandscapeSpec& spec, const std::vector<float>& reach);
+  // The band beyond a layer's reach, as a share of the reach.
+  static constexpr float band = 0.25f;
   // Room for far blocks' plants besides: a point each, 2.5 points a pixel over 200,000 pixels.
   static constexpr std::size_t far_plants = 1 << 19;
 
@@ -86,7 +89,13 @@ class LandscapePool {
     std::uint64_t used = 0;
   };
   // The cells within reach, nearest first, as many as the capacity holds (in key order).
-  std::vector<CellKey> take_near_cells(glm::vec2 eye);
+  // With `banded`, the band's cells too, each keeping some eighths of its plants.
+  struct NearCell {
+    CellKey key;
+    int steps;  // eighths of its plants kept
+    auto operator<=>(const NearCell&) const = default;
+  };
+  std::vector<NearCell> take_near_cells(glm::vec2 eye, bool banded);
   // The far blocks in view, with candidates for `share` of the points they ask (in key order).
   std::vector<Block> take_far_blocks(const LandscapeView& view);
   void add_far_blocks(const LandscapeView& view, int layer, float share, std::vector<Block>& into) const;
@@ -99,7 +108,7 @@ class LandscapePool {
   std::vector<std::size_t> meshes_;
   std::vector<std::size_t> first_species_;  // per layer, its first table
   std::size_t capacity_;
-  std::vector<CellKey> chosen_;  // in key order
+  std::vector<NearCell> chosen_;  // in key order
   std::vector<Block> chosen_blocks_;  // in key order
   std::map<CellKey, Kept> kept_;
   std::map<FarBlockKey, KeptBlock> kept_blocks_;
