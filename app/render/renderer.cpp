@@ -520,41 +520,37 @@ void Renderer::pose(double t) {
 
 void Renderer::place_landscapes(const shadow::Camera& camera) {
   for (std::size_t l = 0; l < landscape_pools_.size(); ++l) {
-    const LandscapeSource& landscape = scene_.landscapes[l];
-    pointgen::LandscapePool& pool = landscape_pools_[l];
-    if (std::vector<pointgen::GroundChunkKey> chunks = grounds_[l].chosen(camera.position); chunks != ground_chunks_[l]) {
-      pointgen::GroundChunks::Chunked ground = grounds_[l].mesh(chunks);
-      gpu_scene_.replace_mesh(landscape.ground_mesh, ground.mesh, ground.chunks);
-      ground_chunks_[l] = std::move(chunks);
-      if (meshes_now_.empty()) meshes_now_ = scene_.meshes;
-      meshes_now_[landscape.ground_mesh] = std::move(ground.mesh);
-      exact_.reset();  // traced again over this ground
-    }
+    place_ground(l, camera.position);
     // A far block's points are drawn as the frame's density asks (sampler_view's), at an average
-    // facing of one half.
-    const pointgen::SamplerView seen = sampler_view(camera, settings_, {});
-    const float points_at_a_metre = settings_.points ? 0.5f * seen.density.k * seen.density.pixels_per_radian * seen.density.pixels_per_radian : 0.0f;
-    const bool changed = pool.fill({camera.position, view_projection_, points_at_a_metre});
-    const pointgen::LandscapePool::Stats& made = pool.stats();
-    stats_.landscape.cells += made.cells;
-    stats_.landscape.plants += made.plants;
-    stats_.landscape.cells_made += made.cells_made;
-    stats_.landscape.plants_made += made.plants_made;
-    stats_.landscape.cells_left_out += made.cells_left_out;
-    stats_.landscape.plants_kept += made.plants_kept;
-    stats_.landscape.blocks += made.blocks;
-    stats_.landscape.far_plants += made.far_plants;
-    stats_.landscape.far_share = std::min(stats_.landscape.far_share, made.far_share);
-    if (!changed) continue;
-    exact_.reset();  // traced again over these plants
-    std::vector<pointgen::InstanceTable> tables = pool.tables();
-    for (std::size_t s = 0; s < tables.size(); ++s) {
-      const std::size_t group = landscape.first_group + s;
-      tables_.replace(group, std::move(tables[s]));
-      if (cells_) cells_->update(group, tables_[group], samples_.meshes()[tables_[group].mesh]);
-    }
-    if (gpu_sampler_) gpu_sampler_->refill(l, tables_);
+    // facing of one half; none where the frame draws no points.
+    const pointgen::PointDensity density = sampler_view(camera, settings_, {}).density;
+    const float points_at_a_metre = settings_.points ? 0.5f * density.k * density.pixels_per_radian * density.pixels_per_radian : 0.0f;
+    if (landscape_pools_[l].fill({camera.position, view_projection_, points_at_a_metre})) take_landscape_tables(l);
+    stats_.landscape.add(landscape_pools_[l].stats());
   }
+}
+
+void Renderer::place_ground(std::size_t landscape, const glm::vec3& eye) {
+  std::vector<pointgen::GroundChunkKey> chunks = grounds_[landscape].chosen(eye);
+  if (chunks == ground_chunks_[landscape]) return;
+  pointgen::GroundChunks::Chunked ground = grounds_[landscape].mesh(chunks);
+  const std::size_t mesh = scene_.landscapes[landscape].ground_mesh;
+  gpu_scene_.replace_mesh(mesh, ground.mesh, ground.chunks);
+  ground_chunks_[landscape] = std::move(chunks);
+  if (meshes_now_.empty()) meshes_now_ = scene_.meshes;
+  meshes_now_[mesh] = std::move(ground.mesh);
+  exact_.reset();  // traced again over this ground
+}
+
+void Renderer::take_landscape_tables(std::size_t landscape) {
+  exact_.reset();  // traced again over these plants
+  std::vector<pointgen::InstanceTable> tables = landscape_pools_[landscape].tables();
+  for (std::size_t s = 0; s < tables.size(); ++s) {
+    const std::size_t group = scene_.landscapes[landscape].first_group + s;
+    tables_.replace(group, std::move(tables[s]));
+    if (cells_) cells_->update(group, tables_[group], samples_.meshes()[tables_[group].mesh]);
+  }
+  if (gpu_sampler_) gpu_sampler_->refill(landscape, tables_);
 }
 
 void Renderer::render(const shadow::Camera& camera, const shadow::Light& light, double t) {

@@ -110,6 +110,9 @@ class Renderer {
   // Makes each landscape's cells within reach of the eye into its tables and its ground's chunks
   // for the eye into its ground mesh, from the eye alone.
   void place_landscapes(const shadow::Camera& camera);
+  void place_ground(std::size_t landscape, const glm::vec3& eye);
+  // The landscape's pool's tables in place of its groups', for both samplers.
+  void take_landscape_tables(std::size_t landscape);
   // Loads the GPU instance buffers of point meshes with the instances `selection` draws as polygons.
   void upload_polygons(const pointgen::SampledFrame& selection);
   // One frame, with or without shadows.

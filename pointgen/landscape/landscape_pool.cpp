@@ -68,6 +68,18 @@ std::uint32_t candidates_for(float n, std::uint32_t block_hash) {
 
 }  // namespace
 
+void LandscapePool::Stats::add(const Stats& other) {
+  cells += other.cells;
+  plants += other.plants;
+  cells_made += other.cells_made;
+  plants_made += other.plants_made;
+  cells_left_out += other.cells_left_out;
+  plants_kept += other.plants_kept;
+  blocks += other.blocks;
+  far_plants += other.far_plants;
+  far_share = std::min(far_share, other.far_share);
+}
+
 LandscapePool::LandscapePool(LandscapeSpec spec, std::vector<float> reach, std::vector<std::size_t> meshes, std::size_t capacity)
     : spec_(std::move(spec)), reach_(std::move(reach)), meshes_(std::move(meshes)), capacity_(capacity) {
   if (reach_.size() != spec_.layers.size()) throw std::invalid_argument("a reach for each layer");

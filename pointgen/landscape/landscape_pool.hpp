@@ -53,6 +53,7 @@ class LandscapePool {
     // The share of the points far blocks ask that they draw: below 1 where the capacity left after
     // the near cells is too small, every block then drawing that share.
     float far_share = 1.0f;
+    void add(const Stats& other);  // sums the counts, keeps the smaller share
   };
   const Stats& stats() const { return stats_; }
   // The far blocks chosen, in key order, and their candidates (the first of each one's sequence);
