@@ -18,13 +18,12 @@ constexpr std::uint32_t band_domain = 0x62616E64u;    // "band"
 // Across the band, a cell's plants thin out by its distance while its far block's candidates grow,
 // in eighths, so that plants give way to candidates a few at a time as the eye moves instead of a
 // cell at once.
-constexpr float band_share = LandscapePool::band;
 constexpr int band_steps = 8;
 
 // The eighths of a cell's plants kept `near` metres from the eye; its block takes the rest.
 int kept_steps(float near, float reach) {
-  const float end = (1.0f + band_share) * reach;
-  return std::clamp(static_cast<int>(std::lround(band_steps * (end - near) / (band_share * reach))), 0, band_steps);
+  const float end = (1.0f + LandscapePool::band) * reach;
+  return std::clamp(static_cast<int>(std::lround(band_steps * (end - near) / (LandscapePool::band * reach))), 0, band_steps);
 }
 
 // Whether a plant of a cell keeping `steps` eighths is kept: by its own hash, so that the plants
@@ -32,13 +31,14 @@ int kept_steps(float near, float reach) {
 bool kept(const LandscapePlant& plant, int steps) {
   return steps >= band_steps || unit_float(hash32(plant.seed, band_domain)) * band_steps < static_cast<float>(steps);
 }
+
 // Metres above the highest hill a plant may reach, for culling blocks against the view.
 constexpr float tallest_plant = 100.0f;
 // A far block is split while wider than this share of its distance from the eye: the density
-// formula's distance is the block centre's, within ±12 % of any of its plants'.
+// formula's distance is the block centre's, within about a fifth of any of its plants'.
 constexpr float block_share_of_distance = 0.25f;
 // A block's candidates come in steps of a quarter octave, so that the eye moving a little changes
-// no block.
+// few blocks.
 constexpr float steps_an_octave = 4.0f;
 
 float distance_to(glm::vec2 p, const CellBounds& b) { return glm::distance(glm::clamp(p, b.min, b.max), p); }
@@ -96,7 +96,7 @@ std::size_t LandscapePool::most_plants_in_reach(const LandscapeSpec& spec, const
   for (std::size_t layer = 0; layer < spec.layers.size(); ++layer) {
     // A disc of radius r meets at most (2r / side + 2)² cells along each axis's grid lines; the
     // cells of the band beyond the reach count too.
-    const double across = std::floor(2.0 * (1.0 + band_share) * reach[layer] / spec.layers[layer].cell_size) + 2.0;
+    const double across = std::floor(2.0 * (1.0 + band) * reach[layer] / spec.layers[layer].cell_size) + 2.0;
     const glm::ivec2 count = cell_count(spec, static_cast<int>(layer));
     const double cells = std::min(across, static_cast<double>(count.x)) * std::min(across, static_cast<double>(count.y));
     plants += cells * cell_sites(spec.layers[layer]).count();
@@ -112,7 +112,7 @@ std::vector<LandscapePool::NearCell> LandscapePool::take_near_cells(glm::vec2 ey
   };
   std::vector<Near> near;
   for (std::size_t layer = 0; layer < spec_.layers.size(); ++layer) {
-    const float radius = (banded ? 1.0f + band_share : 1.0f) * reach_[layer];
+    const float radius = (banded ? 1.0f + band : 1.0f) * reach_[layer];
     for (const CellKey& key : cells_within(spec_, static_cast<int>(layer), eye, radius)) {
       near.push_back({distance_to(eye, cell_bounds(spec_, key)), key});
     }
@@ -183,7 +183,7 @@ void LandscapePool::add_far_blocks(const LandscapeView& view, int layer, float s
     const float side = std::max(b.max.x - b.min.x, b.max.y - b.min.y);
     const int steps_made_whole = key.level == 0 ? kept_steps(near, reach) : 0;
     if (steps_made_whole == band_steps) continue;  // a cell made whole
-    if (key.level > 0 && (near <= (1.0f + band_share) * reach || side > block_share_of_distance * near)) {
+    if (key.level > 0 && (near <= (1.0f + band) * reach || side > block_share_of_distance * near)) {
       for (int child = 0; child < 4; ++child) open.push_back({layer, key.level - 1, 2 * key.x + (child & 1), 2 * key.z + (child >> 1)});
       continue;
     }
