@@ -212,11 +212,11 @@ class SceneBuilder {
     source.reach = landscape.reach;
     const pointgen::LandscapeSpec& spec = source.spec;
     scene_.landscape_plants += pointgen::expected_plant_count(spec);
-    // The keys of the cells within reach are listed each frame: a layer of fine cells under a wide
-    // reach is refused by their count before the first is listed.
+    // The keys of the cells within reach and the band beyond it are listed each frame: a layer of
+    // fine cells under a wide reach is refused by their count before the first is listed.
     for (std::size_t layer = 0; layer < spec.layers.size(); ++layer) {
       const float side = spec.layers[layer].cell_size;
-      const double across = std::floor(2.0 * source.reach[layer] / side) + 2.0;
+      const double across = std::floor(2.0 * (1.0 + pointgen::LandscapePool::band) * source.reach[layer] / side) + 2.0;
       reserve_memory(object, across * across * (sizeof(pointgen::CellKey) + sizeof(float)));
     }
     const double pool_plants = std::floor(limits_.plant_pool_bytes / bytes_per_plant);
