@@ -111,22 +111,23 @@ void main() {
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= plant_count) return;
+  counts[i] = 0u;
+  band_keys[i] = no_band;
+  if (!holds_plant(i)) return;  // a pool's empty place joins no band
   mat4 model = instance_model(i);
   vec4 bounds = plant_mesh(i).center_radius;
   vec3 center = (model * vec4(bounds.xyz, 1.0)).xyz;
   float radius = bounds.w * model_scale(model);
   uint key = no_band;
   uint distance_bands = caster_plane_count > 0u ? band_count - 1u : band_count;
-  bool held = holds_plant(i);  // a pool's empty place joins no band
-  if (held && in_view(center, radius)) {
+  if (in_view(center, radius)) {
     float from_eye = length(eye - center);
     key = 0u;
     while (key + 1u < distance_bands && from_eye >= band_ends[key]) ++key;
-  } else if (held && caster_plane_count > 0u && in_planes(center, radius, 6u * view_count, 6u * view_count + caster_plane_count)) {
+  } else if (caster_plane_count > 0u && in_planes(center, radius, 6u * view_count, 6u * view_count + caster_plane_count)) {
     key = band_count - 1u;
   }
   band_keys[i] = key;
-  counts[i] = 0u;
 }
 #endif
 #else

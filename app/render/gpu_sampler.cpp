@@ -126,8 +126,8 @@ GpuSampler::GpuSampler(const pointgen::TableList& tables, const PointSamples& sa
   range_of_.resize(tables.size());
   for (std::size_t t = 0; t < tables.size(); ++t) {
     const pointgen::InstanceTable& table = tables[t];
-    const auto pool = std::find_if(pools.begin(), pools.end(), [&](const Pool& p) { return t >= p.first && t < p.end; });
-    if (pool != pools.end() && t == pool->first) {  // the pool's room, empty until refilled
+    const Pool* pool = pool_of(t);
+    if (pool && t == pool->first) {  // the pool's room, empty until refilled
       pool_rooms_.push_back(static_cast<std::uint32_t>(plant_count_));
       plant_count_ += pool->capacity;
       std::size_t most_samples = 0;
@@ -135,15 +135,15 @@ GpuSampler::GpuSampler(const pointgen::TableList& tables, const PointSamples& sa
       most_points += pool->capacity * most_samples;
     }
     const pointgen::SampledMesh& mesh = meshes[table.mesh];
-    first_plant_.push_back(static_cast<std::uint32_t>(pool != pools.end() ? pool_rooms_.back() : plant_count_));
-    holds_plants_.push_back(mesh.samples > 0 && (table.size() > 0 || pool != pools.end()));
+    first_plant_.push_back(static_cast<std::uint32_t>(pool ? pool_rooms_.back() : plant_count_));
+    holds_plants_.push_back(mesh.samples > 0 && (table.size() > 0 || pool));
     if (!holds_plants_.back()) continue;
     range_of_[t] = table_count_++;
-    const std::size_t size = pool != pools.end() ? 0 : table.size();
+    const std::size_t size = pool ? 0 : table.size();
     table_ranges.emplace_back(first_plant_.back(), static_cast<std::uint32_t>(first_plant_.back() + size), 0u, 0u);
     table_ranges.emplace_back(static_cast<std::uint32_t>(3 * mesh.triangles), places[table.mesh].first_index,
                               static_cast<std::uint32_t>(places[table.mesh].base_vertex), 0u);
-    if (pool != pools.end()) continue;
+    if (pool) continue;
     plant_count_ += table.size();
     most_points += table.size() * mesh.samples;
   }
@@ -175,7 +175,7 @@ GpuSampler::GpuSampler(const pointgen::TableList& tables, const PointSamples& sa
   storage<PlantPose>(instances_, plant_count_, GL_DYNAMIC_STORAGE_BIT);  // moving plants are posed each frame
   storage<glm::uvec2>(plant_meshes_, plant_count_, GL_DYNAMIC_STORAGE_BIT);
   for (std::size_t t = 0; t < tables.size(); ++t) {
-    if (holds_plants_[t] && !in_pool(t)) place(t, tables[t]);
+    if (holds_plants_[t] && !pool_of(t)) place(t, tables[t]);
   }
   for (std::size_t p = 0; p < pools_.size(); ++p) {
     upload<glm::uvec2>(plant_meshes_, pool_rooms_[p], pools_[p].capacity, [](std::size_t) { return glm::uvec2(no_plant, 0u); });
@@ -206,8 +206,9 @@ GpuSampler::GpuSampler(const pointgen::TableList& tables, const PointSamples& sa
   every_band_drawn_ = std::make_unique<DrawnCommands>(1, max_bands * table_count_);
 }
 
-bool GpuSampler::in_pool(std::size_t table) const {
-  return std::any_of(pools_.begin(), pools_.end(), [&](const Pool& p) { return table >= p.first && table < p.end; });
+const GpuSampler::Pool* GpuSampler::pool_of(std::size_t table) const {
+  const auto pool = std::find_if(pools_.begin(), pools_.end(), [&](const Pool& p) { return table >= p.first && table < p.end; });
+  return pool != pools_.end() ? &*pool : nullptr;
 }
 
 void GpuSampler::place(std::size_t t, const pointgen::InstanceTable& table) {

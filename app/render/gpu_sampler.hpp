@@ -133,7 +133,7 @@ class GpuSampler {
 
  private:
   void bind() const;
-  bool in_pool(std::size_t table) const;
+  const Pool* pool_of(std::size_t table) const;  // none: a table of its own
   void place(std::size_t table, const pointgen::InstanceTable& plants);  // at first_plant_[table]
   void sort(const gl::Program& keys, int band_count, int first_band);
   void cut_dense_bands();
